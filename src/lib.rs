@@ -1,0 +1,10 @@
+#![no_std]
+#![deny(missing_docs, missing_debug_implementations, rustdoc::broken_intra_doc_links)]
+#![forbid(unsafe_code)]
+//! fixed3d
+
+#[cfg(test)]
+extern crate std;
+
+pub mod math;
+pub mod raster;

@@ -1,0 +1,225 @@
+//! 4x4 matrices: row-major `m[row][col]`, column vectors, translation in the last column, so a
+//! chain reads right to left (`clip_from_model = projection * view * model`).
+
+use core::ops::Mul;
+
+use super::angle::Angle;
+use super::scalar::{shr_round, Scalar};
+use super::vector::{cross_wide, saturate, Vec3};
+
+/// A 4x4 matrix of [`Scalar`] (Q16.16) entries.
+///
+/// Products are computed exactly in 64 bits, rounded to nearest and saturated to the Q16.16
+/// range: a chain of matrices never wraps.
+///
+/// ```
+/// use fixed3d::math::{Angle, Mat4, Vec3};
+/// let m = Mat4::translation(Vec3::from_int(1, 2, 3)) * Mat4::rotation_y(Angle::from_degrees(90));
+/// // (1, 0, 0) turns to (0, 0, -1), then moves by (1, 2, 3).
+/// assert_eq!(m.transform_point(Vec3::X), Vec3::from_int(1, 2, 2));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Mat4 {
+    m: [[i32; 4]; 4],
+}
+
+const ONE: i32 = 1 << 16;
+
+impl Default for Mat4 {
+    fn default() -> Self {
+        Mat4::IDENTITY
+    }
+}
+
+impl Mat4 {
+    /// The identity.
+    pub const IDENTITY: Mat4 = Mat4::from_bits([
+        [ONE, 0, 0, 0],
+        [0, ONE, 0, 0],
+        [0, 0, ONE, 0],
+        [0, 0, 0, ONE],
+    ]);
+
+    /// From raw Q16.16 entries, `m[row][col]`.
+    #[must_use]
+    pub const fn from_bits(m: [[i32; 4]; 4]) -> Self {
+        Mat4 { m }
+    }
+
+    /// From rows of [`Scalar`]s.
+    #[must_use]
+    pub fn from_rows(rows: [[Scalar; 4]; 4]) -> Self {
+        Mat4 {
+            m: rows.map(|r| r.map(Scalar::to_bits)),
+        }
+    }
+
+    /// Raw Q16.16 entries, `m[row][col]`.
+    #[must_use]
+    pub const fn to_bits(&self) -> [[i32; 4]; 4] {
+        self.m
+    }
+
+    /// The entries as [`Scalar`]s, `rows()[row][col]`.
+    #[must_use]
+    pub fn rows(&self) -> [[Scalar; 4]; 4] {
+        self.m.map(|r| r.map(Scalar::from_bits))
+    }
+
+    /// Translation by `t`.
+    #[must_use]
+    pub const fn translation(t: Vec3) -> Self {
+        let [x, y, z] = t.to_bits();
+        Mat4::from_bits([[ONE, 0, 0, x], [0, ONE, 0, y], [0, 0, ONE, z], [0, 0, 0, ONE]])
+    }
+
+    /// Scaling along the axes by `s`.
+    #[must_use]
+    pub const fn scaling(s: Vec3) -> Self {
+        let [x, y, z] = s.to_bits();
+        Mat4::from_bits([[x, 0, 0, 0], [0, y, 0, 0], [0, 0, z, 0], [0, 0, 0, ONE]])
+    }
+
+    /// Rotation about +X by `a` (right-handed: +Y turns towards +Z).
+    #[must_use]
+    pub const fn rotation_x(a: Angle) -> Self {
+        let (s, c) = sin_cos_q16(a);
+        Mat4::from_bits([[ONE, 0, 0, 0], [0, c, -s, 0], [0, s, c, 0], [0, 0, 0, ONE]])
+    }
+
+    /// Rotation about +Y by `a` (right-handed: +Z turns towards +X).
+    #[must_use]
+    pub const fn rotation_y(a: Angle) -> Self {
+        let (s, c) = sin_cos_q16(a);
+        Mat4::from_bits([[c, 0, s, 0], [0, ONE, 0, 0], [-s, 0, c, 0], [0, 0, 0, ONE]])
+    }
+
+    /// Rotation about +Z by `a` (right-handed: +X turns towards +Y).
+    #[must_use]
+    pub const fn rotation_z(a: Angle) -> Self {
+        let (s, c) = sin_cos_q16(a);
+        Mat4::from_bits([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, ONE, 0], [0, 0, 0, ONE]])
+    }
+
+    /// Transforms a point (w = 1), rounding to nearest and saturating; the result is divided
+    /// by nothing (for affine matrices w stays 1).
+    #[must_use]
+    pub fn transform_point(&self, p: Vec3) -> Vec3 {
+        let v = self.transform_wide(p.to_bits());
+        Vec3::new(saturate(v[0]), saturate(v[1]), saturate(v[2]))
+    }
+
+    /// Transforms a direction (w = 0): rotation and scale only.
+    #[must_use]
+    pub fn transform_vector(&self, d: Vec3) -> Vec3 {
+        let p = d.to_bits().map(i64::from);
+        let row = |r: &[i32; 4]| {
+            let s = (r[0] as i64 * p[0])
+                .saturating_add(r[1] as i64 * p[1])
+                .saturating_add(r[2] as i64 * p[2]);
+            saturate(shr_round(s, 16))
+        };
+        Vec3::new(row(&self.m[0]), row(&self.m[1]), row(&self.m[2]))
+    }
+
+    /// `self * (p, 1)` as raw Q16.16 in 64 bits: exact products, each row rounded once.
+    /// With Q16.16 inputs every component is below 2⁴⁸ in magnitude.
+    pub(crate) fn transform_wide(&self, p: [i32; 3]) -> [i64; 4] {
+        let p = p.map(i64::from);
+        self.m.map(|r| {
+            let s = (r[0] as i64 * p[0])
+                .saturating_add(r[1] as i64 * p[1])
+                .saturating_add(r[2] as i64 * p[2])
+                .saturating_add((r[3] as i64) << 16);
+            shr_round(s, 16)
+        })
+    }
+
+    /// The upper-left 3x3 block's cofactor matrix (`det · M⁻ᵀ`), raw Q16.16 rows: it carries
+    /// normals from model to world space, for any scale, with no division.
+    pub(crate) fn normal_matrix(&self) -> [[i32; 3]; 3] {
+        let r = |i: usize| [self.m[i][0], self.m[i][1], self.m[i][2]];
+        let q = |w: [i64; 3]| w.map(|v| shr_round(v, 16).clamp(i32::MIN as i64, i32::MAX as i64) as i32);
+        [q(cross_wide(r(1), r(2))), q(cross_wide(r(2), r(0))), q(cross_wide(r(0), r(1)))]
+    }
+
+    /// The transpose.
+    #[must_use]
+    pub fn transpose(&self) -> Mat4 {
+        let mut t = [[0; 4]; 4];
+        for (i, row) in self.m.iter().enumerate() {
+            for (j, v) in row.iter().enumerate() {
+                if let Some(cell) = t.get_mut(j).and_then(|r| r.get_mut(i)) {
+                    *cell = *v;
+                }
+            }
+        }
+        Mat4 { m: t }
+    }
+}
+
+const fn sin_cos_q16(a: Angle) -> (i32, i32) {
+    (
+        shr_round(a.sin_bits() as i64, 14) as i32,
+        shr_round(a.cos_bits() as i64, 14) as i32,
+    )
+}
+
+impl Mul for Mat4 {
+    type Output = Mat4;
+    fn mul(self, o: Mat4) -> Mat4 {
+        let mut out = [[0i32; 4]; 4];
+        for (orow, arow) in out.iter_mut().zip(self.m.iter()) {
+            for (j, cell) in orow.iter_mut().enumerate() {
+                let s = arow
+                    .iter()
+                    .zip(o.m.iter())
+                    .fold(0i64, |acc, (a, brow)| {
+                        let b = brow.get(j).copied().unwrap_or(0);
+                        acc.saturating_add(*a as i64 * b as i64)
+                    });
+                *cell = shr_round(s, 16).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+            }
+        }
+        Mat4 { m: out }
+    }
+}
+
+impl Mul<&Mat4> for &Mat4 {
+    type Output = Mat4;
+    fn mul(self, o: &Mat4) -> Mat4 {
+        *self * *o
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rotations_follow_right_hand_rule() {
+        let q = Angle::from_degrees(90);
+        assert_eq!(Mat4::rotation_x(q).transform_point(Vec3::Y), Vec3::Z);
+        assert_eq!(Mat4::rotation_y(q).transform_point(Vec3::Z), Vec3::X);
+        assert_eq!(Mat4::rotation_z(q).transform_point(Vec3::X), Vec3::Y);
+    }
+
+    #[test]
+    fn products_saturate_instead_of_wrapping() {
+        let big = Mat4::scaling(Vec3::from_int(30000, 30000, 30000));
+        let m = big * big;
+        assert_eq!(m.to_bits()[0][0], i32::MAX);
+        let p = m.transform_point(Vec3::from_int(-30000, 1, 1));
+        assert_eq!(p.x.to_bits(), i32::MIN);
+    }
+
+    #[test]
+    fn normal_matrix_of_scaled_rotation() {
+        let m = Mat4::rotation_z(Angle::from_degrees(90)) * Mat4::scaling(Vec3::from_int(2, 1, 1));
+        let n = m.normal_matrix();
+        // det * M^-T for diag(2,1,1) rotated: rows scaled by (1, 2, 2).
+        assert_eq!(n[0], [0, -2 << 16, 0]);
+        assert_eq!(n[1], [1 << 16, 0, 0]);
+        assert_eq!(n[2], [0, 0, 2 << 16]);
+    }
+}

@@ -1,0 +1,21 @@
+//! Numbers the pipeline computes with: fixed-point formats named by their use, binary angles
+//! with an integer sine, vectors and 4x4 matrices.
+//!
+//! This module is the only place that names the `fixed` crate's types; the rest of the crate uses
+//! the aliases below. Every operation saturates instead of wrapping and never panics; where a
+//! function rounds, its documentation says how.
+
+mod angle;
+mod matrix;
+mod scalar;
+mod sqrt;
+mod vector;
+
+pub use angle::Angle;
+pub use matrix::Mat4;
+pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
+pub use vector::Vec3;
+
+pub(crate) use scalar::{div_round, shr_round, DEPTH_ONE, UNIT_ONE};
+pub(crate) use sqrt::isqrt_u64;
+pub(crate) use vector::{dot_unit, normalize};

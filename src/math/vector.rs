@@ -1,0 +1,236 @@
+//! Three-component vectors in model, world or view space.
+
+use core::ops::{Add, Neg, Sub};
+
+use super::scalar::{shr_round, Scalar, UNIT_ONE};
+use super::sqrt::isqrt_u64;
+
+/// A point or direction with [`Scalar`] (Q16.16) components.
+///
+/// `+`, `-` and negation saturate at the ends of the Q16.16 range instead of wrapping.
+///
+/// ```
+/// use fixed3d::math::{Scalar, Vec3};
+/// let v = Vec3::from_int(1, 2, 3) + Vec3::Y;
+/// assert_eq!(v, Vec3::from_int(1, 3, 3));
+/// assert_eq!(Vec3::X.cross(Vec3::Y), Vec3::Z);
+/// assert_eq!(v.dot(Vec3::X), Scalar::from_num(1));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Vec3 {
+    /// X component.
+    pub x: Scalar,
+    /// Y component.
+    pub y: Scalar,
+    /// Z component.
+    pub z: Scalar,
+}
+
+impl Vec3 {
+    /// (0, 0, 0).
+    pub const ZERO: Vec3 = Vec3::from_bits(0, 0, 0);
+    /// (1, 0, 0).
+    pub const X: Vec3 = Vec3::from_int(1, 0, 0);
+    /// (0, 1, 0), "up" in world space.
+    pub const Y: Vec3 = Vec3::from_int(0, 1, 0);
+    /// (0, 0, 1).
+    pub const Z: Vec3 = Vec3::from_int(0, 0, 1);
+
+    /// From three [`Scalar`]s.
+    #[must_use]
+    pub const fn new(x: Scalar, y: Scalar, z: Scalar) -> Self {
+        Vec3 { x, y, z }
+    }
+
+    /// From raw Q16.16 values.
+    #[must_use]
+    pub const fn from_bits(x: i32, y: i32, z: i32) -> Self {
+        Vec3::new(Scalar::from_bits(x), Scalar::from_bits(y), Scalar::from_bits(z))
+    }
+
+    /// From whole numbers in [−32768, 32767].
+    #[must_use]
+    pub const fn from_int(x: i16, y: i16, z: i16) -> Self {
+        Vec3::from_bits((x as i32) << 16, (y as i32) << 16, (z as i32) << 16)
+    }
+
+    /// From floats, rounded to nearest; `None` if a component is not finite or is outside the
+    /// Q16.16 range.
+    ///
+    /// ```
+    /// use fixed3d::math::Vec3;
+    /// assert!(Vec3::from_f32(0.5, -2.25, 1e-3).is_some());
+    /// assert!(Vec3::from_f32(f32::NAN, 0.0, 0.0).is_none());
+    /// assert!(Vec3::from_f32(40_000.0, 0.0, 0.0).is_none());
+    /// ```
+    #[must_use]
+    pub fn from_f32(x: f32, y: f32, z: f32) -> Option<Self> {
+        Some(Vec3::new(
+            scalar_from_f32(x)?,
+            scalar_from_f32(y)?,
+            scalar_from_f32(z)?,
+        ))
+    }
+
+    /// Raw Q16.16 components.
+    #[must_use]
+    pub const fn to_bits(self) -> [i32; 3] {
+        [self.x.to_bits(), self.y.to_bits(), self.z.to_bits()]
+    }
+
+    /// Dot product, saturated to the [`Scalar`] range and rounded to nearest.
+    #[must_use]
+    pub fn dot(self, o: Vec3) -> Scalar {
+        let [a, b, c] = self.to_bits().map(i64::from);
+        let [d, e, f] = o.to_bits().map(i64::from);
+        saturate(shr_round(a * d + b * e + c * f, 16))
+    }
+
+    /// Cross product, saturated to the [`Scalar`] range and rounded to nearest.
+    #[must_use]
+    pub fn cross(self, o: Vec3) -> Vec3 {
+        let w = cross_wide(self.to_bits(), o.to_bits());
+        Vec3::new(
+            saturate(shr_round(w[0], 16)),
+            saturate(shr_round(w[1], 16)),
+            saturate(shr_round(w[2], 16)),
+        )
+    }
+
+    /// Euclidean length (integer square root, rounded down, saturated).
+    #[must_use]
+    pub fn length(self) -> Scalar {
+        let [a, b, c] = self.to_bits().map(|v| i64::from(v).unsigned_abs());
+        let sum = (a * a) as u128 + (b * b) as u128 + (c * c) as u128;
+        // sum < 3·2⁶² fits u64.
+        saturate(isqrt_u64(sum as u64) as i64)
+    }
+
+    /// The unit vector in the same direction, `None` for the zero vector.
+    ///
+    /// ```
+    /// use fixed3d::math::{Scalar, Vec3};
+    /// let n = Vec3::from_int(0, 3, 4).normalized().unwrap();
+    /// assert_eq!(n, Vec3::new(Scalar::ZERO, Scalar::from_num(0.6), Scalar::from_num(0.8)));
+    /// assert!(Vec3::ZERO.normalized().is_none());
+    /// ```
+    #[must_use]
+    pub fn normalized(self) -> Option<Vec3> {
+        let u = normalize(self.to_bits().map(i64::from))?;
+        Some(Vec3::from_bits(
+            shr_round(u[0] as i64, 14) as i32,
+            shr_round(u[1] as i64, 14) as i32,
+            shr_round(u[2] as i64, 14) as i32,
+        ))
+    }
+}
+
+fn scalar_from_f32(v: f32) -> Option<Scalar> {
+    // `checked_from_num` is the only total conversion: NaN and infinities give None.
+    Scalar::checked_from_num(v)
+}
+
+/// Saturates a raw i64 Q16.16 value into a [`Scalar`].
+pub(crate) fn saturate(v: i64) -> Scalar {
+    Scalar::from_bits(v.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
+}
+
+/// Exact cross product of raw vectors whose components fit in i32 (each term < 2⁶³).
+pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
+    let [a0, a1, a2] = a.map(i64::from);
+    let [b0, b1, b2] = b.map(i64::from);
+    [
+        (a1 * b2).saturating_sub(a2 * b1),
+        (a2 * b0).saturating_sub(a0 * b2),
+        (a0 * b1).saturating_sub(a1 * b0),
+    ]
+}
+
+/// Unit vector (Q2.30) of any non-zero integer vector, whatever its scale: the components are
+/// first shifted so that the largest has its top bit at 2³⁰ (the leading-zero renormalisation
+/// of case T33), then divided by the integer square root of the sum of squares. `None` for zero.
+pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
+    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+    if max == 0 {
+        return None;
+    }
+    let lz = max.leading_zeros() as i32; // max has 64 - lz significant bits
+    let shift = 64 - lz - 31; // bring max to [2^30, 2^31)
+    let scaled = v.map(|c| {
+        if shift > 0 {
+            // Rounding shift, away from zero.
+            shr_round(c, shift as u32)
+        } else {
+            c << (-shift) as u32
+        }
+    });
+    let sum: u64 = scaled
+        .iter()
+        .map(|c| {
+            let a = c.unsigned_abs();
+            a * a
+        })
+        .sum(); // each < 2^62 (after rounding at most 2^31 → 2^62), three sum below 2^64
+    let len = isqrt_u64(sum) as i64; // in [2^30, 2^31·√3)
+    if len == 0 {
+        return None;
+    }
+    Some(scaled.map(|c| {
+        let q = super::scalar::div_round(c << 30, len);
+        q.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
+    }))
+}
+
+/// Dot product of two Q2.30 unit vectors, Q2.30.
+pub(crate) fn dot_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
+    let s: i64 = a.iter().zip(b.iter()).map(|(x, y)| *x as i64 * *y as i64).sum();
+    shr_round(s, 30).clamp(-(2 * UNIT_ONE as i64), 2 * UNIT_ONE as i64 - 1) as i32
+}
+
+impl Add for Vec3 {
+    type Output = Vec3;
+    fn add(self, o: Vec3) -> Vec3 {
+        Vec3::new(
+            self.x.saturating_add(o.x),
+            self.y.saturating_add(o.y),
+            self.z.saturating_add(o.z),
+        )
+    }
+}
+
+impl Sub for Vec3 {
+    type Output = Vec3;
+    fn sub(self, o: Vec3) -> Vec3 {
+        Vec3::new(
+            self.x.saturating_sub(o.x),
+            self.y.saturating_sub(o.y),
+            self.z.saturating_sub(o.z),
+        )
+    }
+}
+
+impl Neg for Vec3 {
+    type Output = Vec3;
+    fn neg(self) -> Vec3 {
+        Vec3::new(self.x.saturating_neg(), self.y.saturating_neg(), self.z.saturating_neg())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalize_any_scale() {
+        for scale in [1i64, 7, 1 << 20, 1 << 40, (1 << 62) - 1] {
+            let u = normalize([scale, 0, 0]).unwrap();
+            assert_eq!(u, [UNIT_ONE, 0, 0]);
+            let u = normalize([0, -scale, scale]).unwrap();
+            let expect = (0.5f64.sqrt() * (1u64 << 30) as f64).round() as i32;
+            assert!((u[2] - expect).abs() <= 1 && u[1] == -u[2]);
+        }
+        assert!(normalize([0, 0, 0]).is_none());
+        let u = normalize([i64::MIN, i64::MAX, i64::MIN]).unwrap();
+        assert!(u.iter().all(|c| c.abs() <= UNIT_ONE));
+    }
+}

@@ -1,0 +1,197 @@
+//! Rasterisation: snapped sub-pixel geometry to pixels, by exact integer rules.
+//!
+//! Everything here works on screen coordinates in sub-pixels ([`SUBPIXEL_SCALE`] per pixel,
+//! x right, y down). A pixel `(px, py)` covers `[px, px+1) × [py, py+1)` and is sampled at its
+//! centre. The rules, each exact (no rounding happens after snapping):
+//!
+//! - **Triangles** ([`triangle_spans`]): a pixel is covered when its centre is inside the
+//!   triangle; a centre exactly on an edge belongs to the triangle only if that edge is a *left*
+//!   edge or a *top* edge (the Direct3D/Vulkan top-left rule). Triangles that share an edge with
+//!   identical endpoints therefore cover every pixel along it exactly once, and a triangle of
+//!   zero area covers nothing.
+//! - **Lines** ([`line_pixels`]): a line whose run along x is at least its run along y is
+//!   x-major; it draws, in each pixel column whose centre lies in `[start, end)` along x, the
+//!   pixel of the row `floor(y)` at that centre (y-major lines swap the axes). The start is
+//!   included and the end excluded, so a closed polygon draws each vertex pixel once. Clipping
+//!   to the target never changes which pixels are drawn.
+//! - **Attributes** ([`Plane`]): depth and colour are planes through the three snapped vertices,
+//!   evaluated at pixel centres in 64-bit arithmetic and stepped along spans.
+//!
+//! Coordinates must lie within ±[`COORD_LIMIT`] sub-pixels; the pipeline's guard band keeps them
+//! far inside it. Work is proportional to the visible rows and pixels, never to the size of the
+//! primitive off screen.
+
+mod line;
+mod plane;
+mod triangle;
+
+pub use line::{line_pixels, LinePixels};
+pub(crate) use plane::Plane;
+pub use triangle::{triangle_spans, Span, TriangleSpans};
+
+use crate::math::SUBPIXEL_SCALE;
+
+/// The largest magnitude of a sub-pixel coordinate the rasterisers accept (2²⁴, a million
+/// pixels); anything further is rejected as a whole.
+pub const COORD_LIMIT: i32 = 1 << 24;
+
+/// A point on the screen in sub-pixels: `x` right, `y` down, [`SUBPIXEL_SCALE`] per pixel.
+///
+/// ```
+/// use fixed3d::raster::ScreenPoint;
+/// // The centre of pixel (2, 3):
+/// assert_eq!(ScreenPoint::pixel_center(2, 3), ScreenPoint::new(40, 56));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ScreenPoint {
+    /// Sub-pixels to the right of the screen's left edge.
+    pub x: i32,
+    /// Sub-pixels below the screen's top edge.
+    pub y: i32,
+}
+
+impl ScreenPoint {
+    /// From sub-pixel coordinates.
+    #[must_use]
+    pub const fn new(x: i32, y: i32) -> Self {
+        ScreenPoint { x, y }
+    }
+
+    /// The centre of pixel `(px, py)` (saturating for pixels beyond the coordinate range).
+    #[must_use]
+    pub const fn pixel_center(px: i32, py: i32) -> Self {
+        let h = SUBPIXEL_SCALE / 2;
+        ScreenPoint {
+            x: px.saturating_mul(SUBPIXEL_SCALE).saturating_add(h),
+            y: py.saturating_mul(SUBPIXEL_SCALE).saturating_add(h),
+        }
+    }
+
+    pub(crate) const fn in_range(self) -> bool {
+        self.x.unsigned_abs() <= COORD_LIMIT as u32 && self.y.unsigned_abs() <= COORD_LIMIT as u32
+    }
+}
+
+/// A rectangle of whole pixels, `[x0, x1) × [y0, y1)`: where a rasteriser may draw.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct PixelRect {
+    /// First column.
+    pub x0: i32,
+    /// First row.
+    pub y0: i32,
+    /// One past the last column.
+    pub x1: i32,
+    /// One past the last row.
+    pub y1: i32,
+}
+
+impl PixelRect {
+    /// The rectangle `[x0, x1) × [y0, y1)`.
+    #[must_use]
+    pub const fn new(x0: i32, y0: i32, x1: i32, y1: i32) -> Self {
+        PixelRect { x0, y0, x1, y1 }
+    }
+
+    /// `[0, width) × [0, height)`.
+    #[must_use]
+    pub const fn of_size(width: u32, height: u32) -> Self {
+        let w = if width > i32::MAX as u32 { i32::MAX } else { width as i32 };
+        let h = if height > i32::MAX as u32 { i32::MAX } else { height as i32 };
+        PixelRect::new(0, 0, w, h)
+    }
+
+    /// True when the rectangle holds no pixel.
+    #[must_use]
+    pub const fn is_empty(&self) -> bool {
+        self.x0 >= self.x1 || self.y0 >= self.y1
+    }
+
+    /// True when pixel `(x, y)` lies inside.
+    #[must_use]
+    pub const fn contains(&self, x: i32, y: i32) -> bool {
+        x >= self.x0 && x < self.x1 && y >= self.y0 && y < self.y1
+    }
+}
+
+/// `ceil(n / d)` for `d > 0`.
+pub(crate) const fn ceil_div(n: i64, d: i64) -> i64 {
+    let q = n.div_euclid(d);
+    if n.rem_euclid(d) != 0 {
+        q + 1
+    } else {
+        q
+    }
+}
+
+/// `floor(n / d)` for `d > 0`.
+pub(crate) const fn floor_div(n: i64, d: i64) -> i64 {
+    n.div_euclid(d)
+}
+
+/// Walks `ceil(N(k) / D)` or `floor(N(k) / D)` for `N(k) = N0 + k·step` over consecutive
+/// integers `k`, exactly, with an i32 quotient and remainder (Bresenham's error term). Used for
+/// triangle edges (ceil) and lines (floor).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RationalStepper {
+    /// The current value.
+    pub value: i32,
+    /// `value·D − N` for ceil (in `[0, D)`), `N − value·D` for floor (in `[0, D)`).
+    rem: i32,
+    den: i32,
+    step_q: i32,
+    step_r: i32,
+    ceil: bool,
+}
+
+impl RationalStepper {
+    /// Starts at `n0 / den` (den > 0, den < 2³¹; the quotient and `step / den` must fit i32).
+    pub(crate) fn new(n0: i64, den: i64, step: i64, ceil: bool) -> Self {
+        let (value, rem) = if ceil {
+            let q = ceil_div(n0, den);
+            (q, q * den - n0)
+        } else {
+            let q = floor_div(n0, den);
+            (q, n0 - q * den)
+        };
+        // For ceil the step subtracts from rem (rem = qD − N), for floor it adds.
+        let sq = floor_div(step, den);
+        let sr = step - sq * den;
+        RationalStepper {
+            value: clamp_i32(value),
+            rem: clamp_i32(rem),
+            den: clamp_i32(den),
+            step_q: clamp_i32(sq),
+            step_r: clamp_i32(sr),
+            ceil,
+        }
+    }
+
+    /// Advances `k` by one.
+    #[inline(always)]
+    pub(crate) fn step(&mut self) {
+        self.value = self.value.wrapping_add(self.step_q);
+        if self.ceil {
+            self.rem = self.rem.wrapping_sub(self.step_r);
+            if self.rem < 0 {
+                self.rem = self.rem.wrapping_add(self.den);
+                self.value = self.value.wrapping_add(1);
+            }
+        } else {
+            self.rem = self.rem.wrapping_add(self.step_r);
+            if self.rem >= self.den {
+                self.rem = self.rem.wrapping_sub(self.den);
+                self.value = self.value.wrapping_add(1);
+            }
+        }
+    }
+}
+
+pub(crate) const fn clamp_i32(v: i64) -> i32 {
+    if v > i32::MAX as i64 {
+        i32::MAX
+    } else if v < i32::MIN as i64 {
+        i32::MIN
+    } else {
+        v as i32
+    }
+}

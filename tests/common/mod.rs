@@ -1,0 +1,132 @@
+//! Shared test support: the exact integer model of the rasterisation rules (a different
+//! algorithm from the crate's: per-pixel edge functions over the bounding box, in i128), and
+//! helpers for hit-count images.
+#![allow(dead_code)]
+
+use fixed3d::raster::{line_pixels, triangle_spans, PixelRect, ScreenPoint};
+use std::collections::BTreeSet;
+
+pub const S: i128 = 16;
+
+/// The exact model of rule R1/R3/R4: pixel centres inside the triangle, edges by the top-left
+/// rule, zero area covers nothing.
+pub fn model_triangle(v: [ScreenPoint; 3], clip: PixelRect) -> BTreeSet<(i32, i32)> {
+    let mut out = BTreeSet::new();
+    let p = v.map(|q| (q.x as i128, q.y as i128));
+    let e = |a: (i128, i128), b: (i128, i128), x: i128, y: i128| {
+        (b.0 - a.0) * (y - a.1) - (b.1 - a.1) * (x - a.0)
+    };
+    let (a, mut b, mut c) = (p[0], p[1], p[2]);
+    let area = e(a, b, c.0, c.1);
+    if area == 0 {
+        return out;
+    }
+    if area < 0 {
+        std::mem::swap(&mut b, &mut c);
+    }
+    let top_left = |a: (i128, i128), b: (i128, i128)| {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        dy < 0 || (dy == 0 && dx > 0)
+    };
+    let inside = |a, b, x, y| {
+        let v = e(a, b, x, y);
+        v > 0 || (v == 0 && top_left(a, b))
+    };
+    let xmin = p.iter().map(|q| q.0).min().unwrap().div_euclid(S) - 1;
+    let xmax = p.iter().map(|q| q.0).max().unwrap().div_euclid(S) + 1;
+    let ymin = p.iter().map(|q| q.1).min().unwrap().div_euclid(S) - 1;
+    let ymax = p.iter().map(|q| q.1).max().unwrap().div_euclid(S) + 1;
+    let xs = xmin.max(clip.x0 as i128)..=xmax.min(clip.x1 as i128 - 1);
+    let ys = ymin.max(clip.y0 as i128)..=ymax.min(clip.y1 as i128 - 1);
+    for py in ys {
+        for px in xs.clone() {
+            let (x, y) = (px * S + S / 2, py * S + S / 2);
+            if inside(a, b, x, y) && inside(b, c, x, y) && inside(c, a, x, y) {
+                out.insert((px as i32, py as i32));
+            }
+        }
+    }
+    out
+}
+
+/// The crate's coverage of one triangle as a set (panics on a pixel produced twice).
+pub fn crate_triangle(v: [ScreenPoint; 3], clip: PixelRect) -> BTreeSet<(i32, i32)> {
+    let mut out = BTreeSet::new();
+    for s in triangle_spans(v, clip) {
+        assert!(s.x0 < s.x1, "empty span {s:?}");
+        for x in s.x0..s.x1 {
+            assert!(clip.contains(x, s.y), "pixel ({x}, {}) outside {clip:?}", s.y);
+            assert!(out.insert((x, s.y)), "pixel ({x}, {}) twice in one triangle", s.y);
+        }
+    }
+    out
+}
+
+/// The exact model of the line rule: for x-major lines, in each column whose centre lies in
+/// [a, b) along x, the row floor(y) at that centre (y-major: axes swapped).
+pub fn model_line(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> Vec<(i32, i32)> {
+    let (ax, ay, bx, by) = (a.x as i128, a.y as i128, b.x as i128, b.y as i128);
+    let (dx, dy) = (bx - ax, by - ay);
+    let mut out = Vec::new();
+    if dx == 0 && dy == 0 {
+        return out;
+    }
+    let swapped = dx.abs() < dy.abs();
+    let (a0, a1, b0, b1) = if swapped { (ay, ax, by, bx) } else { (ax, ay, bx, by) };
+    let (lo, hi) = (a0.min(b0).div_euclid(S) - 1, a0.max(b0).div_euclid(S) + 1);
+    for i in lo..=hi {
+        let c = i * S + S / 2;
+        let in_run = if b0 > a0 { c >= a0 && c < b0 } else { c <= a0 && c > b0 };
+        if !in_run {
+            continue;
+        }
+        // minor = floor((a1 + (c - a0) * (b1 - a1) / (b0 - a0)) / S)
+        let num = a1 * (b0 - a0) + (c - a0) * (b1 - a1);
+        let den = (b0 - a0) * S;
+        let m = if den > 0 { num.div_euclid(den) } else { (-num).div_euclid(-den) };
+        let (x, y) = if swapped { (m, i) } else { (i, m) };
+        if x >= clip.x0 as i128 && x < clip.x1 as i128 && y >= clip.y0 as i128 && y < clip.y1 as i128 {
+            out.push((x as i32, y as i32));
+        }
+    }
+    out.sort();
+    out
+}
+
+pub fn crate_line(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> Vec<(i32, i32)> {
+    let mut v: Vec<(i32, i32)> = line_pixels(a, b, clip).map(|p| (p.x, p.y)).collect();
+    v.sort();
+    let mut m = v.clone();
+    m.dedup();
+    assert_eq!(m.len(), v.len(), "a line produced a pixel twice");
+    v
+}
+
+/// Sub-pixel point from pixel units given as f64 (snapped to nearest, ties away from zero).
+pub fn sp(x: f64, y: f64) -> ScreenPoint {
+    ScreenPoint::new((x * 16.0).round() as i32, (y * 16.0).round() as i32)
+}
+
+/// A hit-count image.
+pub struct Hits {
+    pub w: i32,
+    pub h: i32,
+    pub n: Vec<u32>,
+}
+
+impl Hits {
+    pub fn new(w: i32, h: i32) -> Self {
+        Hits { w, h, n: vec![0; (w * h) as usize] }
+    }
+    pub fn clip(&self) -> PixelRect {
+        PixelRect::new(0, 0, self.w, self.h)
+    }
+    pub fn add_triangle(&mut self, v: [ScreenPoint; 3]) {
+        for (x, y) in crate_triangle(v, self.clip()) {
+            self.n[(y * self.w + x) as usize] += 1;
+        }
+    }
+    pub fn count(&self, k: u32) -> usize {
+        self.n.iter().filter(|&&c| c == k).count()
+    }
+}
