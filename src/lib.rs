@@ -8,3 +8,10 @@ extern crate std;
 
 pub mod math;
 pub mod raster;
+pub mod camera;
+pub mod mesh;
+pub mod projection;
+pub mod pipeline;
+pub mod scene;
+pub mod shade;
+pub mod target;

@@ -147,11 +147,6 @@ impl Angle {
         }
         Angle((((num % den) as u64) << 32).wrapping_div(den as u64) as u32)
     }
-
-    /// The angle as a signed value in (−½, ½] turn, in raw units.
-    pub(crate) const fn signed_bits(self) -> i32 {
-        self.0 as i32
-    }
 }
 
 /// `sin(π/2 · x)` for `x` in [0, 2³⁰] (Q2.30), result Q2.30 clamped to [0, 1].

@@ -3,6 +3,9 @@
 //! helpers for hit-count images.
 #![allow(dead_code)]
 
+pub mod golden;
+pub mod scene;
+
 use fixed3d::raster::{line_pixels, triangle_spans, PixelRect, ScreenPoint};
 use std::collections::BTreeSet;
 

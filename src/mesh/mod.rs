@@ -1,0 +1,270 @@
+//! Meshes and objects: what a scene is made of.
+//!
+//! A [`Mesh`] borrows its arrays, so it can live in flash as `static` data: positions, triangle
+//! indices, optional per-vertex normals and an optional edge list for wireframes. Its
+//! constructors check every index once (they are `const fn`, so a mesh in a `static` is checked
+//! at compile time) and the pipeline reads indices with checked access all the same.
+//! An [`Object`] places a mesh in the world with a model matrix and gives it a colour.
+
+mod shapes;
+
+use core::fmt;
+
+use embedded_graphics::pixelcolor::Rgb888;
+
+use crate::math::{Angle, Mat4, Vec3};
+
+pub use shapes::{torus, torus_counts, uv_sphere, uv_sphere_counts, ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON};
+
+/// A triangle: three indices into a mesh's positions, counter-clockwise seen from its front.
+pub type Triangle = [u16; 3];
+
+/// An edge for wireframes: two indices into a mesh's positions.
+pub type Edge = [u16; 2];
+
+/// Why a mesh was refused.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum MeshError {
+    /// Triangle `triangle` refers to a vertex that does not exist.
+    TriangleIndexOutOfRange {
+        /// Position of the triangle in the list.
+        triangle: usize,
+    },
+    /// Edge `edge` refers to a vertex that does not exist.
+    EdgeIndexOutOfRange {
+        /// Position of the edge in the list.
+        edge: usize,
+    },
+    /// The normals array is not as long as the positions array.
+    NormalCountMismatch,
+}
+
+impl fmt::Display for MeshError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MeshError::TriangleIndexOutOfRange { triangle } => {
+                write!(f, "triangle {triangle} refers to a vertex that does not exist")
+            }
+            MeshError::EdgeIndexOutOfRange { edge } => {
+                write!(f, "edge {edge} refers to a vertex that does not exist")
+            }
+            MeshError::NormalCountMismatch => f.write_str("there must be one normal per vertex"),
+        }
+    }
+}
+
+impl core::error::Error for MeshError {}
+
+/// A triangle mesh in model space, borrowed from slices (in flash or RAM).
+///
+/// ```
+/// use fixed3d::math::Vec3;
+/// use fixed3d::mesh::{Mesh, MeshError};
+/// static POSITIONS: [Vec3; 3] = [Vec3::from_int(0, 0, 0), Vec3::from_int(1, 0, 0), Vec3::from_int(0, 1, 0)];
+/// static TRIANGLES: [[u16; 3]; 1] = [[0, 1, 2]];
+/// // Checked at compile time:
+/// static MESH: Mesh = match Mesh::new(&POSITIONS, &TRIANGLES) {
+///     Ok(m) => m,
+///     Err(_) => panic!("bad mesh"),
+/// };
+/// assert_eq!(MESH.triangles().len(), 1);
+/// assert_eq!(
+///     Mesh::new(&POSITIONS, &[[0, 1, 3]]).unwrap_err(),
+///     MeshError::TriangleIndexOutOfRange { triangle: 0 }
+/// );
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Mesh<'a> {
+    positions: &'a [Vec3],
+    triangles: &'a [Triangle],
+    normals: Option<&'a [Vec3]>,
+    edges: Option<&'a [Edge]>,
+}
+
+impl<'a> Mesh<'a> {
+    /// A mesh of `positions` and `triangles`; every index must be below `positions.len()`.
+    pub const fn new(positions: &'a [Vec3], triangles: &'a [Triangle]) -> Result<Self, MeshError> {
+        let n = positions.len();
+        let mut i = 0;
+        while i < triangles.len() {
+            let [a, b, c] = triangles[i];
+            if a as usize >= n || b as usize >= n || c as usize >= n {
+                return Err(MeshError::TriangleIndexOutOfRange { triangle: i });
+            }
+            i += 1;
+        }
+        Ok(Mesh {
+            positions,
+            triangles,
+            normals: None,
+            edges: None,
+        })
+    }
+
+    /// Adds per-vertex normals (any length; zero normals light as ambient only), used by
+    /// Gouraud shading. There must be exactly one per position.
+    pub const fn with_normals(self, normals: &'a [Vec3]) -> Result<Self, MeshError> {
+        if normals.len() != self.positions.len() {
+            return Err(MeshError::NormalCountMismatch);
+        }
+        Ok(Mesh {
+            normals: Some(normals),
+            ..self
+        })
+    }
+
+    /// Adds an edge list: wireframes then draw each listed edge once instead of the three
+    /// edges of every front-facing triangle.
+    pub const fn with_edges(self, edges: &'a [Edge]) -> Result<Self, MeshError> {
+        let n = self.positions.len();
+        let mut i = 0;
+        while i < edges.len() {
+            let [a, b] = edges[i];
+            if a as usize >= n || b as usize >= n {
+                return Err(MeshError::EdgeIndexOutOfRange { edge: i });
+            }
+            i += 1;
+        }
+        Ok(Mesh {
+            edges: Some(edges),
+            ..self
+        })
+    }
+
+    /// The vertex positions.
+    #[must_use]
+    pub const fn positions(&self) -> &'a [Vec3] {
+        self.positions
+    }
+
+    /// The triangles.
+    #[must_use]
+    pub const fn triangles(&self) -> &'a [Triangle] {
+        self.triangles
+    }
+
+    /// The per-vertex normals, if any.
+    #[must_use]
+    pub const fn normals(&self) -> Option<&'a [Vec3]> {
+        self.normals
+    }
+
+    /// The edge list, if any.
+    #[must_use]
+    pub const fn edges(&self) -> Option<&'a [Edge]> {
+        self.edges
+    }
+}
+
+/// Position, rotation and scale, composed as `translate · Rz · Rx · Ry · scale` (the mesh is
+/// scaled, turned about Y, then X, then Z, then moved).
+///
+/// ```
+/// use fixed3d::math::{Angle, Vec3};
+/// use fixed3d::mesh::Transform;
+/// let m = Transform::new()
+///     .translated(Vec3::from_int(0, 0, -5))
+///     .rotated_y(Angle::from_degrees(90))
+///     .matrix();
+/// assert_eq!(m.transform_point(Vec3::X), Vec3::from_int(0, 0, -6));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Transform {
+    /// Where the model's origin goes.
+    pub translation: Vec3,
+    /// Rotation about X (applied after Y).
+    pub rotation_x: Angle,
+    /// Rotation about Y (applied first).
+    pub rotation_y: Angle,
+    /// Rotation about Z (applied last).
+    pub rotation_z: Angle,
+    /// Scale along the model's axes.
+    pub scale: Vec3,
+}
+
+impl Default for Transform {
+    fn default() -> Self {
+        Transform::new()
+    }
+}
+
+impl Transform {
+    /// The identity: no move, no turn, scale 1.
+    #[must_use]
+    pub const fn new() -> Self {
+        Transform {
+            translation: Vec3::ZERO,
+            rotation_x: Angle::ZERO,
+            rotation_y: Angle::ZERO,
+            rotation_z: Angle::ZERO,
+            scale: Vec3::from_int(1, 1, 1),
+        }
+    }
+
+    /// With `translation`.
+    #[must_use]
+    pub const fn translated(self, translation: Vec3) -> Self {
+        Transform { translation, ..self }
+    }
+
+    /// With a rotation about X.
+    #[must_use]
+    pub const fn rotated_x(self, a: Angle) -> Self {
+        Transform { rotation_x: a, ..self }
+    }
+
+    /// With a rotation about Y.
+    #[must_use]
+    pub const fn rotated_y(self, a: Angle) -> Self {
+        Transform { rotation_y: a, ..self }
+    }
+
+    /// With a rotation about Z.
+    #[must_use]
+    pub const fn rotated_z(self, a: Angle) -> Self {
+        Transform { rotation_z: a, ..self }
+    }
+
+    /// With `scale`.
+    #[must_use]
+    pub const fn scaled(self, scale: Vec3) -> Self {
+        Transform { scale, ..self }
+    }
+
+    /// The model matrix.
+    #[must_use]
+    pub fn matrix(&self) -> Mat4 {
+        Mat4::translation(self.translation)
+            * Mat4::rotation_z(self.rotation_z)
+            * Mat4::rotation_x(self.rotation_x)
+            * Mat4::rotation_y(self.rotation_y)
+            * Mat4::scaling(self.scale)
+    }
+}
+
+/// A mesh placed in the world with a model matrix and a colour.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb888;
+/// use fixed3d::mesh::{Object, Transform, CUBE};
+/// let cube = Object::new(&CUBE, Transform::new().matrix(), Rgb888::new(255, 160, 64));
+/// assert_eq!(cube.mesh.triangles().len(), 12);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Object<'a> {
+    /// The mesh.
+    pub mesh: &'a Mesh<'a>,
+    /// World from model.
+    pub model: Mat4,
+    /// Base colour (lit by the scene's lights, or drawn as is when unlit).
+    pub color: Rgb888,
+}
+
+impl<'a> Object<'a> {
+    /// An object.
+    #[must_use]
+    pub const fn new(mesh: &'a Mesh<'a>, model: Mat4, color: Rgb888) -> Self {
+        Object { mesh, model, color }
+    }
+}

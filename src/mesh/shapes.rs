@@ -1,0 +1,311 @@
+//! Built-in shapes: the three smallest Platonic solids as `static` meshes, and a UV sphere and a
+//! torus of any resolution generated into caller-supplied storage (integer trigonometry, so the
+//! same vertices on every platform).
+
+use core::fmt;
+
+use super::{Edge, Mesh, Triangle};
+use crate::math::{shr_round, Angle, Scalar, Vec3};
+
+const fn v(x: i16, y: i16, z: i16) -> Vec3 {
+    Vec3::from_int(x, y, z)
+}
+
+const fn checked(m: Result<Mesh<'static>, super::MeshError>) -> Mesh<'static> {
+    match m {
+        Ok(m) => m,
+        Err(_) => panic!("built-in mesh is invalid"),
+    }
+}
+
+static CUBE_POSITIONS: [Vec3; 8] = [
+    v(-1, -1, -1), v(1, -1, -1), v(1, 1, -1), v(-1, 1, -1),
+    v(-1, -1, 1), v(1, -1, 1), v(1, 1, 1), v(-1, 1, 1),
+];
+static CUBE_TRIANGLES: [Triangle; 12] = [
+    [4, 5, 6], [4, 6, 7], [0, 3, 2], [0, 2, 1], [1, 2, 6], [1, 6, 5],
+    [0, 4, 7], [0, 7, 3], [3, 7, 6], [3, 6, 2], [0, 1, 5], [0, 5, 4],
+];
+static CUBE_EDGES: [Edge; 12] = [
+    [0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4], [0, 4], [1, 5], [2, 6], [3, 7],
+];
+
+/// A cube from (−1, −1, −1) to (1, 1, 1): 8 vertices, 12 triangles, 12 edges.
+pub static CUBE: Mesh<'static> = checked(match Mesh::new(&CUBE_POSITIONS, &CUBE_TRIANGLES) {
+    Ok(m) => m.with_edges(&CUBE_EDGES),
+    Err(e) => Err(e),
+});
+
+static TETRA_POSITIONS: [Vec3; 4] = [v(1, 1, 1), v(1, -1, -1), v(-1, 1, -1), v(-1, -1, 1)];
+static TETRA_TRIANGLES: [Triangle; 4] = [[1, 3, 2], [0, 2, 3], [0, 3, 1], [0, 1, 2]];
+static TETRA_EDGES: [Edge; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+
+/// A regular tetrahedron inscribed in the cube [−1, 1]³: 4 vertices, 4 triangles, 6 edges.
+pub static TETRAHEDRON: Mesh<'static> = checked(match Mesh::new(&TETRA_POSITIONS, &TETRA_TRIANGLES) {
+    Ok(m) => m.with_edges(&TETRA_EDGES),
+    Err(e) => Err(e),
+});
+
+static OCTA_POSITIONS: [Vec3; 6] = [v(1, 0, 0), v(-1, 0, 0), v(0, 1, 0), v(0, -1, 0), v(0, 0, 1), v(0, 0, -1)];
+static OCTA_TRIANGLES: [Triangle; 8] = [
+    [0, 2, 4], [1, 4, 2], [0, 4, 3], [0, 5, 2], [1, 3, 4], [1, 2, 5], [0, 3, 5], [1, 5, 3],
+];
+static OCTA_EDGES: [Edge; 12] = [
+    [0, 2], [0, 3], [0, 4], [0, 5], [1, 2], [1, 3], [1, 4], [1, 5], [2, 4], [2, 5], [3, 4], [3, 5],
+];
+
+/// A regular octahedron with vertices at ±1 on each axis: 6 vertices, 8 triangles, 12 edges.
+pub static OCTAHEDRON: Mesh<'static> = checked(match Mesh::new(&OCTA_POSITIONS, &OCTA_TRIANGLES) {
+    Ok(m) => m.with_edges(&OCTA_EDGES),
+    Err(e) => Err(e),
+});
+
+/// Why a shape could not be generated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum ShapeError {
+    /// Fewer than 3 segments around (or 2 rings for a sphere).
+    Resolution,
+    /// More than 65,536 vertices (indices are 16-bit).
+    TooManyVertices,
+    /// The storage given is too small: this many vertices and triangles are needed.
+    StorageTooSmall {
+        /// Vertices needed (positions and normals).
+        vertices: usize,
+        /// Triangles needed.
+        triangles: usize,
+    },
+}
+
+impl fmt::Display for ShapeError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ShapeError::Resolution => f.write_str("a shape needs at least 3 segments and 2 rings"),
+            ShapeError::TooManyVertices => f.write_str("a mesh holds at most 65536 vertices"),
+            ShapeError::StorageTooSmall { vertices, triangles } => write!(
+                f,
+                "storage too small: {vertices} vertices and {triangles} triangles needed"
+            ),
+        }
+    }
+}
+
+impl core::error::Error for ShapeError {}
+
+/// Vertices and triangles of a torus with `ring` segments around its axis and `tube` segments
+/// around the tube.
+#[must_use]
+pub const fn torus_counts(ring: u16, tube: u16) -> (usize, usize) {
+    let n = ring as usize * tube as usize;
+    (n, 2 * n)
+}
+
+/// Vertices and triangles of a UV sphere with `segments` around and `rings` from pole to pole.
+#[must_use]
+pub const fn uv_sphere_counts(segments: u16, rings: u16) -> (usize, usize) {
+    let s = segments as usize;
+    let r = rings as usize;
+    (2 + s * r.saturating_sub(1), 2 * s * r.saturating_sub(1))
+}
+
+/// `a · b` for Q16.16 `a` and Q2.30 `b`, Q16.16.
+fn mul_unit(a: i64, b: i32) -> i64 {
+    shr_round(a * b as i64, 30)
+}
+
+fn sat(v: i64) -> i32 {
+    v.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+}
+
+/// A torus around the Y axis (major radius `major`, tube radius `minor`) with unit normals,
+/// generated into the given storage. Vertex `i·tube + j` sits at angle `2πi/ring` around the axis
+/// and `2πj/tube` around the tube, so the layout matches the reference scene's torus.
+///
+/// ```
+/// use fixed3d::math::{Scalar, Vec3};
+/// use fixed3d::mesh::{torus, torus_counts};
+/// let (nv, nt) = torus_counts(48, 24);
+/// let (mut p, mut n, mut t) = ([Vec3::ZERO; 1152], [Vec3::ZERO; 1152], [[0u16; 3]; 2304]);
+/// assert_eq!((nv, nt), (1152, 2304));
+/// let mesh = torus(Scalar::from_num(1), Scalar::from_num(0.4), 48, 24, &mut p, &mut n, &mut t).unwrap();
+/// assert_eq!(mesh.triangles().len(), 2304);
+/// assert_eq!(mesh.positions()[0], Vec3::new(Scalar::from_num(1.4), Scalar::ZERO, Scalar::ZERO));
+/// ```
+pub fn torus<'a>(
+    major: Scalar,
+    minor: Scalar,
+    ring: u16,
+    tube: u16,
+    positions: &'a mut [Vec3],
+    normals: &'a mut [Vec3],
+    triangles: &'a mut [Triangle],
+) -> Result<Mesh<'a>, ShapeError> {
+    if ring < 3 || tube < 3 {
+        return Err(ShapeError::Resolution);
+    }
+    let (nv, nt) = torus_counts(ring, tube);
+    if nv > 65_536 {
+        return Err(ShapeError::TooManyVertices);
+    }
+    let too_small = ShapeError::StorageTooSmall { vertices: nv, triangles: nt };
+    let (Some(pos), Some(nor), Some(tri)) = (
+        positions.get_mut(..nv),
+        normals.get_mut(..nv),
+        triangles.get_mut(..nt),
+    ) else {
+        return Err(too_small);
+    };
+    let (big, small) = (major.to_bits() as i64, minor.to_bits() as i64);
+    let tube_n = tube as usize;
+    for (k, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
+        let (i, j) = ((k / tube_n) as u32, (k % tube_n) as u32);
+        let u = Angle::turn_fraction(i, ring as u32);
+        let w = Angle::turn_fraction(j, tube as u32);
+        let (cu, su, cw, sw) = (u.cos_bits(), u.sin_bits(), w.cos_bits(), w.sin_bits());
+        let reach = big + mul_unit(small, cw);
+        *p = Vec3::from_bits(sat(mul_unit(reach, cu)), sat(mul_unit(small, sw)), sat(mul_unit(reach, su)));
+        let q = |a: i32, b: i32| sat(shr_round(shr_round(a as i64 * b as i64, 30), 14));
+        *n = Vec3::from_bits(q(cw, cu), sat(shr_round(sw as i64, 14)), q(cw, su));
+    }
+    let idx = |i: usize, j: usize| ((i % ring as usize) * tube_n + (j % tube_n)) as u16;
+    for (k, pair) in tri.chunks_exact_mut(2).enumerate() {
+        let (i, j) = (k / tube_n, k % tube_n);
+        let (p00, p01, p10, p11) = (idx(i, j), idx(i, j + 1), idx(i + 1, j), idx(i + 1, j + 1));
+        if let [a, b] = pair {
+            *a = [p00, p01, p11];
+            *b = [p00, p11, p10];
+        }
+    }
+    let mesh = Mesh::new(pos, tri).map_err(|_| too_small)?;
+    mesh.with_normals(nor).map_err(|_| too_small)
+}
+
+/// A UV sphere of `radius` around the origin, poles on the Y axis, with unit normals,
+/// generated into the given storage.
+///
+/// ```
+/// use fixed3d::math::{Scalar, Vec3};
+/// use fixed3d::mesh::{uv_sphere, uv_sphere_counts};
+/// assert_eq!(uv_sphere_counts(16, 8), (114, 224));
+/// let (mut p, mut n, mut t) = ([Vec3::ZERO; 114], [Vec3::ZERO; 114], [[0u16; 3]; 224]);
+/// let mesh = uv_sphere(Scalar::from_num(2), 16, 8, &mut p, &mut n, &mut t).unwrap();
+/// assert_eq!(mesh.positions()[0], Vec3::from_int(0, 2, 0));
+/// ```
+pub fn uv_sphere<'a>(
+    radius: Scalar,
+    segments: u16,
+    rings: u16,
+    positions: &'a mut [Vec3],
+    normals: &'a mut [Vec3],
+    triangles: &'a mut [Triangle],
+) -> Result<Mesh<'a>, ShapeError> {
+    if segments < 3 || rings < 2 {
+        return Err(ShapeError::Resolution);
+    }
+    let (nv, nt) = uv_sphere_counts(segments, rings);
+    if nv > 65_536 {
+        return Err(ShapeError::TooManyVertices);
+    }
+    let too_small = ShapeError::StorageTooSmall { vertices: nv, triangles: nt };
+    let (Some(pos), Some(nor), Some(tri)) = (
+        positions.get_mut(..nv),
+        normals.get_mut(..nv),
+        triangles.get_mut(..nt),
+    ) else {
+        return Err(too_small);
+    };
+    let r = radius.to_bits() as i64;
+    let seg = segments as usize;
+    let south = nv - 1;
+    // Vertex 0: north pole; 1 + (k−1)·seg + s: ring k (1..rings), segment s; last: south pole.
+    for (idx, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
+        let unit = if idx == 0 {
+            [0, 1 << 30, 0]
+        } else if idx == south {
+            [0, -(1 << 30), 0]
+        } else {
+            let k = ((idx - 1) / seg + 1) as u32;
+            let s = ((idx - 1) % seg) as u32;
+            let theta = Angle::turn_fraction(k, 2 * rings as u32);
+            let phi = Angle::turn_fraction(s, segments as u32);
+            let rho = theta.sin_bits() as i64;
+            [
+                shr_round(rho * phi.sin_bits() as i64, 30) as i32,
+                theta.cos_bits(),
+                shr_round(rho * phi.cos_bits() as i64, 30) as i32,
+            ]
+        };
+        *p = Vec3::from_bits(sat(mul_unit(r, unit[0])), sat(mul_unit(r, unit[1])), sat(mul_unit(r, unit[2])));
+        let q = unit.map(|c| sat(shr_round(c as i64, 14)));
+        *n = Vec3::from_bits(q[0], q[1], q[2]);
+    }
+    let ring_vertex = |k: usize, s: usize| (1 + (k - 1) * seg + s % seg) as u16;
+    let mut out = tri.iter_mut();
+    let mut put = |t: Triangle| {
+        if let Some(slot) = out.next() {
+            *slot = t;
+        }
+    };
+    for s in 0..seg {
+        put([0, ring_vertex(1, s), ring_vertex(1, s + 1)]);
+    }
+    for k in 1..rings as usize - 1 {
+        for s in 0..seg {
+            let (a0, a1) = (ring_vertex(k, s), ring_vertex(k, s + 1));
+            let (b0, b1) = (ring_vertex(k + 1, s), ring_vertex(k + 1, s + 1));
+            put([a0, b0, b1]);
+            put([a0, b1, a1]);
+        }
+    }
+    let last = rings as usize - 1;
+    for s in 0..seg {
+        put([ring_vertex(last, s), south as u16, ring_vertex(last, s + 1)]);
+    }
+    let mesh = Mesh::new(pos, tri).map_err(|_| too_small)?;
+    mesh.with_normals(nor).map_err(|_| too_small)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    extern crate std;
+
+    fn outward(mesh: &Mesh<'_>) {
+        for t in mesh.triangles() {
+            let p = t.map(|i| mesh.positions()[i as usize].to_bits().map(|c| c as f64 / 65536.0));
+            let e1 = [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]];
+            let e2 = [p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]];
+            let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+            let c = [0, 1, 2].map(|k| (p[0][k] + p[1][k] + p[2][k]) / 3.0);
+            let d = n[0] * c[0] + n[1] * c[1] + n[2] * c[2];
+            assert!(d > 0.0, "triangle {t:?} faces inwards");
+        }
+    }
+
+    #[test]
+    fn solids_face_outwards() {
+        outward(&CUBE);
+        outward(&TETRAHEDRON);
+        outward(&OCTAHEDRON);
+    }
+
+    #[test]
+    fn sphere_faces_outwards_and_normals_are_unit() {
+        let (mut p, mut n, mut t) = ([Vec3::ZERO; 114], [Vec3::ZERO; 114], [[0u16; 3]; 224]);
+        let mesh = uv_sphere(Scalar::from_num(3), 16, 8, &mut p, &mut n, &mut t).unwrap();
+        outward(&mesh);
+        for n in mesh.normals().unwrap() {
+            let l = n.length().to_num::<f64>();
+            assert!((l - 1.0).abs() < 1e-3);
+        }
+    }
+
+    #[test]
+    fn torus_storage_and_resolution_errors() {
+        let (mut p, mut n, mut t) = ([Vec3::ZERO; 10], [Vec3::ZERO; 10], [[0u16; 3]; 10]);
+        let err = torus(Scalar::ONE, Scalar::ONE, 4, 4, &mut p, &mut n, &mut t).unwrap_err();
+        assert_eq!(err, ShapeError::StorageTooSmall { vertices: 16, triangles: 32 });
+        let err = torus(Scalar::ONE, Scalar::ONE, 2, 4, &mut p, &mut n, &mut t).unwrap_err();
+        assert_eq!(err, ShapeError::Resolution);
+    }
+}

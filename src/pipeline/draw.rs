@@ -1,0 +1,315 @@
+//! Drawing a prepared frame: triangles into a [`RasterTarget`], edges into any `DrawTarget`.
+
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::Pixel;
+
+use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
+use super::vertex::{project, ScreenMap};
+use super::{bump, Cull, Prepared, ScreenVertex, Stats};
+use crate::math::Mat4;
+use crate::mesh::Object;
+use crate::raster::{line_pixels, triangle_spans, PixelRect, Plane, ScreenPoint};
+use crate::shade::{FaceInputs, Flat, Paint, Shading};
+use crate::target::{DepthSpan, RasterTarget};
+
+/// Doubled signed area, y down: negative for front faces.
+fn area2(p: &[ScreenPoint; 3]) -> i64 {
+    let [a, b, c] = p.map(|q| (q.x as i64, q.y as i64));
+    (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
+}
+
+/// True when culling keeps a triangle of this signed area (non-zero).
+fn facing_kept(cull: Cull, area: i64) -> bool {
+    match cull {
+        Cull::Back => area < 0,
+        Cull::Front => area > 0,
+        Cull::None => true,
+    }
+}
+
+/// Per-object constants for drawing.
+struct ObjectSetup<'o> {
+    object: &'o Object<'o>,
+    vertices: &'o [ScreenVertex],
+    clip_from_model: Mat4,
+    normal_matrix: [[i32; 3]; 3],
+}
+
+impl ObjectSetup<'_> {
+    fn clip_vertex(&self, index: u16) -> ClipVertex {
+        let p = self.object.mesh.positions().get(index as usize).copied().unwrap_or_default();
+        let rgb = self.vertices.get(index as usize).map(|v| v.rgb).unwrap_or_default();
+        ClipVertex {
+            c: self.clip_from_model.transform_wide(p.to_bits()),
+            rgb: rgb.map(|c| (c as i32) << 8),
+        }
+    }
+
+    fn model(&self, index: u16) -> [i32; 3] {
+        self.object.mesh.positions().get(index as usize).copied().unwrap_or_default().to_bits()
+    }
+}
+
+/// Rows `[ceil((min−8)/16), ceil((max−8)/16))` of a triangle overlap the clip's rows.
+fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
+    let ymin = p.iter().map(|q| q.y).min().unwrap_or(0);
+    let ymax = p.iter().map(|q| q.y).max().unwrap_or(0);
+    // Row py is sampled at 16·py + 8; it can be covered only if ymin ≤ 16·py + 8 < ymax.
+    let first = crate::raster::ceil_div(ymin as i64 - 8, 16);
+    let end = crate::raster::ceil_div(ymax as i64 - 8, 16);
+    first < clip.y1 as i64 && end > clip.y0 as i64
+}
+
+fn fill<T: RasterTarget, P: Paint>(
+    target: &mut T,
+    clip: PixelRect,
+    p: [ScreenPoint; 3],
+    z: [i32; 3],
+    area: i64,
+    paint: &P,
+    stats: &mut Stats,
+) -> Result<(), T::Error> {
+    bump(&mut stats.drawn);
+    let plane = if T::DEPTH {
+        Plane::new(&p, z.map(|z| (z as i64) << 14), area)
+    } else {
+        Plane::default()
+    };
+    for span in triangle_spans(p, clip) {
+        let depth = if T::DEPTH {
+            DepthSpan {
+                start: plane.at(span.x0, span.y),
+                step: plane.step_x(),
+            }
+        } else {
+            DepthSpan::default()
+        };
+        target.fill_span(span, &depth, paint, stats)?;
+    }
+    Ok(())
+}
+
+impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
+    fn objects(&self) -> impl Iterator<Item = ObjectSetup<'_>> {
+        let mut offset = 0usize;
+        self.scene.objects.iter().map(move |object| {
+            let n = object.mesh.positions().len();
+            let vertices = self.cache.get(offset..offset.saturating_add(n)).unwrap_or(&[]);
+            offset = offset.saturating_add(n);
+            ObjectSetup {
+                object,
+                vertices,
+                clip_from_model: self.frame.clip_from_world * object.model,
+                normal_matrix: object.model.normal_matrix(),
+            }
+        })
+    }
+
+    /// Fills every triangle of the scene into `target` (a [`ColorDepth`](crate::target::ColorDepth)
+    /// frame or band, or a [`Direct`](crate::target::Direct) draw target). Returns what was
+    /// drawn, or the target's first error.
+    pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
+        let mut stats = Stats::default();
+        let clip = target.clip();
+        let map = ScreenMap::new(&self.frame.viewport);
+        let lighting = &self.scene.lighting;
+        for setup in self.objects() {
+            // Gouraud needs per-vertex normals; without them the object is shaded flat.
+            let smooth = !S::PER_VERTEX || setup.object.mesh.normals().is_some();
+            for tri in setup.object.mesh.triangles() {
+                bump(&mut stats.primitives);
+                let (Some(a), Some(b), Some(c)) = (
+                    setup.vertices.get(tri[0] as usize),
+                    setup.vertices.get(tri[1] as usize),
+                    setup.vertices.get(tri[2] as usize),
+                ) else {
+                    bump(&mut stats.invalid);
+                    continue;
+                };
+                if a.outcode & b.outcode & c.outcode != 0 {
+                    bump(&mut stats.outside);
+                    continue;
+                }
+                let model = || tri.map(|i| setup.model(i));
+                let face = |screen: [ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64| FaceInputs {
+                    base: setup.object.color,
+                    model: model(),
+                    normal_matrix: &setup.normal_matrix,
+                    vertex_rgb: rgb,
+                    screen,
+                    area2,
+                };
+                if a.outcode | b.outcode | c.outcode == 0 {
+                    let p = [a.point(), b.point(), c.point()];
+                    if !rows_overlap(&p, &clip) {
+                        continue;
+                    }
+                    let area = area2(&p);
+                    if area == 0 {
+                        bump(&mut stats.degenerate);
+                        continue;
+                    }
+                    if !facing_kept(self.frame.cull, area) {
+                        bump(&mut stats.culled);
+                        continue;
+                    }
+                    let rgb = [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8));
+                    let f = face(p, rgb, area);
+                    if smooth {
+                        let paint = self.shading.paint(&f, lighting);
+                        fill(target, clip, p, [a.z, b.z, c.z], area, &paint, &mut stats)?;
+                    } else {
+                        let paint = Flat.paint(&f, lighting);
+                        fill(target, clip, p, [a.z, b.z, c.z], area, &paint, &mut stats)?;
+                    }
+                    continue;
+                }
+                // Clipping path.
+                bump(&mut stats.clipped);
+                let planes = a.outcode | b.outcode | c.outcode;
+                let poly = clip_polygon(tri.map(|i| setup.clip_vertex(i)), planes, &map);
+                let Some(projected) = project_polygon(&poly, &map) else {
+                    bump(&mut stats.degenerate);
+                    continue;
+                };
+                let Some((first, rest)) = projected.split_first() else { continue };
+                for pair in rest.windows(2) {
+                    let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) else { continue };
+                    let p = [first.0, v1.0, v2.0];
+                    let area = area2(&p);
+                    if area == 0 {
+                        bump(&mut stats.degenerate);
+                        continue;
+                    }
+                    if !facing_kept(self.frame.cull, area) {
+                        bump(&mut stats.culled);
+                        continue;
+                    }
+                    let f = face(p, [first.2, v1.2, v2.2], area);
+                    let z = [first.1, v1.1, v2.1];
+                    if smooth {
+                        let paint = self.shading.paint(&f, lighting);
+                        fill(target, clip, p, z, area, &paint, &mut stats)?;
+                    } else {
+                        let paint = Flat.paint(&f, lighting);
+                        fill(target, clip, p, z, area, &paint, &mut stats)?;
+                    }
+                }
+            }
+        }
+        Ok(stats)
+    }
+
+    /// Draws edges into any `DrawTarget`, in each object's colour, with no depth test: for a
+    /// mesh with an edge list, every listed edge once; otherwise the three edges of every
+    /// triangle that survives culling. Lines follow the column-centre rule with the start pixel
+    /// drawn and the end pixel not (see [`raster`](crate::raster)).
+    pub fn draw_wireframe<D>(&self, target: &mut D) -> Result<Stats, D::Error>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
+        let mut stats = Stats::default();
+        let b = target.bounding_box();
+        let clip = PixelRect::new(
+            b.top_left.x,
+            b.top_left.y,
+            b.top_left.x.saturating_add(b.size.width.min(i32::MAX as u32) as i32),
+            b.top_left.y.saturating_add(b.size.height.min(i32::MAX as u32) as i32),
+        );
+        let map = ScreenMap::new(&self.frame.viewport);
+        for setup in self.objects() {
+            let color = D::Color::from(setup.object.color);
+            let mut segment = |i: u16, j: u16, stats: &mut Stats| -> Result<(), D::Error> {
+                let (Some(a), Some(b)) = (setup.vertices.get(i as usize), setup.vertices.get(j as usize)) else {
+                    bump(&mut stats.invalid);
+                    return Ok(());
+                };
+                if a.outcode & b.outcode != 0 {
+                    bump(&mut stats.outside);
+                    return Ok(());
+                }
+                let (pa, pb) = if a.outcode | b.outcode == 0 {
+                    (a.point(), b.point())
+                } else {
+                    bump(&mut stats.clipped);
+                    let Some((ca, cb)) = clip_segment(setup.clip_vertex(i), setup.clip_vertex(j), a.outcode | b.outcode, &map) else {
+                        return Ok(());
+                    };
+                    let (Some((pa, _)), Some((pb, _))) = (project(ca.c, &map), project(cb.c, &map)) else {
+                        return Ok(());
+                    };
+                    (pa, pb)
+                };
+                bump(&mut stats.drawn);
+                let pixels = line_pixels(pa, pb, clip);
+                let n = pixels.len() as u32;
+                stats.fragments = stats.fragments.saturating_add(n);
+                stats.written = stats.written.saturating_add(n);
+                target.draw_iter(pixels.map(|p| Pixel(p, color)))
+            };
+            if let Some(edges) = setup.object.mesh.edges() {
+                for e in edges {
+                    bump(&mut stats.primitives);
+                    segment(e[0], e[1], &mut stats)?;
+                }
+                continue;
+            }
+            for tri in setup.object.mesh.triangles() {
+                bump(&mut stats.primitives);
+                let vs = tri.map(|i| setup.vertices.get(i as usize).copied());
+                let [Some(a), Some(b), Some(c)] = vs else {
+                    bump(&mut stats.invalid);
+                    continue;
+                };
+                if a.outcode & b.outcode & c.outcode != 0 {
+                    bump(&mut stats.outside);
+                    continue;
+                }
+                let area = if a.outcode | b.outcode | c.outcode == 0 {
+                    area2(&[a.point(), b.point(), c.point()])
+                } else {
+                    let poly = clip_polygon(tri.map(|i| setup.clip_vertex(i)), a.outcode | b.outcode | c.outcode, &map);
+                    polygon_area(&poly, &map)
+                };
+                if area == 0 {
+                    bump(&mut stats.degenerate);
+                    continue;
+                }
+                if !facing_kept(self.frame.cull, area) {
+                    bump(&mut stats.culled);
+                    continue;
+                }
+                segment(tri[0], tri[1], &mut stats)?;
+                segment(tri[1], tri[2], &mut stats)?;
+                segment(tri[2], tri[0], &mut stats)?;
+            }
+        }
+        Ok(stats)
+    }
+}
+
+type Projected = heapless::Vec<(ScreenPoint, i32, [i32; 3]), 9>;
+
+/// Projects a clipped polygon; `None` if it is empty or a vertex has w ≤ 0.
+fn project_polygon(poly: &Polygon, map: &ScreenMap) -> Option<Projected> {
+    if poly.len() < 3 {
+        return None;
+    }
+    let mut out = Projected::new();
+    for v in poly {
+        let (p, z) = project(v.c, map)?;
+        let _ = out.push((p, z, v.rgb));
+    }
+    Some(out)
+}
+
+/// Doubled signed screen area of a clipped polygon (0 if it is empty).
+fn polygon_area(poly: &Polygon, map: &ScreenMap) -> i64 {
+    let Some(p) = project_polygon(poly, map) else { return 0 };
+    let Some((first, rest)) = p.split_first() else { return 0 };
+    rest.windows(2)
+        .filter_map(|w| Some(area2(&[first.0, w.first()?.0, w.get(1)?.0])))
+        .fold(0i64, |s, a| s.saturating_add(a))
+}

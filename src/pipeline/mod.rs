@@ -1,0 +1,214 @@
+//! The per-frame pipeline, in the order data flows:
+//!
+//! 1. [`Frame::prepare`] runs the vertex stage once per vertex: `clip = clip_from_world ·
+//!    model · position`, then the outcode against the near and far planes and the guard band,
+//!    then (for vertices inside all of them) the divide by w, the viewport and the snap to
+//!    sub-pixels. [`Gouraud`](crate::shade::Gouraud) also lights each vertex here. The results go
+//!    into a caller-supplied cache of [`ScreenVertex`], one per vertex of the scene.
+//! 2. [`Prepared::draw`] (filled) or [`Prepared::draw_wireframe`] walks the triangles, reading
+//!    the cache: a triangle entirely outside one plane is dropped; one with every vertex
+//!    inside goes straight on; any other is clipped in homogeneous space (at most 9 vertices,
+//!    drawn as a fan), so nothing is ever divided by w ≤ 0 and no coordinate outgrows the
+//!    rasteriser's arithmetic. Then back-face culling by the sign of the snapped screen area,
+//!    shading, and the rasteriser into the target. Drawing can be repeated per band: the cache
+//!    is read, never written.
+//!
+//! [`Stats`] counts what was drawn and what was dropped and why.
+
+mod clip;
+mod draw;
+mod vertex;
+
+pub use vertex::ScreenVertex;
+
+use core::fmt;
+
+use crate::math::Mat4;
+use crate::projection::{Projection, Viewport};
+use crate::scene::Scene;
+use crate::shade::{vertex_normal, Shading};
+
+use vertex::{outcode, project, ScreenMap};
+
+/// Which triangles back-face culling removes. Front faces are counter-clockwise when seen from
+/// outside (in world space); on screen (y down) that is a negative signed area.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Cull {
+    /// Remove triangles facing away from the camera (the default).
+    #[default]
+    Back,
+    /// Remove triangles facing the camera.
+    Front,
+    /// Keep both.
+    None,
+}
+
+/// What one drawing call did. Counts saturate.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Stats {
+    /// Triangles (or edges, for wireframes with an edge list) looked at.
+    pub primitives: u32,
+    /// Dropped: an index refers to no vertex.
+    pub invalid: u32,
+    /// Dropped: entirely outside the near plane, the far plane or the guard band.
+    pub outside: u32,
+    /// Went through homogeneous clipping (crossing the near/far plane or the guard band).
+    pub clipped: u32,
+    /// Dropped by back-face culling.
+    pub culled: u32,
+    /// Dropped: zero area after snapping.
+    pub degenerate: u32,
+    /// Triangles (or lines) handed to the rasteriser.
+    pub drawn: u32,
+    /// Pixels depth-tested (or drawn, without depth).
+    pub fragments: u32,
+    /// Pixels written.
+    pub written: u32,
+}
+
+fn bump(c: &mut u32) {
+    *c = c.saturating_add(1);
+}
+
+/// Why a frame could not be prepared.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum PrepareError {
+    /// The vertex cache holds fewer entries than the scene has vertices.
+    CacheTooSmall {
+        /// Vertices in the scene.
+        needed: usize,
+        /// Entries in the cache.
+        capacity: usize,
+    },
+}
+
+impl fmt::Display for PrepareError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PrepareError::CacheTooSmall { needed, capacity } => {
+                write!(f, "vertex cache holds {capacity} entries, the scene has {needed} vertices")
+            }
+        }
+    }
+}
+
+impl core::error::Error for PrepareError {}
+
+/// The per-frame constants: camera, projection, viewport and culling.
+///
+/// ```
+/// use fixed3d::camera::LookAt;
+/// use fixed3d::math::{Angle, Scalar, Vec3};
+/// use fixed3d::pipeline::Frame;
+/// use fixed3d::projection::{Projection, Viewport};
+/// let viewport = Viewport::new(320, 240).unwrap();
+/// let view = LookAt::new(Vec3::from_int(0, 0, 3), Vec3::ZERO, Vec3::Y).view().unwrap();
+/// let s = Scalar::from_num;
+/// let projection = Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1), s(10)).unwrap();
+/// let frame = Frame::new(&view, &projection, viewport);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Frame {
+    clip_from_world: Mat4,
+    viewport: Viewport,
+    cull: Cull,
+}
+
+impl Frame {
+    /// A frame seen through `view` and `projection`, drawn into `viewport`.
+    #[must_use]
+    pub fn new(view: &Mat4, projection: &Projection, viewport: Viewport) -> Self {
+        Frame {
+            clip_from_world: *projection.matrix() * *view,
+            viewport,
+            cull: Cull::Back,
+        }
+    }
+
+    /// With another culling mode.
+    #[must_use]
+    pub fn with_cull(self, cull: Cull) -> Self {
+        Frame { cull, ..self }
+    }
+
+    /// The viewport.
+    #[must_use]
+    pub fn viewport(&self) -> Viewport {
+        self.viewport
+    }
+
+    /// `projection · view`.
+    #[must_use]
+    pub fn clip_from_world(&self) -> &Mat4 {
+        &self.clip_from_world
+    }
+
+    /// Runs the vertex stage for every object of `scene` into `cache` (one entry per vertex,
+    /// see [`Scene::vertex_count`]) and returns the frame ready to draw.
+    pub fn prepare<'s, 'c, const N: usize, S: Shading>(
+        &self,
+        scene: &'s Scene<'s, N>,
+        cache: &'c mut [ScreenVertex],
+        shading: S,
+    ) -> Result<Prepared<'s, 'c, N, S>, PrepareError> {
+        let needed = scene.vertex_count();
+        if cache.len() < needed {
+            return Err(PrepareError::CacheTooSmall {
+                needed,
+                capacity: cache.len(),
+            });
+        }
+        let map = ScreenMap::new(&self.viewport);
+        let mut slots = cache.iter_mut();
+        for object in scene.objects {
+            let clip_from_model = self.clip_from_world * object.model;
+            let normal_matrix = object.model.normal_matrix();
+            let normals = if S::PER_VERTEX { object.mesh.normals() } else { None };
+            for (i, p) in object.mesh.positions().iter().enumerate() {
+                let Some(slot) = slots.next() else { break };
+                let c = clip_from_model.transform_wide(p.to_bits());
+                let code = outcode(c, &map);
+                let (pt, z) = if code == 0 { project(c, &map).unwrap_or_default() } else { Default::default() };
+                let rgb = match normals.and_then(|n| n.get(i)) {
+                    Some(n) => {
+                        let lit = crate::shade::lambert(object.color, vertex_normal(n.to_bits(), &normal_matrix), &scene.lighting);
+                        use embedded_graphics::pixelcolor::RgbColor;
+                        [lit.r(), lit.g(), lit.b()]
+                    }
+                    None => [0; 3],
+                };
+                *slot = ScreenVertex {
+                    x: pt.x,
+                    y: pt.y,
+                    z,
+                    rgb,
+                    outcode: code,
+                };
+            }
+        }
+        Ok(Prepared {
+            frame: *self,
+            scene,
+            cache,
+            shading,
+        })
+    }
+}
+
+/// A frame whose vertices are transformed, ready to draw (in full or band by band).
+#[derive(Debug)]
+pub struct Prepared<'s, 'c, const N: usize, S> {
+    frame: Frame,
+    scene: &'s Scene<'s, N>,
+    cache: &'c [ScreenVertex],
+    shading: S,
+}
+
+impl<const N: usize, S> Prepared<'_, '_, N, S> {
+    /// The cached vertices of all objects, in scene order.
+    #[must_use]
+    pub fn vertices(&self) -> &[ScreenVertex] {
+        self.cache
+    }
+}

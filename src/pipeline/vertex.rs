@@ -1,0 +1,145 @@
+//! The vertex stage: model space → clip space → screen (once per vertex per frame), with the
+//! outcodes that decide which triangles need clipping.
+//!
+//! Clip-space coordinates are raw Q16.16 in 64 bits (below 2⁴⁸ in magnitude). Before any product
+//! they are *reduced*: shifted right together until all four fit in 31 bits, which changes no
+//! ratio that matters and keeps every product below 2⁶². In practice (coordinates below 32768)
+//! nothing is shifted.
+
+use crate::math::{div_round, shr_round, DEPTH_ONE};
+use crate::projection::Viewport;
+use crate::raster::ScreenPoint;
+
+/// One transformed vertex in the per-frame cache: snapped screen position, depth, lit colour
+/// (Gouraud) and the clip planes it is outside of. 16 bytes; a frame needs one per vertex of
+/// the scene.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ScreenVertex {
+    pub(crate) x: i32,
+    pub(crate) y: i32,
+    pub(crate) z: i32,
+    pub(crate) rgb: [u8; 3],
+    pub(crate) outcode: u8,
+}
+
+impl ScreenVertex {
+    /// An unused cache slot (for initialising arrays).
+    pub const DEFAULT: ScreenVertex = ScreenVertex {
+        x: 0,
+        y: 0,
+        z: 0,
+        rgb: [0; 3],
+        outcode: 0,
+    };
+
+    /// The snapped screen position in sub-pixels (meaningful when [`is_inside`](Self::is_inside)).
+    #[must_use]
+    pub const fn point(&self) -> ScreenPoint {
+        ScreenPoint::new(self.x, self.y)
+    }
+
+    /// True when the vertex lies between the near and far planes and inside the guard band, so
+    /// that its screen position is valid.
+    #[must_use]
+    pub const fn is_inside(&self) -> bool {
+        self.outcode == 0
+    }
+
+    /// Depth after projection as a fraction of 2³⁰ (0 near, 2³⁰ far).
+    #[must_use]
+    pub const fn depth(&self) -> i32 {
+        self.z
+    }
+}
+
+/// Clip planes, one bit each, in the order clipping applies them: near, far, then the guard
+/// band's left, right, top and bottom.
+pub(crate) const PLANES: u32 = 6;
+
+/// Half the guard band in sub-pixels around the screen centre: projected coordinates within it
+/// stay below 2¹⁵ in magnitude (the attribute set-up's bound) for viewports up to 2048 pixels.
+const GUARD: i64 = (1 << 14) - 16;
+
+/// Viewport constants in sub-pixels.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ScreenMap {
+    half_w: i64,
+    half_h: i64,
+}
+
+impl ScreenMap {
+    pub(crate) fn new(v: &Viewport) -> Self {
+        // width/2 · 16 = width · 8
+        ScreenMap {
+            half_w: v.width() as i64 * 8,
+            half_h: v.height() as i64 * 8,
+        }
+    }
+}
+
+/// Shift that brings the largest magnitude below 2³¹.
+fn reduce_shift(c: &[i64; 4]) -> u32 {
+    let max = c.iter().map(|v| v.unsigned_abs()).max().unwrap_or(0);
+    (64 - max.leading_zeros()).saturating_sub(31)
+}
+
+pub(crate) fn reduce(c: [i64; 4]) -> [i64; 4] {
+    let s = reduce_shift(&c);
+    c.map(|v| shr_round(v, s))
+}
+
+/// Two vertices reduced by a common shift (for intersections); returns the shift too.
+pub(crate) fn reduce_pair(a: [i64; 4], b: [i64; 4]) -> ([i64; 4], [i64; 4], u32) {
+    let s = reduce_shift(&a).max(reduce_shift(&b));
+    (a.map(|v| shr_round(v, s)), b.map(|v| shr_round(v, s)), s)
+}
+
+/// Signed distance to clip plane `k` of reduced coordinates (positive inside).
+pub(crate) fn distance(k: u32, c: &[i64; 4], m: &ScreenMap) -> i64 {
+    let [x, y, z, w] = *c;
+    match k {
+        0 => z,                      // near: z > 0
+        1 => w - z,                  // far: z <= w
+        2 => GUARD * w + x * m.half_w, // left guard
+        3 => GUARD * w - x * m.half_w, // right guard
+        4 => GUARD * w - y * m.half_h, // top guard (clip +y is up)
+        _ => GUARD * w + y * m.half_h, // bottom guard
+    }
+}
+
+/// On the near plane counts as outside (so nothing is drawn at depth exactly 0 from a triangle
+/// lying in the plane, case T18); on any other plane counts as inside.
+pub(crate) fn inside(k: u32, d: i64) -> bool {
+    if k == 0 {
+        d > 0
+    } else {
+        d >= 0
+    }
+}
+
+/// The planes a clip-space vertex is outside of.
+pub(crate) fn outcode(c: [i64; 4], m: &ScreenMap) -> u8 {
+    let r = reduce(c);
+    (0..PLANES).fold(0u8, |code, k| {
+        if inside(k, distance(k, &r, m)) {
+            code
+        } else {
+            code | (1 << k)
+        }
+    })
+}
+
+/// Perspective divide and viewport: snapped sub-pixel x, y (round to nearest, ties away from
+/// the screen centre, so `snap(−x) = −snap(x)` about it) and Q1.30 depth clamped to [0, 1].
+/// `None` when w ≤ 0: the pipeline never divides by it.
+pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> {
+    let [x, y, z, w] = reduce(c);
+    if w <= 0 {
+        return None;
+    }
+    let lim = 1i64 << 15;
+    let sx = (m.half_w + div_round(x * m.half_w, w)).clamp(-lim, lim);
+    let sy = (m.half_h - div_round(y * m.half_h, w)).clamp(-lim, lim);
+    let sz = div_round(z << 30, w).clamp(0, DEPTH_ONE as i64);
+    Some((ScreenPoint::new(sx as i32, sy as i32), sz as i32))
+}

@@ -1,0 +1,185 @@
+//! What a frame shows: objects, an ambient colour and directional lights.
+//!
+//! Lambert's law, per colour channel: `colour = base · clamp(ambient + Σᵢ lightᵢ · max(0, N·Lᵢ),
+//! 0, 1)`, where `N` is the unit surface normal and `Lᵢ` the unit direction **from the surface
+//! towards** light *i*. The lights live in a fixed-capacity list whose size the caller chooses.
+
+use core::fmt;
+
+use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+
+use crate::math::{normalize, Scalar, Vec3};
+use crate::mesh::Object;
+
+/// The colour and intensity of a light: one [`Scalar`] per channel, 1.0 is full strength
+/// (values above 1 are allowed; the lit result is clamped).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct LightColor {
+    /// Red.
+    pub r: Scalar,
+    /// Green.
+    pub g: Scalar,
+    /// Blue.
+    pub b: Scalar,
+}
+
+impl LightColor {
+    /// No light.
+    pub const BLACK: LightColor = LightColor::gray(Scalar::ZERO);
+    /// Full white.
+    pub const WHITE: LightColor = LightColor::gray(Scalar::ONE);
+
+    /// A colour from three intensities.
+    #[must_use]
+    pub const fn new(r: Scalar, g: Scalar, b: Scalar) -> Self {
+        LightColor { r, g, b }
+    }
+
+    /// White at `intensity`.
+    #[must_use]
+    pub const fn gray(intensity: Scalar) -> Self {
+        LightColor::new(intensity, intensity, intensity)
+    }
+
+    /// An [`Rgb888`] colour (255 is full) scaled by `intensity`.
+    #[must_use]
+    pub fn from_rgb888(c: Rgb888, intensity: Scalar) -> Self {
+        let ch = |v: u8| {
+            let raw = (intensity.to_bits() as i64 * v as i64 + 127) / 255;
+            Scalar::from_bits(raw.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
+        };
+        LightColor::new(ch(c.r()), ch(c.g()), ch(c.b()))
+    }
+
+    pub(crate) fn channels(&self) -> [i64; 3] {
+        [self.r, self.g, self.b].map(|c| c.to_bits() as i64)
+    }
+}
+
+/// A light infinitely far away, shining along `-direction`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct DirectionalLight {
+    /// The direction from the surface **towards** the light (any non-zero length).
+    pub direction: Vec3,
+    /// Colour and intensity.
+    pub color: LightColor,
+}
+
+impl DirectionalLight {
+    /// A light towards `direction`.
+    #[must_use]
+    pub const fn new(direction: Vec3, color: LightColor) -> Self {
+        DirectionalLight { direction, color }
+    }
+}
+
+/// Why a light could not be added.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum LightError {
+    /// The list is full (its capacity is the `N` of [`Lighting<N>`]).
+    Full,
+    /// The direction is the zero vector.
+    ZeroDirection,
+}
+
+impl fmt::Display for LightError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            LightError::Full => "no room for another light",
+            LightError::ZeroDirection => "a light direction must not be zero",
+        })
+    }
+}
+
+impl core::error::Error for LightError {}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct PreparedLight {
+    /// Unit direction towards the light, Q2.30.
+    pub(crate) direction: [i32; 3],
+    pub(crate) color: [i64; 3],
+}
+
+/// An ambient colour and up to `N` directional lights.
+///
+/// ```
+/// use fixed3d::math::{Scalar, Vec3};
+/// use fixed3d::scene::{DirectionalLight, LightColor, LightError, Lighting};
+/// let mut lighting = Lighting::<1>::new(LightColor::gray(Scalar::from_num(0.2)));
+/// let sun = DirectionalLight::new(Vec3::from_int(-1, 1, 1), LightColor::gray(Scalar::from_num(0.8)));
+/// assert_eq!(lighting.push(sun), Ok(()));
+/// assert_eq!(lighting.push(sun), Err(LightError::Full));
+/// ```
+#[derive(Clone, Debug)]
+pub struct Lighting<const N: usize> {
+    ambient: LightColor,
+    lights: heapless::Vec<PreparedLight, N>,
+}
+
+impl<const N: usize> Lighting<N> {
+    /// Ambient light only.
+    #[must_use]
+    pub const fn new(ambient: LightColor) -> Self {
+        Lighting {
+            ambient,
+            lights: heapless::Vec::new(),
+        }
+    }
+
+    /// Adds a light; its direction is normalised here, once.
+    pub fn push(&mut self, light: DirectionalLight) -> Result<(), LightError> {
+        let direction =
+            normalize(light.direction.to_bits().map(i64::from)).ok_or(LightError::ZeroDirection)?;
+        let prepared = PreparedLight {
+            direction,
+            color: light.color.channels(),
+        };
+        self.lights.push(prepared).map_err(|_| LightError::Full)
+    }
+
+    /// The ambient colour.
+    #[must_use]
+    pub const fn ambient(&self) -> LightColor {
+        self.ambient
+    }
+
+    /// How many lights there are.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.lights.len()
+    }
+
+    /// True when there is no directional light.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.lights.is_empty()
+    }
+
+    pub(crate) fn lights(&self) -> &[PreparedLight] {
+        &self.lights
+    }
+}
+
+/// The objects of a frame and their lighting.
+#[derive(Clone, Debug)]
+pub struct Scene<'a, const N: usize> {
+    /// The objects, drawn in this order.
+    pub objects: &'a [Object<'a>],
+    /// Ambient and directional lights.
+    pub lighting: Lighting<N>,
+}
+
+impl<'a, const N: usize> Scene<'a, N> {
+    /// A scene.
+    #[must_use]
+    pub const fn new(objects: &'a [Object<'a>], lighting: Lighting<N>) -> Self {
+        Scene { objects, lighting }
+    }
+
+    /// Vertices of all objects: the size of the vertex cache a frame needs.
+    #[must_use]
+    pub fn vertex_count(&self) -> usize {
+        self.objects.iter().map(|o| o.mesh.positions().len()).sum()
+    }
+}

@@ -1,0 +1,97 @@
+//! Paints: the colour sources a target reads along a span.
+
+use embedded_graphics::pixelcolor::Rgb888;
+
+use crate::raster::{Plane, ScreenPoint};
+
+/// A source of colours along a span, started at its first pixel.
+pub trait Paint: core::fmt::Debug {
+    /// The running colour along one span.
+    type Cursor: Iterator<Item = Rgb888>;
+    /// `Some` when the colour is the same at every pixel (spans can then be filled at once).
+    fn solid(&self) -> Option<Rgb888>;
+    /// The colours from pixel `(x, y)` rightwards.
+    fn cursor(&self, x: i32, y: i32) -> Self::Cursor;
+}
+
+/// One colour for the whole triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SolidPaint(pub Rgb888);
+
+impl Paint for SolidPaint {
+    type Cursor = core::iter::Repeat<Rgb888>;
+    #[inline]
+    fn solid(&self) -> Option<Rgb888> {
+        Some(self.0)
+    }
+    #[inline]
+    fn cursor(&self, _: i32, _: i32) -> Self::Cursor {
+        core::iter::repeat(self.0)
+    }
+}
+
+/// Channel values carry this many fraction bits in the planes (values below 2⁴⁴).
+const FRAC: u32 = 36;
+/// Vertex colours arrive with this many fraction bits (0..=255 << 8).
+pub(crate) const RGB_FRAC: u32 = 8;
+
+/// Vertex colours interpolated across the triangle, each channel clamped to the range of its
+/// vertex values (so every pixel is a convex combination, rule R8).
+#[derive(Clone, Copy, Debug)]
+pub struct SmoothPaint {
+    planes: [Plane; 3],
+    lo: [i64; 3],
+    hi: [i64; 3],
+}
+
+impl SmoothPaint {
+    /// From vertex colours (channels `0..=255 << RGB_FRAC`) at snapped screen positions.
+    pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64) -> Self {
+        let scaled = |k: usize| rgb.map(|c| (c.get(k).copied().unwrap_or(0) as i64) << (FRAC - RGB_FRAC));
+        let planes = [0, 1, 2].map(|k| Plane::new(p, scaled(k), area2));
+        let lo = [0, 1, 2].map(|k| scaled(k).into_iter().min().unwrap_or(0));
+        let hi = [0, 1, 2].map(|k| scaled(k).into_iter().max().unwrap_or(0));
+        SmoothPaint { planes, lo, hi }
+    }
+}
+
+/// The running colour of a [`SmoothPaint`] along a span.
+#[derive(Clone, Copy, Debug)]
+pub struct SmoothCursor {
+    acc: [i64; 3],
+    step: [i64; 3],
+    lo: [i64; 3],
+    hi: [i64; 3],
+}
+
+impl Iterator for SmoothCursor {
+    type Item = Rgb888;
+    #[inline]
+    fn next(&mut self) -> Option<Rgb888> {
+        let ch = |k: usize| {
+            let v = self.acc[k].clamp(self.lo[k], self.hi[k]);
+            // Round to nearest 8-bit value.
+            ((v + (1 << (FRAC - 1))) >> FRAC).clamp(0, 255) as u8
+        };
+        let c = Rgb888::new(ch(0), ch(1), ch(2));
+        for k in 0..3 {
+            self.acc[k] = self.acc[k].wrapping_add(self.step[k]);
+        }
+        Some(c)
+    }
+}
+
+impl Paint for SmoothPaint {
+    type Cursor = SmoothCursor;
+    fn solid(&self) -> Option<Rgb888> {
+        None
+    }
+    fn cursor(&self, x: i32, y: i32) -> SmoothCursor {
+        SmoothCursor {
+            acc: self.planes.map(|p| p.at(x, y)),
+            step: self.planes.map(|p| p.step_x()),
+            lo: self.lo,
+            hi: self.hi,
+        }
+    }
+}

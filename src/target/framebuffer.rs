@@ -1,0 +1,210 @@
+//! A colour buffer over a caller-supplied slice.
+
+use core::fmt;
+
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::geometry::{Dimensions, OriginDimensions, Point, Size};
+use embedded_graphics::pixelcolor::PixelColor;
+use embedded_graphics::primitives::{PointsIter, Rectangle};
+use embedded_graphics::Pixel;
+
+/// Why a buffer could not be wrapped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum BufferError {
+    /// The slice holds fewer than `width · height` elements.
+    TooShort {
+        /// Elements needed.
+        needed: usize,
+        /// Elements given.
+        len: usize,
+    },
+    /// `width · height` overflows, or a dimension exceeds `i32::MAX`.
+    TooLarge,
+    /// A colour buffer and a depth buffer paired for one target differ in size.
+    SizeMismatch,
+}
+
+impl fmt::Display for BufferError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BufferError::TooShort { needed, len } => {
+                write!(f, "buffer holds {len} elements, {needed} needed")
+            }
+            BufferError::TooLarge => f.write_str("buffer dimensions too large"),
+            BufferError::SizeMismatch => f.write_str("colour and depth buffers differ in size"),
+        }
+    }
+}
+
+impl core::error::Error for BufferError {}
+
+/// `width · height` as usize, checked.
+pub(crate) fn area(width: u32, height: u32, len: usize) -> Result<usize, BufferError> {
+    if width > i32::MAX as u32 || height > i32::MAX as u32 {
+        return Err(BufferError::TooLarge);
+    }
+    let needed = (width as usize).checked_mul(height as usize).ok_or(BufferError::TooLarge)?;
+    if len < needed {
+        return Err(BufferError::TooShort { needed, len });
+    }
+    Ok(needed)
+}
+
+/// A `width × height` image in a caller-supplied slice, row-major, top row first.
+///
+/// It is a [`DrawTarget`] with fast `fill_solid` and `fill_contiguous`, and presents itself to
+/// any other `DrawTarget` (a display driver) in one `fill_contiguous` call.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+/// use fixed3d::target::FrameBuffer;
+/// let mut pixels = [BinaryColor::Off; 4 * 2];
+/// let mut fb = FrameBuffer::new(&mut pixels, 4, 2).unwrap();
+/// Pixel(Point::new(1, 0), BinaryColor::On).draw(&mut fb).unwrap();
+/// let mut display = MockDisplay::new();
+/// fb.present(&mut display).unwrap();
+/// display.assert_pattern(&[".#..", "...."]);
+/// ```
+#[derive(Debug)]
+pub struct FrameBuffer<'a, C> {
+    pixels: &'a mut [C],
+    width: u32,
+    height: u32,
+}
+
+impl<'a, C: PixelColor> FrameBuffer<'a, C> {
+    /// Wraps `pixels` (at least `width · height` long; only that prefix is used).
+    pub fn new(pixels: &'a mut [C], width: u32, height: u32) -> Result<Self, BufferError> {
+        let n = area(width, height, pixels.len())?;
+        let (used, _) = pixels.split_at_mut(n);
+        Ok(FrameBuffer {
+            pixels: used,
+            width,
+            height,
+        })
+    }
+
+    /// Width in pixels.
+    #[must_use]
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    #[must_use]
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The pixels, row-major.
+    #[must_use]
+    pub fn pixels(&self) -> &[C] {
+        self.pixels
+    }
+
+    /// The pixel at `(x, y)`, `None` outside.
+    #[must_use]
+    pub fn pixel(&self, x: i32, y: i32) -> Option<C> {
+        self.index(x, y).and_then(|i| self.pixels.get(i)).copied()
+    }
+
+    /// Sets every pixel to `color`.
+    pub fn fill(&mut self, color: C) {
+        self.pixels.fill(color);
+    }
+
+    /// Row `y` as a mutable slice.
+    pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [C]> {
+        let w = self.width as usize;
+        let start = usize::try_from(y).ok()?.checked_mul(w)?;
+        self.pixels.get_mut(start..start.checked_add(w)?)
+    }
+
+    fn index(&self, x: i32, y: i32) -> Option<usize> {
+        let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        Some(y as usize * self.width as usize + x as usize)
+    }
+
+    /// Sends the whole image to `display` with its top-left corner at the origin.
+    pub fn present<D: DrawTarget<Color = C>>(&self, display: &mut D) -> Result<(), D::Error> {
+        self.present_at(display, Point::zero())
+    }
+
+    /// Sends the whole image to `display` with its top-left corner at `top_left` (for a band,
+    /// the band's first row).
+    pub fn present_at<D: DrawTarget<Color = C>>(&self, display: &mut D, top_left: Point) -> Result<(), D::Error> {
+        let area = Rectangle::new(top_left, self.size());
+        display.fill_contiguous(&area, self.pixels.iter().copied())
+    }
+}
+
+impl<C: PixelColor> OriginDimensions for FrameBuffer<'_, C> {
+    fn size(&self) -> Size {
+        Size::new(self.width, self.height)
+    }
+}
+
+impl<C: PixelColor> DrawTarget for FrameBuffer<'_, C> {
+    type Color = C;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<C>>,
+    {
+        for Pixel(p, c) in pixels {
+            if let Some(slot) = self.index(p.x, p.y).and_then(|i| self.pixels.get_mut(i)) {
+                *slot = c;
+            }
+        }
+        Ok(())
+    }
+
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = C>,
+    {
+        let clipped = area.intersection(&self.bounding_box());
+        if clipped == *area {
+            // Fast path: the whole area is inside; copy row by row.
+            let mut colors = colors.into_iter();
+            let (x0, w) = (area.top_left.x, area.size.width as usize);
+            for y in area.rows() {
+                if let Some(row) = self.row_mut(y) {
+                    let start = x0 as usize;
+                    if let Some(dst) = row.get_mut(start..start + w) {
+                        for (d, c) in dst.iter_mut().zip(&mut colors) {
+                            *d = c;
+                        }
+                    }
+                }
+            }
+            Ok(())
+        } else {
+            self.draw_iter(area.points().zip(colors).map(|(p, c)| Pixel(p, c)))
+        }
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error> {
+        let a = area.intersection(&self.bounding_box());
+        if a.size.width == 0 {
+            return Ok(());
+        }
+        let (x0, w) = (a.top_left.x as usize, a.size.width as usize);
+        for y in a.rows() {
+            if let Some(dst) = self.row_mut(y).and_then(|r| r.get_mut(x0..x0 + w)) {
+                dst.fill(color);
+            }
+        }
+        Ok(())
+    }
+
+    fn clear(&mut self, color: C) -> Result<(), Self::Error> {
+        self.fill(color);
+        Ok(())
+    }
+}

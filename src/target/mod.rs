@@ -1,0 +1,21 @@
+//! Where pixels go: a framebuffer and a depth buffer over caller-supplied slices, and the
+//! targets the filler writes spans into.
+//!
+//! - [`FrameBuffer`] is an embedded-graphics [`DrawTarget`](embedded_graphics::draw_target::DrawTarget)
+//!   over `&mut [C]` for any colour `C`, presented to a display with one `fill_contiguous`.
+//! - [`DepthBuffer`] holds `u16` or `u32` depth ([`DepthFormat`]), cleared to the far value.
+//! - [`ColorDepth`] pairs the two for z-buffered filling, over a whole frame or one horizontal
+//!   band of it; [`Direct`] fills any `DrawTarget` with no depth buffer at all, one
+//!   `fill_solid` per span.
+//! - [`Nearest`] and [`OrderedDither`] turn the shaded 24-bit colour into the target's colour;
+//!   the dither keeps shading visible on 1-bit and grey displays.
+
+mod depth;
+mod dither;
+mod framebuffer;
+mod surface;
+
+pub use depth::{DepthBuffer, DepthFormat, DepthTest};
+pub use dither::{Nearest, OrderedDither, Quantize};
+pub use framebuffer::{BufferError, FrameBuffer};
+pub use surface::{ColorDepth, DepthSpan, Direct, RasterTarget};

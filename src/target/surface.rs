@@ -1,0 +1,230 @@
+//! Targets the triangle filler writes spans into.
+
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::geometry::{Point, Size};
+use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
+use embedded_graphics::primitives::Rectangle;
+
+use super::depth::{DepthBuffer, DepthFormat, DepthTest};
+use super::dither::{Nearest, OrderedDither, Quantize};
+use super::framebuffer::{BufferError, FrameBuffer};
+use crate::pipeline::Stats;
+use crate::raster::{PixelRect, Span};
+use crate::shade::Paint;
+
+/// Depth along a span: the interpolator's value at the first pixel and its step per pixel.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct DepthSpan {
+    pub(crate) start: i64,
+    pub(crate) step: i64,
+}
+
+/// Something the triangle filler can write spans into: [`ColorDepth`] or [`Direct`].
+pub trait RasterTarget {
+    /// The error a write can return.
+    type Error;
+    /// True when spans need depth (the filler skips depth set-up otherwise).
+    const DEPTH: bool;
+    /// The frame pixels this target receives (frame coordinates).
+    fn clip(&self) -> PixelRect;
+    /// Writes one span.
+    #[doc(hidden)]
+    fn fill_span<P: Paint>(&mut self, span: Span, depth: &DepthSpan, paint: &P, stats: &mut Stats) -> Result<(), Self::Error>;
+}
+
+/// A colour buffer and a depth buffer of the same size, z-buffered filling: a fragment is
+/// written when it passes the [`DepthTest`] (strictly nearer, by default).
+///
+/// For a band, the buffers hold rows `first_row..first_row + height` of the frame; render
+/// every band of a frame and the result is identical to the whole frame at once.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+/// let (mut c, mut d) = ([Rgb565::new(0, 0, 0); 320 * 16], [0u16; 320 * 16]);
+/// let mut color = FrameBuffer::new(&mut c, 320, 16).unwrap();
+/// let mut depth = DepthBuffer::new(&mut d, 320, 16).unwrap();
+/// let band = ColorDepth::band(&mut color, &mut depth, 32).unwrap(); // frame rows 32..48
+/// ```
+#[derive(Debug)]
+pub struct ColorDepth<'t, 'a, C, D, Q = Nearest> {
+    color: &'t mut FrameBuffer<'a, C>,
+    depth: &'t mut DepthBuffer<'a, D>,
+    first_row: i32,
+    test: DepthTest,
+    quantize: Q,
+}
+
+impl<'t, 'a, C: PixelColor + From<Rgb888>, D: DepthFormat> ColorDepth<'t, 'a, C, D, Nearest> {
+    /// The whole frame: both buffers must have the same size.
+    pub fn new(color: &'t mut FrameBuffer<'a, C>, depth: &'t mut DepthBuffer<'a, D>) -> Result<Self, BufferError> {
+        Self::band(color, depth, 0)
+    }
+
+    /// One band of a frame: the buffers (of the same size) hold frame rows from `first_row`.
+    pub fn band(color: &'t mut FrameBuffer<'a, C>, depth: &'t mut DepthBuffer<'a, D>, first_row: u32) -> Result<Self, BufferError> {
+        if color.width() != depth.width() || color.height() != depth.height() {
+            return Err(BufferError::SizeMismatch);
+        }
+        let first_row = i32::try_from(first_row).map_err(|_| BufferError::TooLarge)?;
+        Ok(ColorDepth {
+            color,
+            depth,
+            first_row,
+            test: DepthTest::Less,
+            quantize: Nearest,
+        })
+    }
+}
+
+impl<'t, 'a, C, D, Q> ColorDepth<'t, 'a, C, D, Q> {
+    /// With another depth test.
+    #[must_use]
+    pub fn with_test(self, test: DepthTest) -> Self {
+        ColorDepth { test, ..self }
+    }
+
+    /// With ordered dithering (for 1-bit, grey and 16-bit displays).
+    #[must_use]
+    pub fn dithered(self) -> ColorDepth<'t, 'a, C, D, OrderedDither> {
+        ColorDepth {
+            color: self.color,
+            depth: self.depth,
+            first_row: self.first_row,
+            test: self.test,
+            quantize: OrderedDither,
+        }
+    }
+}
+
+impl<C, D, Q> RasterTarget for ColorDepth<'_, '_, C, D, Q>
+where
+    C: PixelColor + From<Rgb888>,
+    D: DepthFormat,
+    Q: Quantize<C>,
+{
+    type Error = core::convert::Infallible;
+    const DEPTH: bool = true;
+
+    fn clip(&self) -> PixelRect {
+        let w = self.color.width().min(i32::MAX as u32) as i32;
+        let h = self.color.height().min(i32::MAX as u32) as i32;
+        PixelRect::new(0, self.first_row, w, self.first_row.saturating_add(h))
+    }
+
+    #[inline]
+    fn fill_span<P: Paint>(&mut self, span: Span, depth: &DepthSpan, paint: &P, stats: &mut Stats) -> Result<(), Self::Error> {
+        let local = span.y.wrapping_sub(self.first_row);
+        let (Some(crow), Some(drow)) = (self.color.row_mut(local), self.depth.row_mut(local)) else {
+            return Ok(());
+        };
+        let (x0, x1) = (span.x0.max(0) as usize, span.x1.max(0) as usize);
+        let (Some(cs), Some(ds)) = (crow.get_mut(x0..x1), drow.get_mut(x0..x1)) else {
+            return Ok(());
+        };
+        stats.fragments = stats.fragments.saturating_add(cs.len() as u32);
+        let mut acc = depth.start;
+        let step = depth.step;
+        let le = self.test == DepthTest::LessOrEqual;
+        let mut written = 0u32;
+        match paint.solid() {
+            Some(rgb) if Q::UNIFORM => {
+                let c = self.quantize.quantize(rgb, 0, span.y);
+                for (cp, dp) in cs.iter_mut().zip(ds.iter_mut()) {
+                    let z = D::from_interpolated(acc);
+                    acc = acc.wrapping_add(step);
+                    if z < *dp || (le && z == *dp) {
+                        *dp = z;
+                        *cp = c;
+                        written += 1;
+                    }
+                }
+            }
+            _ => {
+                let mut cursor = paint.cursor(span.x0, span.y);
+                let mut x = span.x0;
+                for (cp, dp) in cs.iter_mut().zip(ds.iter_mut()) {
+                    let z = D::from_interpolated(acc);
+                    acc = acc.wrapping_add(step);
+                    let rgb = cursor.next().unwrap_or_default();
+                    if z < *dp || (le && z == *dp) {
+                        *dp = z;
+                        *cp = self.quantize.quantize(rgb, x, span.y);
+                        written += 1;
+                    }
+                    x = x.wrapping_add(1);
+                }
+            }
+        }
+        stats.written = stats.written.saturating_add(written);
+        Ok(())
+    }
+}
+
+/// Any embedded-graphics [`DrawTarget`] (a display driver, a framebuffer), filled with no depth
+/// buffer: back-face culling and draw order decide visibility, which is exact for one convex
+/// object. Solid spans are one `fill_solid` each, shaded spans one `fill_contiguous`.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Rgb565};
+/// use fixed3d::target::Direct;
+/// let mut display = MockDisplay::<Rgb565>::new();
+/// let target = Direct::new(&mut display);
+/// ```
+#[derive(Debug)]
+pub struct Direct<'t, T, Q = Nearest> {
+    target: &'t mut T,
+    quantize: Q,
+}
+
+impl<'t, T: DrawTarget> Direct<'t, T, Nearest> {
+    /// Fills `target` directly.
+    pub fn new(target: &'t mut T) -> Self {
+        Direct { target, quantize: Nearest }
+    }
+
+    /// With ordered dithering.
+    #[must_use]
+    pub fn dithered(self) -> Direct<'t, T, OrderedDither> {
+        Direct {
+            target: self.target,
+            quantize: OrderedDither,
+        }
+    }
+}
+
+impl<T, Q> RasterTarget for Direct<'_, T, Q>
+where
+    T: DrawTarget,
+    T::Color: From<Rgb888>,
+    Q: Quantize<T::Color>,
+{
+    type Error = T::Error;
+    const DEPTH: bool = false;
+
+    fn clip(&self) -> PixelRect {
+        let b = self.target.bounding_box();
+        let w = b.size.width.min(i32::MAX as u32) as i32;
+        let h = b.size.height.min(i32::MAX as u32) as i32;
+        PixelRect::new(b.top_left.x, b.top_left.y, b.top_left.x.saturating_add(w), b.top_left.y.saturating_add(h))
+    }
+
+    fn fill_span<P: Paint>(&mut self, span: Span, _: &DepthSpan, paint: &P, stats: &mut Stats) -> Result<(), T::Error> {
+        let n = span.x1.saturating_sub(span.x0).max(0) as u32;
+        let area = Rectangle::new(Point::new(span.x0, span.y), Size::new(n, 1));
+        stats.fragments = stats.fragments.saturating_add(n);
+        stats.written = stats.written.saturating_add(n);
+        match paint.solid() {
+            Some(rgb) if Q::UNIFORM => self.target.fill_solid(&area, self.quantize.quantize(rgb, 0, span.y)),
+            _ => {
+                let q = self.quantize;
+                let y = span.y;
+                let colors = paint
+                    .cursor(span.x0, span.y)
+                    .zip(span.x0..span.x1)
+                    .map(move |(rgb, x)| q.quantize(rgb, x, y));
+                self.target.fill_contiguous(&area, colors)
+            }
+        }
+    }
+}
