@@ -23,7 +23,9 @@ impl fmt::Display for CameraError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
             CameraError::EyeAtTarget => "the eye and the target are the same point",
-            CameraError::UpParallelToView => "the up vector is zero or parallel to the view direction",
+            CameraError::UpParallelToView => {
+                "the up vector is zero or parallel to the view direction"
+            }
         })
     }
 }
@@ -62,7 +64,8 @@ impl LookAt {
     pub fn view(&self) -> Result<Mat4, CameraError> {
         let e = self.eye.to_bits().map(i64::from);
         let t = self.target.to_bits().map(i64::from);
-        let z = normalize([e[0] - t[0], e[1] - t[1], e[2] - t[2]]).ok_or(CameraError::EyeAtTarget)?;
+        let z =
+            normalize([e[0] - t[0], e[1] - t[1], e[2] - t[2]]).ok_or(CameraError::EyeAtTarget)?;
         let up = self.up.to_bits().map(i64::from);
         let zw = z.map(i64::from);
         // up (Q16.16) × z (Q2.30): each product below 2⁶¹.
@@ -138,7 +141,8 @@ impl FlyCamera {
     pub fn turn(&mut self, yaw: Angle, pitch: Angle) {
         self.yaw += yaw;
         let limit = PITCH_LIMIT.to_bits() as i64;
-        let p = (self.pitch.to_bits() as i32 as i64 + pitch.to_bits() as i32 as i64).clamp(-limit, limit);
+        let p = (self.pitch.to_bits() as i32 as i64 + pitch.to_bits() as i32 as i64)
+            .clamp(-limit, limit);
         self.pitch = Angle::from_bits(p as i32 as u32);
     }
 

@@ -30,9 +30,15 @@ impl fmt::Display for ProjectionError {
         f.write_str(match self {
             ProjectionError::NearTooSmall => "near plane too close to the eye (minimum 1/1024)",
             ProjectionError::FarNotBeyondNear => "far plane not far enough beyond the near plane",
-            ProjectionError::FieldOfView => "field of view must be strictly between 0 and 180 degrees",
-            ProjectionError::Aspect => "aspect ratio or view height must be positive and representable",
-            ProjectionError::ViewportSize => "viewport dimensions must be between 1 and 2048 pixels",
+            ProjectionError::FieldOfView => {
+                "field of view must be strictly between 0 and 180 degrees"
+            }
+            ProjectionError::Aspect => {
+                "aspect ratio or view height must be positive and representable"
+            }
+            ProjectionError::ViewportSize => {
+                "viewport dimensions must be between 1 and 2048 pixels"
+            }
         })
     }
 }
@@ -72,7 +78,12 @@ impl Projection {
     /// [ 0         0   far/(n−f)     near·far/(n−f)   ]      z/w: near → 0, far → 1
     /// [ 0         0  −1             0                ]
     /// ```
-    pub fn perspective(fov_y: Angle, aspect: Scalar, near: Scalar, far: Scalar) -> Result<Self, ProjectionError> {
+    pub fn perspective(
+        fov_y: Angle,
+        aspect: Scalar,
+        near: Scalar,
+        far: Scalar,
+    ) -> Result<Self, ProjectionError> {
         if near < Self::MIN_NEAR {
             return Err(ProjectionError::NearTooSmall);
         }
@@ -128,9 +139,14 @@ impl Projection {
     /// let p = Projection::orthographic(s(4), s(2), s(1), s(5)).unwrap();
     /// // The box's right edge at mid depth maps to x = 1, z = 0.5.
     /// let c = p.matrix().transform_point(Vec3::from_int(4, 0, -3));
-    /// assert_eq!((c.x, c.z), (s(1), s(0.5)));
+    /// assert_eq!((c.x, c.z), (s(1), Scalar::from_num(0.5)));
     /// ```
-    pub fn orthographic(height: Scalar, aspect: Scalar, near: Scalar, far: Scalar) -> Result<Self, ProjectionError> {
+    pub fn orthographic(
+        height: Scalar,
+        aspect: Scalar,
+        near: Scalar,
+        far: Scalar,
+    ) -> Result<Self, ProjectionError> {
         if height <= Scalar::ZERO || aspect <= Scalar::ZERO {
             return Err(ProjectionError::Aspect);
         }
@@ -138,7 +154,7 @@ impl Projection {
             return Err(ProjectionError::FarNotBeyondNear);
         }
         let h = height.to_bits() as i64;
-        let w = h * aspect.to_bits() as i64 >> 16;
+        let w = (h * aspect.to_bits() as i64) >> 16;
         if w <= 0 {
             return Err(ProjectionError::Aspect);
         }

@@ -13,7 +13,14 @@ fn px(x: i32, y: i32) -> ScreenPoint {
 
 fn permutations(v: [ScreenPoint; 3]) -> Vec<[ScreenPoint; 3]> {
     let [a, b, c] = v;
-    vec![[a, b, c], [a, c, b], [b, a, c], [b, c, a], [c, a, b], [c, b, a]]
+    vec![
+        [a, b, c],
+        [a, c, b],
+        [b, a, c],
+        [b, c, a],
+        [c, a, b],
+        [c, b, a],
+    ]
 }
 
 const SCREEN: PixelRect = PixelRect::new(0, 0, 64, 64);
@@ -51,20 +58,6 @@ fn t02_rectangle_on_half_pixels() {
     }
 }
 
-/// A deterministic xorshift for test inputs.
-pub struct Rng(pub u64);
-impl Rng {
-    pub fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * ((self.next() >> 11) as f64 / (1u64 << 53) as f64)
-    }
-}
-
 #[test]
 fn t03_overdraw_fan_enclosing_the_screen() {
     let mut rng = Rng(0x1234_5678_9abc_def1);
@@ -91,13 +84,13 @@ fn t03_rect_variant_rim_on_inner_rectangle() {
     for _ in 0..30 {
         let centre = sp(rng.range(20.0, 40.0), rng.range(20.0, 40.0));
         // Rim on the perimeter of [10, 54] x [12, 50] at non-integer steps.
-        let (x0, y0, x1, y1) = (10.0, 12.0, 54.0, 50.0);
+        let (x0, y0, x1, y1) = (10.0f64, 12.0f64, 54.0f64, 50.0f64);
         // Walk each side at random non-integer steps; the corners are always rim vertices.
         let corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)];
         let mut rim = Vec::new();
         for k in 0..4 {
             let (p, q) = (corners[k], corners[(k + 1) % 4]);
-            let len: f64 = ((q.0 - p.0) as f64).abs() + ((q.1 - p.1) as f64).abs();
+            let len: f64 = (q.0 - p.0).abs() + (q.1 - p.1).abs();
             let mut t = 0.0;
             while t < len {
                 let f = t / len;
@@ -131,14 +124,21 @@ fn t04_rotated_quads_never_overlap() {
                 let h = 4.8 / 2.0;
                 let corner = |k: f64| {
                     let a = rot + k * std::f64::consts::FRAC_PI_2 + std::f64::consts::FRAC_PI_4;
-                    sp(c.0 + h * 2f64.sqrt() * a.cos(), c.1 + h * 2f64.sqrt() * a.sin())
+                    sp(
+                        c.0 + h * 2f64.sqrt() * a.cos(),
+                        c.1 + h * 2f64.sqrt() * a.sin(),
+                    )
                 };
                 let (a, b, cc, d) = (corner(0.0), corner(1.0), corner(2.0), corner(3.0));
                 hits.add_triangle([a, b, cc]);
                 hits.add_triangle([a, cc, d]);
             }
         }
-        assert_eq!(hits.n.iter().filter(|&&n| n > 1).count(), 0, "rotation step {step}");
+        assert_eq!(
+            hits.n.iter().filter(|&&n| n > 1).count(),
+            0,
+            "rotation step {step}"
+        );
     }
 }
 
@@ -149,7 +149,11 @@ fn t05_fan_around_a_sample_centre() {
     for k in 0..6 {
         let a0 = k as f64 * std::f64::consts::TAU / 6.0;
         let a1 = (k + 1) as f64 * std::f64::consts::TAU / 6.0;
-        hits.add_triangle([c, sp(10.5 + 7.0 * a0.cos(), 10.5 + 7.0 * a0.sin()), sp(10.5 + 7.0 * a1.cos(), 10.5 + 7.0 * a1.sin())]);
+        hits.add_triangle([
+            c,
+            sp(10.5 + 7.0 * a0.cos(), 10.5 + 7.0 * a0.sin()),
+            sp(10.5 + 7.0 * a1.cos(), 10.5 + 7.0 * a1.sin()),
+        ]);
     }
     assert_eq!(hits.n[10 * 32 + 10], 1);
     assert_eq!(hits.n.iter().filter(|&&n| n > 1).count(), 0);
@@ -190,7 +194,8 @@ fn t09_integer_translation_moves_coverage_exactly() {
     for (k, m) in [(1, 0), (0, 1), (-3, 5), (7, -2), (-11, -13)] {
         let moved = t.map(|p| ScreenPoint::new(p.x + 16 * k, p.y + 16 * m));
         let got = crate_triangle(moved, PixelRect::new(-100, -100, 100, 100));
-        let expect: std::collections::BTreeSet<_> = base.iter().map(|&(x, y)| (x + k, y + m)).collect();
+        let expect: std::collections::BTreeSet<_> =
+            base.iter().map(|&(x, y)| (x + k, y + m)).collect();
         assert_eq!(got, expect);
     }
 }
@@ -204,10 +209,16 @@ fn t11_t_junction_matches_model() {
         hits.add_triangle(big);
         for o in others {
             hits.add_triangle(o);
-            assert_eq!(crate_triangle(o, hits.clip()), model_triangle(o, hits.clip()));
+            assert_eq!(
+                crate_triangle(o, hits.clip()),
+                model_triangle(o, hits.clip())
+            );
         }
         let doubles = hits.n.iter().filter(|&&n| n > 1).count();
-        let holes = (0..32).flat_map(|y| (0..32).map(move |x| (x, y))).filter(|&(x, y)| hits.n[(y * 40 + x) as usize] == 0).count();
+        let holes = (0..32)
+            .flat_map(|y| (0..32).map(move |x| (x, y)))
+            .filter(|&(x, y)| hits.n[(y * 40 + x) as usize] == 0)
+            .count();
         if v == sp(16.0, 16.0) {
             assert_eq!((holes, doubles), (0, 0), "vertex on the edge: watertight");
         } else {
@@ -225,10 +236,26 @@ fn t12_snapping_ties_and_piglit_shifts() {
             let c = ScreenPoint::new(8 + sx, 8 + sy);
             let d = 3; // 3/16 px
             for t in [
-                [c, ScreenPoint::new(c.x + d, c.y), ScreenPoint::new(c.x, c.y + d)],
-                [c, ScreenPoint::new(c.x - d, c.y), ScreenPoint::new(c.x, c.y + d)],
-                [c, ScreenPoint::new(c.x + d, c.y), ScreenPoint::new(c.x, c.y - d)],
-                [c, ScreenPoint::new(c.x - d, c.y), ScreenPoint::new(c.x, c.y - d)],
+                [
+                    c,
+                    ScreenPoint::new(c.x + d, c.y),
+                    ScreenPoint::new(c.x, c.y + d),
+                ],
+                [
+                    c,
+                    ScreenPoint::new(c.x - d, c.y),
+                    ScreenPoint::new(c.x, c.y + d),
+                ],
+                [
+                    c,
+                    ScreenPoint::new(c.x + d, c.y),
+                    ScreenPoint::new(c.x, c.y - d),
+                ],
+                [
+                    c,
+                    ScreenPoint::new(c.x - d, c.y),
+                    ScreenPoint::new(c.x, c.y - d),
+                ],
             ] {
                 assert_eq!(crate_triangle(t, SCREEN), model_triangle(t, SCREEN));
             }

@@ -21,7 +21,8 @@ const SCREEN: PixelRect = PixelRect::new(0, 0, 16, 16);
 
 #[test]
 fn t26_centre_aligned_lines() {
-    let cases: [((i32, i32), (i32, i32), &[(i32, i32)]); 6] = [
+    type Case = ((i32, i32), (i32, i32), &'static [(i32, i32)]);
+    let cases: [Case; 6] = [
         ((0, 0), (5, 2), &[(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]),
         ((0, 0), (4, 2), &[(0, 0), (1, 1), (2, 1), (3, 2)]),
         ((4, 2), (0, 0), &[(1, 1), (2, 1), (3, 2), (4, 2)]),
@@ -55,7 +56,11 @@ fn t28_strips_and_loops() {
     dedup.dedup();
     assert_eq!(dedup.len(), all.len(), "no duplicates");
     let cols: Vec<i32> = dedup.iter().map(|p| p.0).collect();
-    assert_eq!(cols, (0..16).collect::<Vec<_>>(), "one pixel per column, no gap");
+    assert_eq!(
+        cols,
+        (0..16).collect::<Vec<_>>(),
+        "one pixel per column, no gap"
+    );
     // A closed loop: each vertex pixel exactly once.
     let loop_pts = [c(2, 2), c(12, 4), c(7, 13)];
     let mut hits = std::collections::HashMap::new();
@@ -68,7 +73,11 @@ fn t28_strips_and_loops() {
         assert_eq!(hits.get(&v), Some(&1), "vertex {v:?}");
     }
     // Mixed octants equal the model.
-    for (a, b) in [(c(1, 1), c(14, 3)), (c(14, 3), c(9, 15)), (c(9, 15), c(1, 1))] {
+    for (a, b) in [
+        (c(1, 1), c(14, 3)),
+        (c(14, 3), c(9, 15)),
+        (c(9, 15), c(1, 1)),
+    ] {
         assert_eq!(crate_line(a, b, SCREEN), model_line(a, b, SCREEN));
     }
 }
@@ -78,7 +87,10 @@ fn t29_clipping_changes_nothing() {
     let (a, b) = (sp(-1000.5, -333.7), sp(20.25, 7.1));
     let got = crate_line(a, b, SCREEN);
     let unclipped = model_line(a, b, PixelRect::new(-2000, -2000, 2000, 2000));
-    let on_screen: Vec<_> = unclipped.into_iter().filter(|&(x, y)| SCREEN.contains(x, y)).collect();
+    let on_screen: Vec<_> = unclipped
+        .into_iter()
+        .filter(|&(x, y)| SCREEN.contains(x, y))
+        .collect();
     assert_eq!(got, on_screen);
     assert_eq!(got.len(), 16);
 }
@@ -87,15 +99,42 @@ fn t29_clipping_changes_nothing() {
 fn t30_far_endpoints_and_edges_of_the_screen() {
     let far = COORD_LIMIT;
     // Bounded work: the iterator's length is the number of pixels on screen.
-    let it = line_pixels(ScreenPoint::new(-far, -far), ScreenPoint::new(far, far), SCREEN);
+    let it = line_pixels(
+        ScreenPoint::new(-far, -far),
+        ScreenPoint::new(far, far),
+        SCREEN,
+    );
     assert_eq!(it.len(), 16);
-    let got = crate_line(ScreenPoint::new(-far, -far), ScreenPoint::new(far, far), SCREEN);
-    assert_eq!(got, model_line(ScreenPoint::new(-far, -far), ScreenPoint::new(far, far), SCREEN));
+    let got = crate_line(
+        ScreenPoint::new(-far, -far),
+        ScreenPoint::new(far, far),
+        SCREEN,
+    );
+    assert_eq!(
+        got,
+        model_line(
+            ScreenPoint::new(-far, -far),
+            ScreenPoint::new(far, far),
+            SCREEN
+        )
+    );
     // Beyond the coordinate limit: rejected as a whole.
-    assert_eq!(line_pixels(ScreenPoint::new(-far - 1, 0), c(3, 3), SCREEN).count(), 0);
-    assert_eq!(line_pixels(ScreenPoint::new(i32::MIN, i32::MAX), c(3, 3), SCREEN).count(), 0);
+    assert_eq!(
+        line_pixels(ScreenPoint::new(-far - 1, 0), c(3, 3), SCREEN).count(),
+        0
+    );
+    assert_eq!(
+        line_pixels(ScreenPoint::new(i32::MIN, i32::MAX), c(3, 3), SCREEN).count(),
+        0
+    );
     // Along y = 0, y = H-1 and y = H.
-    let row = |y: i32| crate_line(ScreenPoint::new(-far, y * 16 + 8), ScreenPoint::new(far, y * 16 + 8), SCREEN);
+    let row = |y: i32| {
+        crate_line(
+            ScreenPoint::new(-far, y * 16 + 8),
+            ScreenPoint::new(far, y * 16 + 8),
+            SCREEN,
+        )
+    };
     assert_eq!(row(0), (0..16).map(|x| (x, 0)).collect::<Vec<_>>());
     assert_eq!(row(15), (0..16).map(|x| (x, 15)).collect::<Vec<_>>());
     assert!(row(16).is_empty());

@@ -23,7 +23,9 @@ fn render_flat(data: &TorusData) -> (Vec<Rgb565>, Stats) {
     let mut color = FrameBuffer::new(&mut c, 320, 240).unwrap();
     let mut depth = DepthBuffer::new(&mut d, 320, 240).unwrap();
     depth.clear();
-    let stats = prepared.draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap()).unwrap();
+    let stats = prepared
+        .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
+        .unwrap();
     (c, stats)
 }
 
@@ -101,7 +103,10 @@ fn torus_wireframe_variant() {
     // lights the same pixels both times, so about 4% fewer distinct pixels.
     assert_eq!(stats.drawn, 3 * (2304 - stats.culled));
     assert!((stats.written as i64 - (plots as i64 - stats.drawn as i64)).abs() <= 28);
-    assert!(lit < scene_lit && lit as f64 > 0.95 * scene_lit as f64, "lit {lit}");
+    assert!(
+        lit < scene_lit && lit as f64 > 0.95 * scene_lit as f64,
+        "lit {lit}"
+    );
     let rgb: Vec<Rgb888> = c.iter().map(|&p| p.into()).collect();
     golden::check("torus_wire", 320, 240, &rgb);
 }

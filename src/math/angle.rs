@@ -239,7 +239,10 @@ mod tests {
     fn float_constructors_wrap_and_reject_non_finite() {
         assert_eq!(Angle::from_degrees_f32(f32::INFINITY), Angle::ZERO);
         assert_eq!(Angle::from_radians_f32(f32::NEG_INFINITY), Angle::ZERO);
-        assert_eq!(Angle::from_degrees_f32(720.0 + 90.0), Angle::from_degrees(90));
+        assert_eq!(
+            Angle::from_degrees_f32(720.0 + 90.0),
+            Angle::from_degrees(90)
+        );
         assert_eq!(Angle::from_degrees_f32(-90.0), Angle::from_degrees(270));
         let big = Angle::from_degrees_f32(3.0e38);
         let _ = big.sin();

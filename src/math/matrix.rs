@@ -70,7 +70,12 @@ impl Mat4 {
     #[must_use]
     pub const fn translation(t: Vec3) -> Self {
         let [x, y, z] = t.to_bits();
-        Mat4::from_bits([[ONE, 0, 0, x], [0, ONE, 0, y], [0, 0, ONE, z], [0, 0, 0, ONE]])
+        Mat4::from_bits([
+            [ONE, 0, 0, x],
+            [0, ONE, 0, y],
+            [0, 0, ONE, z],
+            [0, 0, 0, ONE],
+        ])
     }
 
     /// Scaling along the axes by `s`.
@@ -139,8 +144,14 @@ impl Mat4 {
     /// normals from model to world space, for any scale, with no division.
     pub(crate) fn normal_matrix(&self) -> [[i32; 3]; 3] {
         let r = |i: usize| [self.m[i][0], self.m[i][1], self.m[i][2]];
-        let q = |w: [i64; 3]| w.map(|v| shr_round(v, 16).clamp(i32::MIN as i64, i32::MAX as i64) as i32);
-        [q(cross_wide(r(1), r(2))), q(cross_wide(r(2), r(0))), q(cross_wide(r(0), r(1)))]
+        let q = |w: [i64; 3]| {
+            w.map(|v| shr_round(v, 16).clamp(i32::MIN as i64, i32::MAX as i64) as i32)
+        };
+        [
+            q(cross_wide(r(1), r(2))),
+            q(cross_wide(r(2), r(0))),
+            q(cross_wide(r(0), r(1))),
+        ]
     }
 
     /// The transpose.
@@ -171,13 +182,10 @@ impl Mul for Mat4 {
         let mut out = [[0i32; 4]; 4];
         for (orow, arow) in out.iter_mut().zip(self.m.iter()) {
             for (j, cell) in orow.iter_mut().enumerate() {
-                let s = arow
-                    .iter()
-                    .zip(o.m.iter())
-                    .fold(0i64, |acc, (a, brow)| {
-                        let b = brow.get(j).copied().unwrap_or(0);
-                        acc.saturating_add(*a as i64 * b as i64)
-                    });
+                let s = arow.iter().zip(o.m.iter()).fold(0i64, |acc, (a, brow)| {
+                    let b = brow.get(j).copied().unwrap_or(0);
+                    acc.saturating_add(*a as i64 * b as i64)
+                });
                 *cell = shr_round(s, 16).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
             }
         }

@@ -29,7 +29,10 @@ mod tests {
     fn isqrt_is_exact_floor() {
         for n in (0u64..20_000).chain([u64::MAX, u64::MAX - 1, 1 << 62, (1 << 62) - 1]) {
             let r = isqrt_u64(n) as u128;
-            assert!(r * r <= n as u128 && (r + 1) * (r + 1) > n as u128, "n = {n}");
+            assert!(
+                r * r <= n as u128 && (r + 1) * (r + 1) > n as u128,
+                "n = {n}"
+            );
         }
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
         for _ in 0..10_000 {

@@ -45,7 +45,11 @@ impl Vec3 {
     /// From raw Q16.16 values.
     #[must_use]
     pub const fn from_bits(x: i32, y: i32, z: i32) -> Self {
-        Vec3::new(Scalar::from_bits(x), Scalar::from_bits(y), Scalar::from_bits(z))
+        Vec3::new(
+            Scalar::from_bits(x),
+            Scalar::from_bits(y),
+            Scalar::from_bits(z),
+        )
     }
 
     /// From whole numbers in [−32768, 32767].
@@ -183,7 +187,11 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
 
 /// Dot product of two Q2.30 unit vectors, Q2.30.
 pub(crate) fn dot_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
-    let s: i64 = a.iter().zip(b.iter()).map(|(x, y)| *x as i64 * *y as i64).sum();
+    let s: i64 = a
+        .iter()
+        .zip(b.iter())
+        .map(|(x, y)| *x as i64 * *y as i64)
+        .sum();
     shr_round(s, 30).clamp(-(2 * UNIT_ONE as i64), 2 * UNIT_ONE as i64 - 1) as i32
 }
 
@@ -212,7 +220,11 @@ impl Sub for Vec3 {
 impl Neg for Vec3 {
     type Output = Vec3;
     fn neg(self) -> Vec3 {
-        Vec3::new(self.x.saturating_neg(), self.y.saturating_neg(), self.z.saturating_neg())
+        Vec3::new(
+            self.x.saturating_neg(),
+            self.y.saturating_neg(),
+            self.z.saturating_neg(),
+        )
     }
 }
 

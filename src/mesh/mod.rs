@@ -14,7 +14,9 @@ use embedded_graphics::pixelcolor::Rgb888;
 
 use crate::math::{Angle, Mat4, Vec3};
 
-pub use shapes::{torus, torus_counts, uv_sphere, uv_sphere_counts, ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON};
+pub use shapes::{
+    torus, torus_counts, uv_sphere, uv_sphere_counts, ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON,
+};
 
 /// A triangle: three indices into a mesh's positions, counter-clockwise seen from its front.
 pub type Triangle = [u16; 3];
@@ -44,7 +46,10 @@ impl fmt::Display for MeshError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             MeshError::TriangleIndexOutOfRange { triangle } => {
-                write!(f, "triangle {triangle} refers to a vertex that does not exist")
+                write!(
+                    f,
+                    "triangle {triangle} refers to a vertex that does not exist"
+                )
             }
             MeshError::EdgeIndexOutOfRange { edge } => {
                 write!(f, "edge {edge} refers to a vertex that does not exist")
@@ -205,25 +210,37 @@ impl Transform {
     /// With `translation`.
     #[must_use]
     pub const fn translated(self, translation: Vec3) -> Self {
-        Transform { translation, ..self }
+        Transform {
+            translation,
+            ..self
+        }
     }
 
     /// With a rotation about X.
     #[must_use]
     pub const fn rotated_x(self, a: Angle) -> Self {
-        Transform { rotation_x: a, ..self }
+        Transform {
+            rotation_x: a,
+            ..self
+        }
     }
 
     /// With a rotation about Y.
     #[must_use]
     pub const fn rotated_y(self, a: Angle) -> Self {
-        Transform { rotation_y: a, ..self }
+        Transform {
+            rotation_y: a,
+            ..self
+        }
     }
 
     /// With a rotation about Z.
     #[must_use]
     pub const fn rotated_z(self, a: Angle) -> Self {
-        Transform { rotation_z: a, ..self }
+        Transform {
+            rotation_z: a,
+            ..self
+        }
     }
 
     /// With `scale`.

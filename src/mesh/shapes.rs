@@ -19,15 +19,42 @@ const fn checked(m: Result<Mesh<'static>, super::MeshError>) -> Mesh<'static> {
 }
 
 static CUBE_POSITIONS: [Vec3; 8] = [
-    v(-1, -1, -1), v(1, -1, -1), v(1, 1, -1), v(-1, 1, -1),
-    v(-1, -1, 1), v(1, -1, 1), v(1, 1, 1), v(-1, 1, 1),
+    v(-1, -1, -1),
+    v(1, -1, -1),
+    v(1, 1, -1),
+    v(-1, 1, -1),
+    v(-1, -1, 1),
+    v(1, -1, 1),
+    v(1, 1, 1),
+    v(-1, 1, 1),
 ];
 static CUBE_TRIANGLES: [Triangle; 12] = [
-    [4, 5, 6], [4, 6, 7], [0, 3, 2], [0, 2, 1], [1, 2, 6], [1, 6, 5],
-    [0, 4, 7], [0, 7, 3], [3, 7, 6], [3, 6, 2], [0, 1, 5], [0, 5, 4],
+    [4, 5, 6],
+    [4, 6, 7],
+    [0, 3, 2],
+    [0, 2, 1],
+    [1, 2, 6],
+    [1, 6, 5],
+    [0, 4, 7],
+    [0, 7, 3],
+    [3, 7, 6],
+    [3, 6, 2],
+    [0, 1, 5],
+    [0, 5, 4],
 ];
 static CUBE_EDGES: [Edge; 12] = [
-    [0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4], [0, 4], [1, 5], [2, 6], [3, 7],
+    [0, 1],
+    [1, 2],
+    [2, 3],
+    [3, 0],
+    [4, 5],
+    [5, 6],
+    [6, 7],
+    [7, 4],
+    [0, 4],
+    [1, 5],
+    [2, 6],
+    [3, 7],
 ];
 
 /// A cube from (−1, −1, −1) to (1, 1, 1): 8 vertices, 12 triangles, 12 edges.
@@ -41,17 +68,43 @@ static TETRA_TRIANGLES: [Triangle; 4] = [[1, 3, 2], [0, 2, 3], [0, 3, 1], [0, 1,
 static TETRA_EDGES: [Edge; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
 
 /// A regular tetrahedron inscribed in the cube [−1, 1]³: 4 vertices, 4 triangles, 6 edges.
-pub static TETRAHEDRON: Mesh<'static> = checked(match Mesh::new(&TETRA_POSITIONS, &TETRA_TRIANGLES) {
-    Ok(m) => m.with_edges(&TETRA_EDGES),
-    Err(e) => Err(e),
-});
+pub static TETRAHEDRON: Mesh<'static> =
+    checked(match Mesh::new(&TETRA_POSITIONS, &TETRA_TRIANGLES) {
+        Ok(m) => m.with_edges(&TETRA_EDGES),
+        Err(e) => Err(e),
+    });
 
-static OCTA_POSITIONS: [Vec3; 6] = [v(1, 0, 0), v(-1, 0, 0), v(0, 1, 0), v(0, -1, 0), v(0, 0, 1), v(0, 0, -1)];
+static OCTA_POSITIONS: [Vec3; 6] = [
+    v(1, 0, 0),
+    v(-1, 0, 0),
+    v(0, 1, 0),
+    v(0, -1, 0),
+    v(0, 0, 1),
+    v(0, 0, -1),
+];
 static OCTA_TRIANGLES: [Triangle; 8] = [
-    [0, 2, 4], [1, 4, 2], [0, 4, 3], [0, 5, 2], [1, 3, 4], [1, 2, 5], [0, 3, 5], [1, 5, 3],
+    [0, 2, 4],
+    [1, 4, 2],
+    [0, 4, 3],
+    [0, 5, 2],
+    [1, 3, 4],
+    [1, 2, 5],
+    [0, 3, 5],
+    [1, 5, 3],
 ];
 static OCTA_EDGES: [Edge; 12] = [
-    [0, 2], [0, 3], [0, 4], [0, 5], [1, 2], [1, 3], [1, 4], [1, 5], [2, 4], [2, 5], [3, 4], [3, 5],
+    [0, 2],
+    [0, 3],
+    [0, 4],
+    [0, 5],
+    [1, 2],
+    [1, 3],
+    [1, 4],
+    [1, 5],
+    [2, 4],
+    [2, 5],
+    [3, 4],
+    [3, 5],
 ];
 
 /// A regular octahedron with vertices at ±1 on each axis: 6 vertices, 8 triangles, 12 edges.
@@ -82,7 +135,10 @@ impl fmt::Display for ShapeError {
         match self {
             ShapeError::Resolution => f.write_str("a shape needs at least 3 segments and 2 rings"),
             ShapeError::TooManyVertices => f.write_str("a mesh holds at most 65536 vertices"),
-            ShapeError::StorageTooSmall { vertices, triangles } => write!(
+            ShapeError::StorageTooSmall {
+                vertices,
+                triangles,
+            } => write!(
                 f,
                 "storage too small: {vertices} vertices and {triangles} triangles needed"
             ),
@@ -147,7 +203,10 @@ pub fn torus<'a>(
     if nv > 65_536 {
         return Err(ShapeError::TooManyVertices);
     }
-    let too_small = ShapeError::StorageTooSmall { vertices: nv, triangles: nt };
+    let too_small = ShapeError::StorageTooSmall {
+        vertices: nv,
+        triangles: nt,
+    };
     let (Some(pos), Some(nor), Some(tri)) = (
         positions.get_mut(..nv),
         normals.get_mut(..nv),
@@ -163,7 +222,11 @@ pub fn torus<'a>(
         let w = Angle::turn_fraction(j, tube as u32);
         let (cu, su, cw, sw) = (u.cos_bits(), u.sin_bits(), w.cos_bits(), w.sin_bits());
         let reach = big + mul_unit(small, cw);
-        *p = Vec3::from_bits(sat(mul_unit(reach, cu)), sat(mul_unit(small, sw)), sat(mul_unit(reach, su)));
+        *p = Vec3::from_bits(
+            sat(mul_unit(reach, cu)),
+            sat(mul_unit(small, sw)),
+            sat(mul_unit(reach, su)),
+        );
         let q = |a: i32, b: i32| sat(shr_round(shr_round(a as i64 * b as i64, 30), 14));
         *n = Vec3::from_bits(q(cw, cu), sat(shr_round(sw as i64, 14)), q(cw, su));
     }
@@ -206,7 +269,10 @@ pub fn uv_sphere<'a>(
     if nv > 65_536 {
         return Err(ShapeError::TooManyVertices);
     }
-    let too_small = ShapeError::StorageTooSmall { vertices: nv, triangles: nt };
+    let too_small = ShapeError::StorageTooSmall {
+        vertices: nv,
+        triangles: nt,
+    };
     let (Some(pos), Some(nor), Some(tri)) = (
         positions.get_mut(..nv),
         normals.get_mut(..nv),
@@ -235,7 +301,11 @@ pub fn uv_sphere<'a>(
                 shr_round(rho * phi.cos_bits() as i64, 30) as i32,
             ]
         };
-        *p = Vec3::from_bits(sat(mul_unit(r, unit[0])), sat(mul_unit(r, unit[1])), sat(mul_unit(r, unit[2])));
+        *p = Vec3::from_bits(
+            sat(mul_unit(r, unit[0])),
+            sat(mul_unit(r, unit[1])),
+            sat(mul_unit(r, unit[2])),
+        );
         let q = unit.map(|c| sat(shr_round(c as i64, 14)));
         *n = Vec3::from_bits(q[0], q[1], q[2]);
     }
@@ -272,10 +342,18 @@ mod tests {
 
     fn outward(mesh: &Mesh<'_>) {
         for t in mesh.triangles() {
-            let p = t.map(|i| mesh.positions()[i as usize].to_bits().map(|c| c as f64 / 65536.0));
+            let p = t.map(|i| {
+                mesh.positions()[i as usize]
+                    .to_bits()
+                    .map(|c| c as f64 / 65536.0)
+            });
             let e1 = [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]];
             let e2 = [p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]];
-            let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+            let n = [
+                e1[1] * e2[2] - e1[2] * e2[1],
+                e1[2] * e2[0] - e1[0] * e2[2],
+                e1[0] * e2[1] - e1[1] * e2[0],
+            ];
             let c = [0, 1, 2].map(|k| (p[0][k] + p[1][k] + p[2][k]) / 3.0);
             let d = n[0] * c[0] + n[1] * c[1] + n[2] * c[2];
             assert!(d > 0.0, "triangle {t:?} faces inwards");
@@ -304,7 +382,13 @@ mod tests {
     fn torus_storage_and_resolution_errors() {
         let (mut p, mut n, mut t) = ([Vec3::ZERO; 10], [Vec3::ZERO; 10], [[0u16; 3]; 10]);
         let err = torus(Scalar::ONE, Scalar::ONE, 4, 4, &mut p, &mut n, &mut t).unwrap_err();
-        assert_eq!(err, ShapeError::StorageTooSmall { vertices: 16, triangles: 32 });
+        assert_eq!(
+            err,
+            ShapeError::StorageTooSmall {
+                vertices: 16,
+                triangles: 32
+            }
+        );
         let err = torus(Scalar::ONE, Scalar::ONE, 2, 4, &mut p, &mut n, &mut t).unwrap_err();
         assert_eq!(err, ShapeError::Resolution);
     }

@@ -68,7 +68,9 @@ pub(crate) fn clip_polygon(tri: [ClipVertex; 3], planes: u8, m: &ScreenMap) -> P
         let mut out = Polygon::new();
         let n = poly.len();
         for (i, cur) in poly.iter().enumerate() {
-            let Some(next) = poly.get((i + 1) % n) else { break };
+            let Some(next) = poly.get((i + 1) % n) else {
+                break;
+            };
             let (ci, ni) = (is_inside(k, cur, m), is_inside(k, next, m));
             if ci {
                 let _ = out.push(*cur);
@@ -86,7 +88,12 @@ pub(crate) fn clip_polygon(tri: [ClipVertex; 3], planes: u8, m: &ScreenMap) -> P
 }
 
 /// Clips a segment; `None` when nothing is left.
-pub(crate) fn clip_segment(a: ClipVertex, b: ClipVertex, planes: u8, m: &ScreenMap) -> Option<(ClipVertex, ClipVertex)> {
+pub(crate) fn clip_segment(
+    a: ClipVertex,
+    b: ClipVertex,
+    planes: u8,
+    m: &ScreenMap,
+) -> Option<(ClipVertex, ClipVertex)> {
     let (mut a, mut b) = (a, b);
     for k in 0..PLANES {
         if planes & (1 << k) == 0 {

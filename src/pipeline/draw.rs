@@ -38,8 +38,18 @@ struct ObjectSetup<'o> {
 
 impl ObjectSetup<'_> {
     fn clip_vertex(&self, index: u16) -> ClipVertex {
-        let p = self.object.mesh.positions().get(index as usize).copied().unwrap_or_default();
-        let rgb = self.vertices.get(index as usize).map(|v| v.rgb).unwrap_or_default();
+        let p = self
+            .object
+            .mesh
+            .positions()
+            .get(index as usize)
+            .copied()
+            .unwrap_or_default();
+        let rgb = self
+            .vertices
+            .get(index as usize)
+            .map(|v| v.rgb)
+            .unwrap_or_default();
         ClipVertex {
             c: self.clip_from_model.transform_wide(p.to_bits()),
             rgb: rgb.map(|c| (c as i32) << 8),
@@ -47,7 +57,13 @@ impl ObjectSetup<'_> {
     }
 
     fn model(&self, index: u16) -> [i32; 3] {
-        self.object.mesh.positions().get(index as usize).copied().unwrap_or_default().to_bits()
+        self.object
+            .mesh
+            .positions()
+            .get(index as usize)
+            .copied()
+            .unwrap_or_default()
+            .to_bits()
     }
 }
 
@@ -95,7 +111,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let mut offset = 0usize;
         self.scene.objects.iter().map(move |object| {
             let n = object.mesh.positions().len();
-            let vertices = self.cache.get(offset..offset.saturating_add(n)).unwrap_or(&[]);
+            let vertices = self
+                .cache
+                .get(offset..offset.saturating_add(n))
+                .unwrap_or(&[]);
             offset = offset.saturating_add(n);
             ObjectSetup {
                 object,
@@ -173,9 +192,13 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     bump(&mut stats.degenerate);
                     continue;
                 };
-                let Some((first, rest)) = projected.split_first() else { continue };
+                let Some((first, rest)) = projected.split_first() else {
+                    continue;
+                };
                 for pair in rest.windows(2) {
-                    let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) else { continue };
+                    let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) else {
+                        continue;
+                    };
                     let p = [first.0, v1.0, v2.0];
                     let area = area2(&p);
                     if area == 0 {
@@ -215,14 +238,21 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let clip = PixelRect::new(
             b.top_left.x,
             b.top_left.y,
-            b.top_left.x.saturating_add(b.size.width.min(i32::MAX as u32) as i32),
-            b.top_left.y.saturating_add(b.size.height.min(i32::MAX as u32) as i32),
+            b.top_left
+                .x
+                .saturating_add(b.size.width.min(i32::MAX as u32) as i32),
+            b.top_left
+                .y
+                .saturating_add(b.size.height.min(i32::MAX as u32) as i32),
         );
         let map = ScreenMap::new(&self.frame.viewport);
         for setup in self.objects() {
             let color = D::Color::from(setup.object.color);
             let mut segment = |i: u16, j: u16, stats: &mut Stats| -> Result<(), D::Error> {
-                let (Some(a), Some(b)) = (setup.vertices.get(i as usize), setup.vertices.get(j as usize)) else {
+                let (Some(a), Some(b)) = (
+                    setup.vertices.get(i as usize),
+                    setup.vertices.get(j as usize),
+                ) else {
                     bump(&mut stats.invalid);
                     return Ok(());
                 };
@@ -234,10 +264,16 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     (a.point(), b.point())
                 } else {
                     bump(&mut stats.clipped);
-                    let Some((ca, cb)) = clip_segment(setup.clip_vertex(i), setup.clip_vertex(j), a.outcode | b.outcode, &map) else {
+                    let Some((ca, cb)) = clip_segment(
+                        setup.clip_vertex(i),
+                        setup.clip_vertex(j),
+                        a.outcode | b.outcode,
+                        &map,
+                    ) else {
                         return Ok(());
                     };
-                    let (Some((pa, _)), Some((pb, _))) = (project(ca.c, &map), project(cb.c, &map)) else {
+                    let (Some((pa, _)), Some((pb, _))) = (project(ca.c, &map), project(cb.c, &map))
+                    else {
                         return Ok(());
                     };
                     (pa, pb)
@@ -270,7 +306,11 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 let area = if a.outcode | b.outcode | c.outcode == 0 {
                     area2(&[a.point(), b.point(), c.point()])
                 } else {
-                    let poly = clip_polygon(tri.map(|i| setup.clip_vertex(i)), a.outcode | b.outcode | c.outcode, &map);
+                    let poly = clip_polygon(
+                        tri.map(|i| setup.clip_vertex(i)),
+                        a.outcode | b.outcode | c.outcode,
+                        &map,
+                    );
                     polygon_area(&poly, &map)
                 };
                 if area == 0 {
@@ -307,8 +347,12 @@ fn project_polygon(poly: &Polygon, map: &ScreenMap) -> Option<Projected> {
 
 /// Doubled signed screen area of a clipped polygon (0 if it is empty).
 fn polygon_area(poly: &Polygon, map: &ScreenMap) -> i64 {
-    let Some(p) = project_polygon(poly, map) else { return 0 };
-    let Some((first, rest)) = p.split_first() else { return 0 };
+    let Some(p) = project_polygon(poly, map) else {
+        return 0;
+    };
+    let Some((first, rest)) = p.split_first() else {
+        return 0;
+    };
     rest.windows(2)
         .filter_map(|w| Some(area2(&[first.0, w.first()?.0, w.get(1)?.0])))
         .fold(0i64, |s, a| s.saturating_add(a))

@@ -87,7 +87,10 @@ impl fmt::Display for PrepareError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             PrepareError::CacheTooSmall { needed, capacity } => {
-                write!(f, "vertex cache holds {capacity} entries, the scene has {needed} vertices")
+                write!(
+                    f,
+                    "vertex cache holds {capacity} entries, the scene has {needed} vertices"
+                )
             }
         }
     }
@@ -164,15 +167,27 @@ impl Frame {
         for object in scene.objects {
             let clip_from_model = self.clip_from_world * object.model;
             let normal_matrix = object.model.normal_matrix();
-            let normals = if S::PER_VERTEX { object.mesh.normals() } else { None };
+            let normals = if S::PER_VERTEX {
+                object.mesh.normals()
+            } else {
+                None
+            };
             for (i, p) in object.mesh.positions().iter().enumerate() {
                 let Some(slot) = slots.next() else { break };
                 let c = clip_from_model.transform_wide(p.to_bits());
                 let code = outcode(c, &map);
-                let (pt, z) = if code == 0 { project(c, &map).unwrap_or_default() } else { Default::default() };
+                let (pt, z) = if code == 0 {
+                    project(c, &map).unwrap_or_default()
+                } else {
+                    Default::default()
+                };
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
-                        let lit = crate::shade::lambert(object.color, vertex_normal(n.to_bits(), &normal_matrix), &scene.lighting);
+                        let lit = crate::shade::lambert(
+                            object.color,
+                            vertex_normal(n.to_bits(), &normal_matrix),
+                            &scene.lighting,
+                        );
                         use embedded_graphics::pixelcolor::RgbColor;
                         [lit.r(), lit.g(), lit.b()]
                     }

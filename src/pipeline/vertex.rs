@@ -98,8 +98,8 @@ pub(crate) fn reduce_pair(a: [i64; 4], b: [i64; 4]) -> ([i64; 4], [i64; 4], u32)
 pub(crate) fn distance(k: u32, c: &[i64; 4], m: &ScreenMap) -> i64 {
     let [x, y, z, w] = *c;
     match k {
-        0 => z,                      // near: z > 0
-        1 => w - z,                  // far: z <= w
+        0 => z,                        // near: z > 0
+        1 => w - z,                    // far: z <= w
         2 => GUARD * w + x * m.half_w, // left guard
         3 => GUARD * w - x * m.half_w, // right guard
         4 => GUARD * w - y * m.half_h, // top guard (clip +y is up)

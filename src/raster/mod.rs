@@ -95,8 +95,16 @@ impl PixelRect {
     /// `[0, width) × [0, height)`.
     #[must_use]
     pub const fn of_size(width: u32, height: u32) -> Self {
-        let w = if width > i32::MAX as u32 { i32::MAX } else { width as i32 };
-        let h = if height > i32::MAX as u32 { i32::MAX } else { height as i32 };
+        let w = if width > i32::MAX as u32 {
+            i32::MAX
+        } else {
+            width as i32
+        };
+        let h = if height > i32::MAX as u32 {
+            i32::MAX
+        } else {
+            height as i32
+        };
         PixelRect::new(0, 0, w, h)
     }
 

@@ -7,7 +7,11 @@ use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
 /// Per channel: `floor(base · clamp(ambient + Σ light · max(0, n·l), 0, 1))`.
-pub(crate) fn lambert<const N: usize>(base: Rgb888, n: Option<[i32; 3]>, lighting: &Lighting<N>) -> Rgb888 {
+pub(crate) fn lambert<const N: usize>(
+    base: Rgb888,
+    n: Option<[i32; 3]>,
+    lighting: &Lighting<N>,
+) -> Rgb888 {
     let mut sum = lighting.ambient().channels();
     if let Some(n) = n {
         for light in lighting.lights() {
@@ -20,7 +24,11 @@ pub(crate) fn lambert<const N: usize>(base: Rgb888, n: Option<[i32; 3]>, lightin
     }
     let one = 1i64 << 16;
     let ch = |b: u8, s: i64| ((b as i64 * s.clamp(0, one)) >> 16) as u8;
-    Rgb888::new(ch(base.r(), sum[0]), ch(base.g(), sum[1]), ch(base.b(), sum[2]))
+    Rgb888::new(
+        ch(base.r(), sum[0]),
+        ch(base.g(), sum[1]),
+        ch(base.b(), sum[2]),
+    )
 }
 
 /// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough

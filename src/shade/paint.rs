@@ -47,7 +47,8 @@ pub struct SmoothPaint {
 impl SmoothPaint {
     /// From vertex colours (channels `0..=255 << RGB_FRAC`) at snapped screen positions.
     pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64) -> Self {
-        let scaled = |k: usize| rgb.map(|c| (c.get(k).copied().unwrap_or(0) as i64) << (FRAC - RGB_FRAC));
+        let scaled =
+            |k: usize| rgb.map(|c| (c.get(k).copied().unwrap_or(0) as i64) << (FRAC - RGB_FRAC));
         let planes = [0, 1, 2].map(|k| Plane::new(p, scaled(k), area2));
         let lo = [0, 1, 2].map(|k| scaled(k).into_iter().min().unwrap_or(0));
         let hi = [0, 1, 2].map(|k| scaled(k).into_iter().max().unwrap_or(0));

@@ -108,7 +108,9 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
         if x >= self.width || y >= self.height {
             return None;
         }
-        self.values.get(y as usize * self.width as usize + x as usize).copied()
+        self.values
+            .get(y as usize * self.width as usize + x as usize)
+            .copied()
     }
 
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [D]> {

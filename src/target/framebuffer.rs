@@ -44,7 +44,9 @@ pub(crate) fn area(width: u32, height: u32, len: usize) -> Result<usize, BufferE
     if width > i32::MAX as u32 || height > i32::MAX as u32 {
         return Err(BufferError::TooLarge);
     }
-    let needed = (width as usize).checked_mul(height as usize).ok_or(BufferError::TooLarge)?;
+    let needed = (width as usize)
+        .checked_mul(height as usize)
+        .ok_or(BufferError::TooLarge)?;
     if len < needed {
         return Err(BufferError::TooShort { needed, len });
     }
@@ -136,7 +138,11 @@ impl<'a, C: PixelColor> FrameBuffer<'a, C> {
 
     /// Sends the whole image to `display` with its top-left corner at `top_left` (for a band,
     /// the band's first row).
-    pub fn present_at<D: DrawTarget<Color = C>>(&self, display: &mut D, top_left: Point) -> Result<(), D::Error> {
+    pub fn present_at<D: DrawTarget<Color = C>>(
+        &self,
+        display: &mut D,
+        top_left: Point,
+    ) -> Result<(), D::Error> {
         let area = Rectangle::new(top_left, self.size());
         display.fill_contiguous(&area, self.pixels.iter().copied())
     }

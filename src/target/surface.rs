@@ -29,7 +29,13 @@ pub trait RasterTarget {
     fn clip(&self) -> PixelRect;
     /// Writes one span.
     #[doc(hidden)]
-    fn fill_span<P: Paint>(&mut self, span: Span, depth: &DepthSpan, paint: &P, stats: &mut Stats) -> Result<(), Self::Error>;
+    fn fill_span<P: Paint>(
+        &mut self,
+        span: Span,
+        depth: &DepthSpan,
+        paint: &P,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error>;
 }
 
 /// A colour buffer and a depth buffer of the same size, z-buffered filling: a fragment is
@@ -57,12 +63,19 @@ pub struct ColorDepth<'t, 'a, C, D, Q = Nearest> {
 
 impl<'t, 'a, C: PixelColor + From<Rgb888>, D: DepthFormat> ColorDepth<'t, 'a, C, D, Nearest> {
     /// The whole frame: both buffers must have the same size.
-    pub fn new(color: &'t mut FrameBuffer<'a, C>, depth: &'t mut DepthBuffer<'a, D>) -> Result<Self, BufferError> {
+    pub fn new(
+        color: &'t mut FrameBuffer<'a, C>,
+        depth: &'t mut DepthBuffer<'a, D>,
+    ) -> Result<Self, BufferError> {
         Self::band(color, depth, 0)
     }
 
     /// One band of a frame: the buffers (of the same size) hold frame rows from `first_row`.
-    pub fn band(color: &'t mut FrameBuffer<'a, C>, depth: &'t mut DepthBuffer<'a, D>, first_row: u32) -> Result<Self, BufferError> {
+    pub fn band(
+        color: &'t mut FrameBuffer<'a, C>,
+        depth: &'t mut DepthBuffer<'a, D>,
+        first_row: u32,
+    ) -> Result<Self, BufferError> {
         if color.width() != depth.width() || color.height() != depth.height() {
             return Err(BufferError::SizeMismatch);
         }
@@ -113,9 +126,16 @@ where
     }
 
     #[inline]
-    fn fill_span<P: Paint>(&mut self, span: Span, depth: &DepthSpan, paint: &P, stats: &mut Stats) -> Result<(), Self::Error> {
+    fn fill_span<P: Paint>(
+        &mut self,
+        span: Span,
+        depth: &DepthSpan,
+        paint: &P,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error> {
         let local = span.y.wrapping_sub(self.first_row);
-        let (Some(crow), Some(drow)) = (self.color.row_mut(local), self.depth.row_mut(local)) else {
+        let (Some(crow), Some(drow)) = (self.color.row_mut(local), self.depth.row_mut(local))
+        else {
             return Ok(());
         };
         let (x0, x1) = (span.x0.max(0) as usize, span.x1.max(0) as usize);
@@ -180,7 +200,10 @@ pub struct Direct<'t, T, Q = Nearest> {
 impl<'t, T: DrawTarget> Direct<'t, T, Nearest> {
     /// Fills `target` directly.
     pub fn new(target: &'t mut T) -> Self {
-        Direct { target, quantize: Nearest }
+        Direct {
+            target,
+            quantize: Nearest,
+        }
     }
 
     /// With ordered dithering.
@@ -206,16 +229,29 @@ where
         let b = self.target.bounding_box();
         let w = b.size.width.min(i32::MAX as u32) as i32;
         let h = b.size.height.min(i32::MAX as u32) as i32;
-        PixelRect::new(b.top_left.x, b.top_left.y, b.top_left.x.saturating_add(w), b.top_left.y.saturating_add(h))
+        PixelRect::new(
+            b.top_left.x,
+            b.top_left.y,
+            b.top_left.x.saturating_add(w),
+            b.top_left.y.saturating_add(h),
+        )
     }
 
-    fn fill_span<P: Paint>(&mut self, span: Span, _: &DepthSpan, paint: &P, stats: &mut Stats) -> Result<(), T::Error> {
+    fn fill_span<P: Paint>(
+        &mut self,
+        span: Span,
+        _: &DepthSpan,
+        paint: &P,
+        stats: &mut Stats,
+    ) -> Result<(), T::Error> {
         let n = span.x1.saturating_sub(span.x0).max(0) as u32;
         let area = Rectangle::new(Point::new(span.x0, span.y), Size::new(n, 1));
         stats.fragments = stats.fragments.saturating_add(n);
         stats.written = stats.written.saturating_add(n);
         match paint.solid() {
-            Some(rgb) if Q::UNIFORM => self.target.fill_solid(&area, self.quantize.quantize(rgb, 0, span.y)),
+            Some(rgb) if Q::UNIFORM => self
+                .target
+                .fill_solid(&area, self.quantize.quantize(rgb, 0, span.y)),
             _ => {
                 let q = self.quantize;
                 let y = span.y;

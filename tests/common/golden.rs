@@ -7,7 +7,9 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use std::path::PathBuf;
 
 fn path(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/golden").join(format!("{name}.png"))
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(format!("{name}.png"))
 }
 
 pub fn write_png(path: &std::path::Path, w: u32, h: u32, pixels: &[Rgb888]) {
@@ -22,13 +24,21 @@ pub fn write_png(path: &std::path::Path, w: u32, h: u32, pixels: &[Rgb888]) {
 
 pub fn read_png(path: &std::path::Path) -> Option<(u32, u32, Vec<Rgb888>)> {
     let file = std::fs::File::open(path).ok()?;
-    let mut dec = png::Decoder::new(std::io::BufReader::new(file)).read_info().ok()?;
+    let mut dec = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .ok()?;
     let mut buf = vec![0; dec.output_buffer_size()?];
     let info = dec.next_frame(&mut buf).ok()?;
     let bytes = &buf[..info.buffer_size()];
     let px = match info.color_type {
-        png::ColorType::Rgb => bytes.chunks(3).map(|c| Rgb888::new(c[0], c[1], c[2])).collect(),
-        png::ColorType::Rgba => bytes.chunks(4).map(|c| Rgb888::new(c[0], c[1], c[2])).collect(),
+        png::ColorType::Rgb => bytes
+            .chunks(3)
+            .map(|c| Rgb888::new(c[0], c[1], c[2]))
+            .collect(),
+        png::ColorType::Rgba => bytes
+            .chunks(4)
+            .map(|c| Rgb888::new(c[0], c[1], c[2]))
+            .collect(),
         _ => return None,
     };
     Some((info.width, info.height, px))
@@ -43,13 +53,19 @@ pub fn check(name: &str, w: u32, h: u32, pixels: &[Rgb888]) {
         return;
     }
     let Some((gw, gh, golden)) = read_png(&p) else {
-        panic!("golden image {} missing: run with BLESS=1 to create it", p.display());
+        panic!(
+            "golden image {} missing: run with BLESS=1 to create it",
+            p.display()
+        );
     };
     assert_eq!((gw, gh), (w, h), "golden image {name} has another size");
     let differ = golden.iter().zip(pixels).filter(|(a, b)| a != b).count();
     if differ != 0 {
         let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}.actual.png"));
         write_png(&out, w, h, pixels);
-        panic!("{differ} pixels differ from golden image {name}; actual image: {}", out.display());
+        panic!(
+            "{differ} pixels differ from golden image {name}; actual image: {}",
+            out.display()
+        );
     }
 }

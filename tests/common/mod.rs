@@ -58,8 +58,16 @@ pub fn crate_triangle(v: [ScreenPoint; 3], clip: PixelRect) -> BTreeSet<(i32, i3
     for s in triangle_spans(v, clip) {
         assert!(s.x0 < s.x1, "empty span {s:?}");
         for x in s.x0..s.x1 {
-            assert!(clip.contains(x, s.y), "pixel ({x}, {}) outside {clip:?}", s.y);
-            assert!(out.insert((x, s.y)), "pixel ({x}, {}) twice in one triangle", s.y);
+            assert!(
+                clip.contains(x, s.y),
+                "pixel ({x}, {}) outside {clip:?}",
+                s.y
+            );
+            assert!(
+                out.insert((x, s.y)),
+                "pixel ({x}, {}) twice in one triangle",
+                s.y
+            );
         }
     }
     out
@@ -75,20 +83,36 @@ pub fn model_line(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> Vec<(i32, 
         return out;
     }
     let swapped = dx.abs() < dy.abs();
-    let (a0, a1, b0, b1) = if swapped { (ay, ax, by, bx) } else { (ax, ay, bx, by) };
+    let (a0, a1, b0, b1) = if swapped {
+        (ay, ax, by, bx)
+    } else {
+        (ax, ay, bx, by)
+    };
     let (lo, hi) = (a0.min(b0).div_euclid(S) - 1, a0.max(b0).div_euclid(S) + 1);
     for i in lo..=hi {
         let c = i * S + S / 2;
-        let in_run = if b0 > a0 { c >= a0 && c < b0 } else { c <= a0 && c > b0 };
+        let in_run = if b0 > a0 {
+            c >= a0 && c < b0
+        } else {
+            c <= a0 && c > b0
+        };
         if !in_run {
             continue;
         }
         // minor = floor((a1 + (c - a0) * (b1 - a1) / (b0 - a0)) / S)
         let num = a1 * (b0 - a0) + (c - a0) * (b1 - a1);
         let den = (b0 - a0) * S;
-        let m = if den > 0 { num.div_euclid(den) } else { (-num).div_euclid(-den) };
+        let m = if den > 0 {
+            num.div_euclid(den)
+        } else {
+            (-num).div_euclid(-den)
+        };
         let (x, y) = if swapped { (m, i) } else { (i, m) };
-        if x >= clip.x0 as i128 && x < clip.x1 as i128 && y >= clip.y0 as i128 && y < clip.y1 as i128 {
+        if x >= clip.x0 as i128
+            && x < clip.x1 as i128
+            && y >= clip.y0 as i128
+            && y < clip.y1 as i128
+        {
             out.push((x as i32, y as i32));
         }
     }
@@ -119,7 +143,11 @@ pub struct Hits {
 
 impl Hits {
     pub fn new(w: i32, h: i32) -> Self {
-        Hits { w, h, n: vec![0; (w * h) as usize] }
+        Hits {
+            w,
+            h,
+            n: vec![0; (w * h) as usize],
+        }
     }
     pub fn clip(&self) -> PixelRect {
         PixelRect::new(0, 0, self.w, self.h)
@@ -131,5 +159,20 @@ impl Hits {
     }
     pub fn count(&self, k: u32) -> usize {
         self.n.iter().filter(|&&c| c == k).count()
+    }
+}
+
+/// A deterministic xorshift for test inputs.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * ((self.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
     }
 }

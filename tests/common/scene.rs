@@ -42,22 +42,32 @@ pub fn torus_f64() -> TorusData {
             triangles.push([p(i, j), p(i1, j1), p(i1, j)]);
         }
     }
-    TorusData { positions, triangles }
+    TorusData {
+        positions,
+        triangles,
+    }
 }
 
 pub const BASE: Rgb888 = Rgb888::new(255, 160, 64);
 
 pub fn frame() -> Frame {
     let viewport = Viewport::new(320, 240).unwrap();
-    let view = LookAt::new(Vec3::from_f32(0.0, 0.0, 2.6).unwrap(), Vec3::ZERO, Vec3::Y).view().unwrap();
+    let view = LookAt::new(Vec3::from_f32(0.0, 0.0, 2.6).unwrap(), Vec3::ZERO, Vec3::Y)
+        .view()
+        .unwrap();
     let s = Scalar::from_num;
-    let projection = Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1), s(10)).unwrap();
+    let projection =
+        Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1), s(10)).unwrap();
     Frame::new(&view, &projection, viewport)
 }
 
 pub fn lighting() -> Lighting<1> {
     let mut l = Lighting::new(LightColor::gray(Scalar::from_num(0.2)));
-    l.push(DirectionalLight::new(Vec3::from_int(-1, 1, 1), LightColor::gray(Scalar::from_num(0.8)))).unwrap();
+    l.push(DirectionalLight::new(
+        Vec3::from_int(-1, 1, 1),
+        LightColor::gray(Scalar::from_num(0.8)),
+    ))
+    .unwrap();
     l
 }
 
