@@ -135,6 +135,15 @@ fn sort_by_y(v: [ScreenPoint; 3]) -> [ScreenPoint; 3] {
     [a, b, c]
 }
 
+impl TriangleSpans {
+    /// Rows still to visit: the work left is proportional to this (it never exceeds the clip
+    /// rectangle's height).
+    #[must_use]
+    pub fn rows_left(&self) -> u32 {
+        self.y_end.saturating_sub(self.y).max(0) as u32
+    }
+}
+
 impl Iterator for TriangleSpans {
     type Item = Span;
 

@@ -4,7 +4,9 @@
 #![allow(dead_code)]
 
 pub mod golden;
+pub mod reference;
 pub mod scene;
+pub mod world;
 
 use fixed3d::raster::{line_pixels, triangle_spans, PixelRect, ScreenPoint};
 use std::collections::BTreeSet;
@@ -174,5 +176,75 @@ impl Rng {
     }
     pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * ((self.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
+    }
+}
+
+use embedded_graphics::pixelcolor::Rgb565;
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+/// A draw target that counts how often each pixel is drawn (and never drops anything outside:
+/// it records it, so tests can assert nothing went there).
+pub struct HitCanvas {
+    pub w: i32,
+    pub h: i32,
+    pub hits: Vec<u32>,
+    pub outside: u32,
+}
+
+impl HitCanvas {
+    pub fn new(w: i32, h: i32) -> Self {
+        HitCanvas {
+            w,
+            h,
+            hits: vec![0; (w * h) as usize],
+            outside: 0,
+        }
+    }
+    pub fn at(&self, x: i32, y: i32) -> u32 {
+        self.hits[(y * self.w + x) as usize]
+    }
+    fn hit(&mut self, p: Point) {
+        if p.x >= 0 && p.y >= 0 && p.x < self.w && p.y < self.h {
+            self.hits[(p.y * self.w + p.x) as usize] += 1;
+        } else {
+            self.outside += 1;
+        }
+    }
+}
+
+impl OriginDimensions for HitCanvas {
+    fn size(&self) -> Size {
+        Size::new(self.w as u32, self.h as u32)
+    }
+}
+
+impl DrawTarget for HitCanvas {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        for Pixel(p, _) in pixels {
+            self.hit(p);
+        }
+        Ok(())
+    }
+    fn fill_solid(&mut self, area: &Rectangle, _: Rgb565) -> Result<(), Self::Error> {
+        for p in area.points() {
+            self.hit(p);
+        }
+        Ok(())
+    }
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        area: &Rectangle,
+        _: I,
+    ) -> Result<(), Self::Error> {
+        for p in area.points() {
+            self.hit(p);
+        }
+        Ok(())
     }
 }

@@ -1,0 +1,171 @@
+//! An independent float64 reference for whole-pipeline tests: f64 look-at and perspective,
+//! f64 near-plane clipping, no snapping. Each pixel is classified like dEQP does: FULL or NONE
+//! when every edge is further than `tol` pixels from its centre, PARTIAL otherwise (anything
+//! goes there: snapping may move an edge by up to half a sub-pixel).
+#![allow(dead_code)]
+
+pub type V3 = [f64; 3];
+
+pub fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+pub fn cross(a: V3, b: V3) -> V3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+pub fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+pub fn norm(a: V3) -> V3 {
+    let l = dot(a, a).sqrt();
+    [a[0] / l, a[1] / l, a[2] / l]
+}
+
+/// Clip-from-world in f64: perspective (z to [0, 1]) times look-at.
+#[derive(Clone, Copy, Debug)]
+pub struct Camera {
+    pub m: [[f64; 4]; 4],
+    pub width: f64,
+    pub height: f64,
+}
+
+impl Camera {
+    pub fn new(
+        eye: V3,
+        target: V3,
+        up: V3,
+        fov_deg: f64,
+        near: f64,
+        far: f64,
+        w: u32,
+        h: u32,
+    ) -> Self {
+        let z = norm(sub(eye, target));
+        let x = norm(cross(up, z));
+        let y = cross(z, x);
+        let view = [
+            [x[0], x[1], x[2], -dot(x, eye)],
+            [y[0], y[1], y[2], -dot(y, eye)],
+            [z[0], z[1], z[2], -dot(z, eye)],
+            [0.0, 0.0, 0.0, 1.0],
+        ];
+        let f = 1.0 / (fov_deg.to_radians() / 2.0).tan();
+        let aspect = w as f64 / h as f64;
+        let proj = [
+            [f / aspect, 0.0, 0.0, 0.0],
+            [0.0, f, 0.0, 0.0],
+            [0.0, 0.0, far / (near - far), near * far / (near - far)],
+            [0.0, 0.0, -1.0, 0.0],
+        ];
+        let mut m = [[0.0; 4]; 4];
+        for i in 0..4 {
+            for j in 0..4 {
+                m[i][j] = (0..4).map(|k| proj[i][k] * view[k][j]).sum();
+            }
+        }
+        Camera {
+            m,
+            width: w as f64,
+            height: h as f64,
+        }
+    }
+
+    pub fn clip(&self, p: V3) -> [f64; 4] {
+        let v = [p[0], p[1], p[2], 1.0];
+        let mut out = [0.0; 4];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = (0..4).map(|k| self.m[i][k] * v[k]).sum();
+        }
+        out
+    }
+
+    /// Screen position (pixels, y down) and depth z/w of a clip-space point with w > 0.
+    pub fn screen(&self, c: [f64; 4]) -> [f64; 3] {
+        [
+            (c[0] / c[3] + 1.0) * self.width / 2.0,
+            (1.0 - c[1] / c[3]) * self.height / 2.0,
+            c[2] / c[3],
+        ]
+    }
+
+    /// The triangle clipped against the near plane (z_clip > 0) and projected: a convex
+    /// polygon in screen pixels with depth, empty if nothing is in front.
+    pub fn project_triangle(&self, tri: [V3; 3]) -> Vec<[f64; 3]> {
+        let c: Vec<[f64; 4]> = tri.iter().map(|&p| self.clip(p)).collect();
+        let mut out = Vec::new();
+        for i in 0..3 {
+            let (a, b) = (c[i], c[(i + 1) % 3]);
+            let (ia, ib) = (a[2] > 0.0, b[2] > 0.0);
+            if ia {
+                out.push(a);
+            }
+            if ia != ib {
+                let t = a[2] / (a[2] - b[2]);
+                out.push([0, 1, 2, 3].map(|k| a[k] + t * (b[k] - a[k])));
+            }
+        }
+        out.into_iter().map(|c| self.screen(c)).collect()
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cover {
+    Full,
+    Partial,
+    None,
+}
+
+/// Signed area of a polygon (y down; negative = front face, counter-clockwise in world).
+pub fn polygon_area(p: &[[f64; 3]]) -> f64 {
+    let mut a = 0.0;
+    for i in 0..p.len() {
+        let (u, v) = (p[i], p[(i + 1) % p.len()]);
+        a += u[0] * v[1] - v[0] * u[1];
+    }
+    a
+}
+
+/// Classifies the centre of pixel (px, py) against a convex polygon.
+pub fn classify(poly: &[[f64; 3]], px: i32, py: i32, tol: f64) -> Cover {
+    if poly.len() < 3 {
+        return Cover::None;
+    }
+    let area = polygon_area(poly);
+    if area == 0.0 {
+        return Cover::None;
+    }
+    let s = area.signum();
+    let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
+    let mut min_d = f64::INFINITY;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+        let len = (ex * ex + ey * ey).sqrt();
+        if len == 0.0 {
+            continue;
+        }
+        // Positive inside for s > 0 orientation.
+        let d = s * (ex * (y - a[1]) - ey * (x - a[0])) / len;
+        min_d = min_d.min(d);
+    }
+    if min_d > tol {
+        Cover::Full
+    } else if min_d < -tol {
+        Cover::None
+    } else {
+        Cover::Partial
+    }
+}
+
+/// Depth z/w at a pixel centre on the plane of a projected polygon (its first three vertices).
+pub fn depth_at(poly: &[[f64; 3]], px: i32, py: i32) -> f64 {
+    let (a, b, c) = (poly[0], poly[1], poly[2]);
+    let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
+    let det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    let l1 = ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / det;
+    let l2 = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / det;
+    a[2] + l1 * (b[2] - a[2]) + l2 * (c[2] - a[2])
+}
