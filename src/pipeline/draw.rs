@@ -119,7 +119,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             ObjectSetup {
                 object,
                 vertices,
-                clip_from_model: self.frame.clip_from_world * object.model,
+                clip_from_model: self.frame.clip_from_model(&object.model),
                 normal_matrix: object.model.normal_matrix(),
             }
         })

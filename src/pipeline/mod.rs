@@ -1,7 +1,7 @@
 //! The per-frame pipeline, in the order data flows:
 //!
-//! 1. [`Frame::prepare`] runs the vertex stage once per vertex: `clip = clip_from_world ·
-//!    model · position`, then the outcode against the near and far planes and the guard band,
+//! 1. [`Frame::prepare`] runs the vertex stage once per vertex: `clip = projection · (view ·
+//!    model) · position`, then the outcode against the near and far planes and the guard band,
 //!    then (for vertices inside all of them) the divide by w, the viewport and the snap to
 //!    sub-pixels. [`Gouraud`](crate::shade::Gouraud) also lights each vertex here. The results go
 //!    into a caller-supplied cache of [`ScreenVertex`], one per vertex of the scene.
@@ -113,7 +113,8 @@ impl core::error::Error for PrepareError {}
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Frame {
-    clip_from_world: Mat4,
+    view: Mat4,
+    projection: Mat4,
     viewport: Viewport,
     cull: Cull,
 }
@@ -123,7 +124,8 @@ impl Frame {
     #[must_use]
     pub fn new(view: &Mat4, projection: &Projection, viewport: Viewport) -> Self {
         Frame {
-            clip_from_world: *projection.matrix() * *view,
+            view: *view,
+            projection: *projection.matrix(),
             viewport,
             cull: Cull::Back,
         }
@@ -141,10 +143,18 @@ impl Frame {
         self.viewport
     }
 
-    /// `projection · view`.
+    /// The view matrix (view from world).
     #[must_use]
-    pub fn clip_from_world(&self) -> &Mat4 {
-        &self.clip_from_world
+    pub fn view(&self) -> &Mat4 {
+        &self.view
+    }
+
+    /// Clip from model: `projection · (view · model)`. The view and model matrices are
+    /// composed first, so an object and a camera far from the origin (translations that cancel)
+    /// keep their precision instead of saturating the projection's entries (case T35).
+    #[must_use]
+    pub fn clip_from_model(&self, model: &Mat4) -> Mat4 {
+        self.projection * (self.view * *model)
     }
 
     /// Runs the vertex stage for every object of `scene` into `cache` (one entry per vertex,
@@ -165,7 +175,7 @@ impl Frame {
         let map = ScreenMap::new(&self.viewport);
         let mut slots = cache.iter_mut();
         for object in scene.objects {
-            let clip_from_model = self.clip_from_world * object.model;
+            let clip_from_model = self.clip_from_model(&object.model);
             let normal_matrix = object.model.normal_matrix();
             let normals = if S::PER_VERTEX {
                 object.mesh.normals()

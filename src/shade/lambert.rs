@@ -76,3 +76,103 @@ pub(crate) fn vertex_normal(n: [i32; 3], normal_matrix: &[[i32; 3]; 3]) -> Optio
     debug_assert!(w.iter().all(|c| c.abs() <= UNIT_ONE));
     Some(w)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::{Scalar, Vec3};
+    use crate::scene::{DirectionalLight, LightColor, LightError};
+
+    const IDENTITY: [[i32; 3]; 3] = [[1 << 16, 0, 0], [0, 1 << 16, 0], [0, 0, 1 << 16]];
+
+    fn to_f(v: [i32; 3]) -> [f64; 3] {
+        v.map(|c| c as f64 / (1u64 << 30) as f64)
+    }
+
+    /// T33: face normals of triangles with edges from 1e-4 to 1e3 world units: no panic, the
+    /// direction within 1 degree of the exact normal of the quantised vertices.
+    #[test]
+    fn t33_face_normals_at_every_scale() {
+        for scale in [1e-4f64, 1e-3, 0.01, 0.1, 1.0, 10.0, 100.0, 1000.0] {
+            let raw = [[0.0, 0.0, 0.0], [1.0, 0.2, -0.3], [0.3, 1.1, 0.4]]
+                .map(|p| p.map(|c: f64| (c * scale * 65536.0).round() as i32));
+            let n = face_normal(raw, &IDENTITY).expect("non-degenerate");
+            let p = raw.map(|v| v.map(|c| c as f64));
+            let e1 = [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]];
+            let e2 = [p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]];
+            let x = [
+                e1[1] * e2[2] - e1[2] * e2[1],
+                e1[2] * e2[0] - e1[0] * e2[2],
+                e1[0] * e2[1] - e1[1] * e2[0],
+            ];
+            let len = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+            let f = to_f(n);
+            let cos = (f[0] * x[0] + f[1] * x[1] + f[2] * x[2]) / len;
+            assert!(cos > 1f64.to_radians().cos(), "scale {scale}: cos {cos}");
+        }
+        // A zero-area triangle has no normal (ambient only), never a division.
+        assert!(face_normal([[5, 5, 5]; 3], &IDENTITY).is_none());
+        assert!(face_normal([[0, 0, 0], [1 << 16, 0, 0], [2 << 16, 0, 0]], &IDENTITY).is_none());
+        // Extreme coordinates do not overflow.
+        let big = [
+            [i32::MIN, i32::MIN, 0],
+            [i32::MAX, i32::MIN, 0],
+            [i32::MIN, i32::MAX, 7],
+        ];
+        assert!(face_normal(big, &IDENTITY).is_some());
+    }
+
+    /// T34: Lambert with random unit vectors, zero normals and back-facing normals: intensity in
+    /// [0, 1] and within 1 LSB of the exact value per 8-bit channel.
+    #[test]
+    fn t34_lambert_bounds_and_error() {
+        let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(0.2)));
+        assert_eq!(
+            lighting.push(DirectionalLight::new(Vec3::ZERO, LightColor::WHITE)),
+            Err(LightError::ZeroDirection)
+        );
+        let l = [-1.0f64, 1.0, 1.0];
+        lighting
+            .push(DirectionalLight::new(
+                Vec3::from_int(-1, 1, 1),
+                LightColor::gray(Scalar::from_num(0.8)),
+            ))
+            .unwrap();
+        let base = Rgb888::new(255, 160, 64);
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let ll = (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]).sqrt();
+        for _ in 0..20_000 {
+            let v = [next(), next(), next()];
+            let raw = v.map(|c| (c * (1 << 20) as f64) as i64);
+            let Some(n) = normalize(raw) else { continue };
+            let got = lambert(base, Some(n), &lighting);
+            let nf = to_f(n);
+            let d = ((nf[0] * l[0] + nf[1] * l[1] + nf[2] * l[2]) / ll).max(0.0);
+            let s = 0.2 + 0.8 * d;
+            let expect = [255.0 * s, 160.0 * s, 64.0 * s];
+            let got = [got.r(), got.g(), got.b()];
+            for (g, e) in got.iter().zip(expect) {
+                assert!(
+                    (*g as f64 - e.floor()).abs() <= 1.0,
+                    "{got:?} vs {expect:?}"
+                );
+            }
+        }
+        // No normal: ambient only.
+        assert_eq!(lambert(base, None, &lighting), Rgb888::new(50, 31, 12));
+        // Overbright lights clamp at full intensity.
+        let mut hot = Lighting::<1>::new(LightColor::gray(Scalar::from_num(3)));
+        hot.push(DirectionalLight::new(
+            Vec3::Y,
+            LightColor::gray(Scalar::from_num(100)),
+        ))
+        .unwrap();
+        assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &hot), base);
+    }
+}

@@ -1,6 +1,8 @@
 //! Paints: the colour sources a target reads along a span.
 
 use embedded_graphics::pixelcolor::Rgb888;
+#[cfg(test)]
+use embedded_graphics::pixelcolor::RgbColor;
 
 use crate::raster::{Plane, ScreenPoint};
 
@@ -93,6 +95,59 @@ impl Paint for SmoothPaint {
             step: self.planes.map(|p| p.step_x()),
             lo: self.lo,
             hi: self.hi,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// T36 and R8: a colour ramp along a 2048-pixel span stays within 1 LSB of the exact plane
+    /// at every pixel and never leaves the range of the vertex colours.
+    #[test]
+    fn t36_long_span_ramp_has_no_drift() {
+        for width in [64i32, 320, 1024, 2048] {
+            let p = [
+                ScreenPoint::new(0, 0),
+                ScreenPoint::new(width * 16, 3),
+                ScreenPoint::new(5, 40 * 16),
+            ];
+            let rgb = [
+                [0, 128 << 8, 255 << 8],
+                [255 << 8, 7 << 8, 0],
+                [31 << 8, 255 << 8, 99 << 8],
+            ];
+            let area = {
+                let [a, b, c] = p.map(|q| (q.x as i64, q.y as i64));
+                (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
+            };
+            let paint = SmoothPaint::new(&p, rgb, area);
+            let y = 1;
+            let mut cursor = paint.cursor(0, y);
+            for x in 0..width - 2 {
+                let c = cursor.next().unwrap_or_default();
+                // Exact barycentric plane at the pixel centre.
+                let (px, py) = (x as f64 * 16.0 + 8.0, y as f64 * 16.0 + 8.0);
+                let f = p.map(|q| (q.x as f64, q.y as f64));
+                let det =
+                    (f[1].0 - f[0].0) * (f[2].1 - f[0].1) - (f[2].0 - f[0].0) * (f[1].1 - f[0].1);
+                let l1 =
+                    ((px - f[0].0) * (f[2].1 - f[0].1) - (f[2].0 - f[0].0) * (py - f[0].1)) / det;
+                let l2 =
+                    ((f[1].0 - f[0].0) * (py - f[0].1) - (px - f[0].0) * (f[1].1 - f[0].1)) / det;
+                for (k, got) in [c.r(), c.g(), c.b()].into_iter().enumerate() {
+                    let v = rgb.map(|v| v[k] as f64 / 256.0);
+                    let exact = v[0] + l1 * (v[1] - v[0]) + l2 * (v[2] - v[0]);
+                    let lo = v.iter().cloned().fold(f64::INFINITY, f64::min);
+                    let hi = v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+                    assert!(
+                        (got as f64 - exact.clamp(lo, hi)).abs() <= 1.0,
+                        "width {width} x {x}: {got} vs {exact}"
+                    );
+                    assert!(got as f64 >= lo.floor() && got as f64 <= hi.ceil());
+                }
+            }
         }
     }
 }
