@@ -12,6 +12,7 @@ use fixed3d::scene::{DirectionalLight, LightColor, Lighting};
 
 pub struct TorusData {
     pub positions: Vec<Vec3>,
+    pub normals: Vec<Vec3>,
     pub triangles: Vec<Triangle>,
 }
 
@@ -19,6 +20,7 @@ pub fn torus_f64() -> TorusData {
     let (r_big, r_small, u_n, v_n) = (1.0f64, 0.4f64, 48usize, 24usize);
     let (a, b) = (20f64.to_radians(), 30f64.to_radians());
     let mut positions = Vec::new();
+    let mut normals = Vec::new();
     for i in 0..u_n {
         for j in 0..v_n {
             let u = 2.0 * std::f64::consts::PI * i as f64 / u_n as f64;
@@ -31,6 +33,13 @@ pub fn torus_f64() -> TorusData {
             let x2 = x * b.cos() + z1 * b.sin();
             let z2 = -x * b.sin() + z1 * b.cos();
             positions.push(Vec3::from_f32(x2 as f32, y1 as f32, z2 as f32).unwrap());
+            // The normal, rotated the same way.
+            let (nx, ny, nz) = (w.cos() * u.cos(), w.sin(), w.cos() * u.sin());
+            let ny1 = ny * a.cos() - nz * a.sin();
+            let nz1 = ny * a.sin() + nz * a.cos();
+            let nx2 = nx * b.cos() + nz1 * b.sin();
+            let nz2 = -nx * b.sin() + nz1 * b.cos();
+            normals.push(Vec3::from_f32(nx2 as f32, ny1 as f32, nz2 as f32).unwrap());
         }
     }
     let mut triangles = Vec::new();
@@ -44,6 +53,7 @@ pub fn torus_f64() -> TorusData {
     }
     TorusData {
         positions,
+        normals,
         triangles,
     }
 }
