@@ -33,6 +33,7 @@ pub struct Camera {
 }
 
 impl Camera {
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         eye: V3,
         target: V3,
