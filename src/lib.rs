@@ -1,11 +1,16 @@
+#![doc = include_str!("../README.md")]
 #![no_std]
 #![deny(
     missing_docs,
     missing_debug_implementations,
-    rustdoc::broken_intra_doc_links
+    rustdoc::broken_intra_doc_links,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
 )]
 #![forbid(unsafe_code)]
-//! fixed3d
+#![cfg_attr(test, allow(clippy::unwrap_used, clippy::expect_used, clippy::panic))]
+#![doc(test(attr(deny(warnings))))]
 
 #[cfg(test)]
 extern crate std;

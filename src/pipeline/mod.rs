@@ -110,6 +110,7 @@ impl core::error::Error for PrepareError {}
 /// let s = Scalar::from_num;
 /// let projection = Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1), s(10)).unwrap();
 /// let frame = Frame::new(&view, &projection, viewport);
+/// assert_eq!(frame.viewport().width(), 320);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Frame {

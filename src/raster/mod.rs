@@ -14,7 +14,7 @@
 //!   pixel of the row `floor(y)` at that centre (y-major lines swap the axes). The start is
 //!   included and the end excluded, so a closed polygon draws each vertex pixel once. Clipping
 //!   to the target never changes which pixels are drawn.
-//! - **Attributes** ([`Plane`]): depth and colour are planes through the three snapped vertices,
+//! - **Attributes**: depth and colour are planes through the three snapped vertices,
 //!   evaluated at pixel centres in 64-bit arithmetic and stepped along spans.
 //!
 //! Coordinates must lie within ±[`COORD_LIMIT`] sub-pixels; the pipeline's guard band keeps them

@@ -46,11 +46,13 @@ pub trait RasterTarget {
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::Rgb565;
-/// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+/// use fixed3d::raster::PixelRect;
+/// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer, RasterTarget};
 /// let (mut c, mut d) = ([Rgb565::new(0, 0, 0); 320 * 16], [0u16; 320 * 16]);
 /// let mut color = FrameBuffer::new(&mut c, 320, 16).unwrap();
 /// let mut depth = DepthBuffer::new(&mut d, 320, 16).unwrap();
-/// let band = ColorDepth::band(&mut color, &mut depth, 32).unwrap(); // frame rows 32..48
+/// let band = ColorDepth::band(&mut color, &mut depth, 32).unwrap();
+/// assert_eq!(band.clip(), PixelRect::new(0, 32, 320, 48)); // frame rows 32..48
 /// ```
 #[derive(Debug)]
 pub struct ColorDepth<'t, 'a, C, D, Q = Nearest> {
@@ -187,9 +189,11 @@ where
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Rgb565};
-/// use fixed3d::target::Direct;
+/// use fixed3d::raster::PixelRect;
+/// use fixed3d::target::{Direct, RasterTarget};
 /// let mut display = MockDisplay::<Rgb565>::new();
 /// let target = Direct::new(&mut display);
+/// assert_eq!(target.clip(), PixelRect::new(0, 0, 64, 64));
 /// ```
 #[derive(Debug)]
 pub struct Direct<'t, T, Q = Nearest> {
