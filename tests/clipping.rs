@@ -209,3 +209,35 @@ fn t20_camera_inside_a_cube() {
         assert_eq!(front_culled.hits, canvas.hits);
     }
 }
+
+use proptest::prelude::*;
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(40))]
+
+    /// M3 through the whole pipeline: fans whose rim lies thousands of units away (far outside
+    /// the guard band), in planes tilted so that part of the rim is behind the camera, cover
+    /// every pixel at most once and equal the f64 reference outside the partial band.
+    #[test]
+    fn fans_enclosing_the_screen_are_watertight(seed in any::<u64>(), tilt_x in -0.7f64..0.7, tilt_y in -0.7f64..0.7) {
+        let s = Setup::new([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]);
+        let mut rng = Rng(seed | 1);
+        let plane = |x: f64, y: f64| [x, y, -3.0 + tilt_x * x + tilt_y * y];
+        let centre = plane(rng.range(-0.5, 0.5), rng.range(-0.5, 0.5));
+        let radius = 9000.0;
+        let mut rim = Vec::new();
+        let mut a = 0.0f64;
+        while a < std::f64::consts::TAU {
+            rim.push(plane(radius * a.cos(), radius * a.sin()));
+            a += rng.range(0.0005, 0.3);
+        }
+        let tris: Vec<[V3; 3]> = (0..rim.len()).map(|i| [centre, rim[i], rim[(i + 1) % rim.len()]]).collect();
+        let (canvas, _) = s.hits(&tris, Cull::None);
+        prop_assert!(canvas.hits.iter().all(|&h| h <= 1), "a pixel drawn twice");
+        let (missing, unexpected, _) = s.compare(&tris, Cull::None, TOL);
+        prop_assert_eq!((missing, unexpected), (0, 0));
+        if tilt_x.abs() < 1e-3 && tilt_y.abs() < 1e-3 {
+            prop_assert!(canvas.hits.iter().all(|&h| h == 1));
+        }
+    }
+}

@@ -256,3 +256,68 @@ proptest! {
         }
     }
 }
+
+/// T36 for depth: a triangle spanning a 2048-pixel viewport, every pixel within 1 LSB of the
+/// plane (no drift along the longest spans the pipeline accepts).
+#[test]
+fn t36_depth_along_2048_pixel_spans() {
+    let mut s = Setup::new([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]);
+    s.w = 2048;
+    s.h = 24;
+    s.fov_deg = 10;
+    s.near = 1.0;
+    s.far = 10.0;
+    // Nearly edge-on from left (near) to right (far), wider than the screen.
+    let t = vec![[[-9.0, -0.1, -1.3], [70.0, -0.8, -9.5], [-8.5, 0.1, -1.2]]];
+    let r = render(&s, &[(t, RED)], DepthTest::Less);
+    assert_eq!(r.stats.clipped, 0);
+    let n = assert_depth_on_plane(&s, &r);
+    assert!(n > 10_000, "{n} pixels");
+}
+
+/// The u32 depth format: the same visibility, 2¹⁶ times finer steps.
+#[test]
+fn u32_depth_resolves_what_u16_cannot() {
+    let mut s = setup();
+    s.near = 0.1;
+    s.far = 100.0;
+    // Planes 0.05 apart at depth 50: a tenth of a 16-bit quantum, thousands of 32-bit ones.
+    let plane = |z: f64| vec![[[-40.0, -40.0, z], [40.0, -40.0, z], [0.0, 40.0, z]]];
+    let objs = [(plane(-50.0), RED), (plane(-50.05), BLUE)];
+    let data: Vec<(Vec<fixed3d::math::Vec3>, Vec<[u16; 3]>)> = objs
+        .iter()
+        .map(|(t, _)| (t.iter().flat_map(|t| t.map(q)).collect(), vec![[0, 1, 2]]))
+        .collect();
+    let meshes: Vec<Mesh> = data.iter().map(|(p, t)| Mesh::new(p, t).unwrap()).collect();
+    // Far plane first, so only a finer depth buffer can let the near one win everywhere.
+    let objects = [
+        Object::new(&meshes[1], Mat4::IDENTITY, BLUE),
+        Object::new(&meshes[0], Mat4::IDENTITY, RED),
+    ];
+    let scene = Scene::new(&objects, Lighting::<0>::new(LightColor::WHITE));
+    let mut cache = vec![ScreenVertex::DEFAULT; 6];
+    let prepared = s.frame().prepare(&scene, &mut cache, Unlit).unwrap();
+    let n = (s.w * s.h) as usize;
+    let mut c = vec![Rgb565::BLACK; n];
+    let mut d32 = vec![0u32; n];
+    let mut color = FrameBuffer::new(&mut c, s.w, s.h).unwrap();
+    let mut depth = DepthBuffer::new(&mut d32, s.w, s.h).unwrap();
+    depth.clear();
+    prepared
+        .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
+        .unwrap();
+    let blue = c.iter().filter(|&&p| p == Rgb565::from(BLUE)).count();
+    let red = c.iter().filter(|&&p| p == Rgb565::from(RED)).count();
+    assert!(red > 1000);
+    assert_eq!(blue, 0);
+    // With 16 bits the same planes share depth values at many pixels: the first drawn stays.
+    let mut c16 = vec![Rgb565::BLACK; n];
+    let mut d16 = vec![0u16; n];
+    let mut color = FrameBuffer::new(&mut c16, s.w, s.h).unwrap();
+    let mut depth = DepthBuffer::new(&mut d16, s.w, s.h).unwrap();
+    depth.clear();
+    prepared
+        .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
+        .unwrap();
+    assert!(c16.iter().filter(|&&p| p == Rgb565::from(BLUE)).count() > 0);
+}

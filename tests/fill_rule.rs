@@ -321,3 +321,74 @@ proptest! {
         prop_assert_eq!(got, model_triangle([a, b, c], clip));
     }
 }
+
+/// T10: with culling on, exactly one winding is drawn, decided on the snapped area; zero-area
+/// triangles are never drawn.
+#[test]
+fn t10_culling_by_snapped_winding() {
+    use common::world::Setup;
+    use fixed3d::pipeline::Cull;
+    let s = Setup::new([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]);
+    let ccw = [[-1.0, -1.0, -3.0], [1.0, -1.0, -3.0], [0.0, 1.0, -3.0]];
+    let cw = [ccw[0], ccw[2], ccw[1]];
+    let (front, stats) = s.hits(&[ccw], Cull::Back);
+    assert_eq!((stats.drawn, stats.culled), (1, 0));
+    assert!(front.hits.iter().any(|&h| h == 1));
+    let (back, stats) = s.hits(&[cw], Cull::Back);
+    assert_eq!((stats.drawn, stats.culled), (0, 1));
+    assert!(back.hits.iter().all(|&h| h == 0));
+    let (only_back, _) = s.hits(&[cw], Cull::Front);
+    assert_eq!(only_back.hits, front.hits);
+    // Both windings with culling off: the same pixels.
+    let (none, _) = s.hits(&[cw], Cull::None);
+    assert_eq!(none.hits, front.hits);
+    // Collinear after snapping: zero area, never drawn, whatever the culling.
+    let sliver = [[-1.0, 0.0, -3.0], [1.0, 0.0, -3.0], [0.0, 0.000001, -3.0]];
+    for cull in [Cull::Back, Cull::Front, Cull::None] {
+        let (c, stats) = s.hits(&[sliver], cull);
+        assert!(c.hits.iter().all(|&h| h == 0));
+        assert_eq!(stats.degenerate, 1);
+    }
+}
+
+/// T12 through the pipeline: snapping is symmetric about the screen centre, so a scene and its
+/// mirror image (x → −x) snap to mirrored sub-pixel positions.
+#[test]
+fn t12_snapping_is_symmetric_about_the_centre() {
+    use embedded_graphics::pixelcolor::Rgb888;
+    use fixed3d::math::{Mat4, Vec3};
+    use fixed3d::mesh::{Mesh, Object};
+    use fixed3d::pipeline::ScreenVertex;
+    use fixed3d::scene::{LightColor, Lighting, Scene};
+    use fixed3d::shade::Unlit;
+    let s = common::world::Setup::new([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]);
+    let mut rng = Rng(5);
+    let pts: Vec<Vec3> = (0..200)
+        .map(|_| {
+            Vec3::from_f32(
+                rng.range(-3.0, 3.0) as f32,
+                rng.range(-3.0, 3.0) as f32,
+                rng.range(-9.0, -1.0) as f32,
+            )
+            .unwrap()
+        })
+        .collect();
+    let mirrored: Vec<Vec3> = pts.iter().map(|p| Vec3::new(-p.x, -p.y, p.z)).collect();
+    let snap = |p: &[Vec3]| {
+        let mesh = Mesh::new(p, &[]).unwrap();
+        let objects = [Object::new(&mesh, Mat4::IDENTITY, Rgb888::new(1, 2, 3))];
+        let scene = Scene::new(&objects, Lighting::<0>::new(LightColor::WHITE));
+        let mut cache = vec![ScreenVertex::DEFAULT; p.len()];
+        let prepared = s.frame().prepare(&scene, &mut cache, Unlit).unwrap();
+        prepared
+            .vertices()
+            .iter()
+            .map(|v| v.point())
+            .collect::<Vec<_>>()
+    };
+    let (a, b) = (snap(&pts), snap(&mirrored));
+    let (cx, cy) = (s.w as i32 * 8, s.h as i32 * 8);
+    for (p, q) in a.iter().zip(&b) {
+        assert_eq!((p.x - cx, p.y - cy), (cx - q.x, cy - q.y));
+    }
+}

@@ -129,3 +129,92 @@ fn t37_non_finite_floats() {
     }
     let _ = Angle::from_degrees_f32(f32::MAX).sin();
 }
+
+/// Constructors given nonsense return an error, never a broken matrix.
+#[test]
+fn constructors_refuse_nonsense() {
+    use fixed3d::camera::{CameraError, LookAt};
+    use fixed3d::projection::{Projection, ProjectionError, Viewport};
+    let s = |v: f64| Scalar::from_num(v);
+    let fov = Angle::from_degrees(60);
+    assert_eq!(
+        Projection::perspective(fov, s(1.0), s(0.0), s(10.0)),
+        Err(ProjectionError::NearTooSmall)
+    );
+    assert_eq!(
+        Projection::perspective(fov, s(1.0), s(-1.0), s(10.0)),
+        Err(ProjectionError::NearTooSmall)
+    );
+    assert_eq!(
+        Projection::perspective(fov, s(1.0), s(0.0001), s(10.0)),
+        Err(ProjectionError::NearTooSmall)
+    );
+    assert_eq!(
+        Projection::perspective(fov, s(1.0), s(2.0), s(2.0)),
+        Err(ProjectionError::FarNotBeyondNear)
+    );
+    assert_eq!(
+        Projection::perspective(fov, s(1.0), s(2.0), s(1.0)),
+        Err(ProjectionError::FarNotBeyondNear)
+    );
+    assert_eq!(
+        Projection::perspective(fov, s(1.0), s(30000.0), Scalar::from_bits(30000 << 16 | 1)),
+        Err(ProjectionError::FarNotBeyondNear)
+    );
+    for bad in [
+        Angle::ZERO,
+        Angle::HALF_TURN,
+        Angle::from_degrees(200),
+        Angle::from_bits(1),
+    ] {
+        assert_eq!(
+            Projection::perspective(bad, s(1.0), s(1.0), s(10.0)),
+            Err(ProjectionError::FieldOfView),
+            "{bad:?}"
+        );
+    }
+    assert_eq!(
+        Projection::perspective(fov, s(0.0), s(1.0), s(10.0)),
+        Err(ProjectionError::Aspect)
+    );
+    assert_eq!(
+        Projection::perspective(fov, Scalar::from_bits(1), s(1.0), s(10.0)),
+        Err(ProjectionError::Aspect)
+    );
+    assert!(
+        Projection::perspective(Angle::from_degrees(179), s(1.0), s(0.001), s(10000.0)).is_ok()
+    );
+    assert_eq!(
+        Projection::orthographic(s(0.0), s(1.0), s(0.0), s(1.0)),
+        Err(ProjectionError::Aspect)
+    );
+    assert_eq!(
+        Projection::orthographic(s(2.0), s(1.0), s(1.0), s(1.0)),
+        Err(ProjectionError::FarNotBeyondNear)
+    );
+    assert!(Projection::orthographic(s(2.0), s(1.0), s(-5.0), s(5.0)).is_ok());
+    assert_eq!(Viewport::new(2049, 10), Err(ProjectionError::ViewportSize));
+    let up = Vec3::Y;
+    assert_eq!(
+        LookAt::new(Vec3::from_int(1, 2, 3), Vec3::from_int(1, 2, 3), up).view(),
+        Err(CameraError::EyeAtTarget)
+    );
+    assert_eq!(
+        LookAt::new(Vec3::from_int(0, 5, 0), Vec3::ZERO, up).view(),
+        Err(CameraError::UpParallelToView)
+    );
+    assert_eq!(
+        LookAt::new(Vec3::from_int(0, 0, 5), Vec3::ZERO, Vec3::ZERO).view(),
+        Err(CameraError::UpParallelToView)
+    );
+    // Extreme but valid: eye and target at opposite corners of the range.
+    let v = LookAt::new(
+        Vec3::from_int(32767, 32767, 32767),
+        Vec3::from_int(-32768, -32768, -32768),
+        up,
+    )
+    .view()
+    .unwrap();
+    let (o, d) = orthonormality(&v);
+    assert!(o < 1e-4 && d < 1e-4);
+}

@@ -1,0 +1,198 @@
+//! Targets: direct filling of any DrawTarget with one call per span, presenting a framebuffer in
+//! one `fill_contiguous`, and ordered dithering on one-bit displays.
+
+mod common;
+
+use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, Rgb888, RgbColor};
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+use fixed3d::camera::LookAt;
+use fixed3d::math::{Angle, Scalar, Vec3};
+use fixed3d::mesh::{uv_sphere, Object, Transform, CUBE};
+use fixed3d::pipeline::{Frame, ScreenVertex};
+use fixed3d::projection::{Projection, Viewport};
+use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
+use fixed3d::shade::{Flat, Gouraud};
+use fixed3d::target::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
+
+/// Records how a target was called.
+#[derive(Default)]
+struct Calls {
+    draw_iter: u32,
+    fill_solid: u32,
+    fill_contiguous: u32,
+    pixels: u32,
+}
+
+struct Recorder(Calls);
+
+impl OriginDimensions for Recorder {
+    fn size(&self) -> Size {
+        Size::new(96, 64)
+    }
+}
+
+impl DrawTarget for Recorder {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        p: I,
+    ) -> Result<(), Self::Error> {
+        self.0.draw_iter += 1;
+        self.0.pixels += p.into_iter().count() as u32;
+        Ok(())
+    }
+    fn fill_solid(&mut self, area: &Rectangle, _: Rgb565) -> Result<(), Self::Error> {
+        self.0.fill_solid += 1;
+        self.0.pixels += area.size.width * area.size.height;
+        Ok(())
+    }
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        area: &Rectangle,
+        c: I,
+    ) -> Result<(), Self::Error> {
+        self.0.fill_contiguous += 1;
+        assert_eq!(
+            c.into_iter().count() as u32,
+            area.size.width * area.size.height
+        );
+        self.0.pixels += area.size.width * area.size.height;
+        Ok(())
+    }
+}
+
+fn frame(w: u32, h: u32) -> Frame {
+    let viewport = Viewport::new(w, h).unwrap();
+    let view = LookAt::new(Vec3::from_int(3, 2, 4), Vec3::ZERO, Vec3::Y)
+        .view()
+        .unwrap();
+    let p = Projection::perspective(
+        Angle::from_degrees(50),
+        viewport.aspect(),
+        Scalar::from_num(1),
+        Scalar::from_num(20),
+    )
+    .unwrap();
+    Frame::new(&view, &p, viewport)
+}
+
+fn lighting() -> Lighting<1> {
+    let mut l = Lighting::new(LightColor::gray(Scalar::from_num(0.1)));
+    l.push(DirectionalLight::new(
+        Vec3::from_int(-1, 1, 1),
+        LightColor::gray(Scalar::from_num(0.9)),
+    ))
+    .unwrap();
+    l
+}
+
+/// Depth-less flat filling sends each span as one `fill_solid`, never pixel by pixel.
+#[test]
+fn direct_flat_fill_is_one_fill_solid_per_span() {
+    let objects = [Object::new(
+        &CUBE,
+        Transform::new().matrix(),
+        Rgb888::new(200, 100, 50),
+    )];
+    let scene = Scene::new(&objects, lighting());
+    let mut cache = [ScreenVertex::DEFAULT; 8];
+    let prepared = frame(96, 64).prepare(&scene, &mut cache, Flat).unwrap();
+    let mut rec = Recorder(Calls::default());
+    let stats = prepared.draw(&mut Direct::new(&mut rec)).unwrap();
+    let c = rec.0;
+    assert_eq!((c.draw_iter, c.fill_contiguous), (0, 0));
+    assert!(c.fill_solid > 20);
+    assert_eq!(c.pixels, stats.written);
+    // Gouraud without depth: one fill_contiguous per span.
+    let mut rec = Recorder(Calls::default());
+    let mut cache = [ScreenVertex::DEFAULT; 8];
+    frame(96, 64)
+        .prepare(&scene, &mut cache, Gouraud)
+        .unwrap()
+        .draw(&mut Direct::new(&mut rec))
+        .unwrap();
+    // The cube has no normals: Gouraud falls back to flat spans.
+    assert!(rec.0.fill_solid > 20 && rec.0.draw_iter == 0);
+}
+
+/// A framebuffer presents itself in a single `fill_contiguous` (and a band at its offset).
+#[test]
+fn present_is_one_fill_contiguous() {
+    let mut px = [Rgb565::RED; 96 * 16];
+    let fb = FrameBuffer::new(&mut px, 96, 16).unwrap();
+    let mut rec = Recorder(Calls::default());
+    fb.present_at(&mut rec, Point::new(0, 48)).unwrap();
+    assert_eq!(
+        (rec.0.fill_contiguous, rec.0.draw_iter, rec.0.pixels),
+        (1, 0, 96 * 16)
+    );
+}
+
+/// Ordered dithering on a one-bit display: the share of lit pixels follows the Lambert
+/// intensity, so shading stays visible (without dithering, a threshold turns it into two flat
+/// regions).
+#[test]
+fn dithered_gouraud_on_one_bit_display() {
+    let (mut p, mut n, mut t) = (
+        vec![Vec3::ZERO; 1000],
+        vec![Vec3::ZERO; 1000],
+        vec![[0u16; 3]; 2000],
+    );
+    let sphere = uv_sphere(Scalar::from_num(1.6), 32, 16, &mut p, &mut n, &mut t).unwrap();
+    let objects = [Object::new(
+        &sphere,
+        Transform::new().matrix(),
+        Rgb888::WHITE,
+    )];
+    let scene = Scene::new(&objects, lighting());
+    let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
+    let prepared = frame(128, 64).prepare(&scene, &mut cache, Gouraud).unwrap();
+    let render = |dither: bool| {
+        let (mut c, mut d) = (vec![BinaryColor::Off; 128 * 64], vec![0u16; 128 * 64]);
+        let mut color = FrameBuffer::new(&mut c, 128, 64).unwrap();
+        let mut depth = DepthBuffer::new(&mut d, 128, 64).unwrap();
+        depth.clear();
+        let t = ColorDepth::new(&mut color, &mut depth).unwrap();
+        if dither {
+            prepared.draw(&mut t.dithered()).unwrap();
+        } else {
+            prepared.draw(&mut { t }).unwrap();
+        }
+        c
+    };
+    let (plain, dithered) = (render(false), render(true));
+    // Lit share per 8x8 block inside the disc: the dithered image has intermediate densities.
+    let share = |img: &[BinaryColor], bx: usize, by: usize| {
+        (0..8)
+            .flat_map(|y| (0..8).map(move |x| (x, y)))
+            .filter(|&(x, y)| img[(by * 8 + y) * 128 + bx * 8 + x].is_on())
+            .count()
+    };
+    let blocks: Vec<(usize, usize)> = (0..16)
+        .flat_map(|bx| (0..8).map(move |by| (bx, by)))
+        .collect();
+    let intermediate = |img: &[BinaryColor]| {
+        blocks
+            .iter()
+            .filter(|&&(bx, by)| (8..=56).contains(&share(img, bx, by)))
+            .count()
+    };
+    assert!(
+        intermediate(&dithered) > intermediate(&plain) + 5,
+        "{} vs {}",
+        intermediate(&dithered),
+        intermediate(&plain)
+    );
+    // The lit side (towards the light, upper left) is denser than the dark side.
+    let lit: usize = (0..64)
+        .flat_map(|y| (0..64).map(move |x| (x, y)))
+        .filter(|&(x, y)| dithered[y * 128 + x].is_on())
+        .count();
+    let dark: usize = (0..64)
+        .flat_map(|y| (64..128).map(move |x| (x, y)))
+        .filter(|&(x, y)| dithered[y * 128 + x].is_on())
+        .count();
+    assert!(lit > dark, "{lit} vs {dark}");
+}
