@@ -333,7 +333,7 @@ fn t10_culling_by_snapped_winding() {
     let cw = [ccw[0], ccw[2], ccw[1]];
     let (front, stats) = s.hits(&[ccw], Cull::Back);
     assert_eq!((stats.drawn, stats.culled), (1, 0));
-    assert!(front.hits.iter().any(|&h| h == 1));
+    assert!(front.hits.contains(&1));
     let (back, stats) = s.hits(&[cw], Cull::Back);
     assert_eq!((stats.drawn, stats.culled), (0, 1));
     assert!(back.hits.iter().all(|&h| h == 0));

@@ -167,6 +167,52 @@ pub const fn uv_sphere_counts(segments: u16, rings: u16) -> (usize, usize) {
     (2 + s * r.saturating_sub(1), 2 * s * r.saturating_sub(1))
 }
 
+/// The caller's storage for a generated shape, cut to the shape's size.
+struct Storage<'a> {
+    positions: &'a mut [Vec3],
+    normals: &'a mut [Vec3],
+    triangles: &'a mut [Triangle],
+    too_small: ShapeError,
+}
+
+impl<'a> Storage<'a> {
+    fn new(
+        (vertices, tris): (usize, usize),
+        positions: &'a mut [Vec3],
+        normals: &'a mut [Vec3],
+        triangles: &'a mut [Triangle],
+    ) -> Result<Self, ShapeError> {
+        if vertices > 65_536 {
+            return Err(ShapeError::TooManyVertices);
+        }
+        let too_small = ShapeError::StorageTooSmall {
+            vertices,
+            triangles: tris,
+        };
+        match (
+            positions.get_mut(..vertices),
+            normals.get_mut(..vertices),
+            triangles.get_mut(..tris),
+        ) {
+            (Some(positions), Some(normals), Some(triangles)) => Ok(Storage {
+                positions,
+                normals,
+                triangles,
+                too_small,
+            }),
+            _ => Err(too_small),
+        }
+    }
+
+    /// The mesh over the filled storage (its indices are checked once more).
+    fn into_mesh(self) -> Result<Mesh<'a>, ShapeError> {
+        let too_small = self.too_small;
+        Mesh::new(self.positions, self.triangles)
+            .and_then(|m| m.with_normals(self.normals))
+            .map_err(|_| too_small)
+    }
+}
+
 /// `a · b` for Q16.16 `a` and Q2.30 `b`, Q16.16.
 fn mul_unit(a: i64, b: i32) -> i64 {
     shr_round(a * b as i64, 30)
@@ -202,21 +248,12 @@ pub fn torus<'a>(
     if ring < 3 || tube < 3 {
         return Err(ShapeError::Resolution);
     }
-    let (nv, nt) = torus_counts(ring, tube);
-    if nv > 65_536 {
-        return Err(ShapeError::TooManyVertices);
-    }
-    let too_small = ShapeError::StorageTooSmall {
-        vertices: nv,
-        triangles: nt,
-    };
-    let (Some(pos), Some(nor), Some(tri)) = (
-        positions.get_mut(..nv),
-        normals.get_mut(..nv),
-        triangles.get_mut(..nt),
-    ) else {
-        return Err(too_small);
-    };
+    let store = Storage::new(torus_counts(ring, tube), positions, normals, triangles)?;
+    let (pos, nor, tri) = (
+        &mut *store.positions,
+        &mut *store.normals,
+        &mut *store.triangles,
+    );
     let (big, small) = (major.to_bits() as i64, minor.to_bits() as i64);
     let tube_n = tube as usize;
     for (k, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
@@ -242,8 +279,7 @@ pub fn torus<'a>(
             *b = [p00, p11, p10];
         }
     }
-    let mesh = Mesh::new(pos, tri).map_err(|_| too_small)?;
-    mesh.with_normals(nor).map_err(|_| too_small)
+    store.into_mesh()
 }
 
 /// A UV sphere of `radius` around the origin, poles on the Y axis, with unit normals,
@@ -268,21 +304,18 @@ pub fn uv_sphere<'a>(
     if segments < 3 || rings < 2 {
         return Err(ShapeError::Resolution);
     }
-    let (nv, nt) = uv_sphere_counts(segments, rings);
-    if nv > 65_536 {
-        return Err(ShapeError::TooManyVertices);
-    }
-    let too_small = ShapeError::StorageTooSmall {
-        vertices: nv,
-        triangles: nt,
-    };
-    let (Some(pos), Some(nor), Some(tri)) = (
-        positions.get_mut(..nv),
-        normals.get_mut(..nv),
-        triangles.get_mut(..nt),
-    ) else {
-        return Err(too_small);
-    };
+    let (nv, _) = uv_sphere_counts(segments, rings);
+    let store = Storage::new(
+        uv_sphere_counts(segments, rings),
+        positions,
+        normals,
+        triangles,
+    )?;
+    let (pos, nor, tri) = (
+        &mut *store.positions,
+        &mut *store.normals,
+        &mut *store.triangles,
+    );
     let r = radius.to_bits() as i64;
     let seg = segments as usize;
     let south = nv - 1;
@@ -334,8 +367,7 @@ pub fn uv_sphere<'a>(
     for s in 0..seg {
         put([ring_vertex(last, s), south as u16, ring_vertex(last, s + 1)]);
     }
-    let mesh = Mesh::new(pos, tri).map_err(|_| too_small)?;
-    mesh.with_normals(nor).map_err(|_| too_small)
+    store.into_mesh()
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@ use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
 use super::vertex::{project, ScreenMap};
 use super::{bump, Cull, Prepared, ScreenVertex, Stats};
 use crate::math::Mat4;
-use crate::mesh::Object;
+use crate::mesh::{Object, Triangle};
 use crate::raster::{line_pixels, triangle_spans, PixelRect, Plane, ScreenPoint};
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
 use crate::target::{DepthSpan, RasterTarget};
@@ -79,7 +79,6 @@ fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
 
 fn fill<T: RasterTarget, P: Paint>(
     target: &mut T,
-    clip: PixelRect,
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
@@ -92,7 +91,7 @@ fn fill<T: RasterTarget, P: Paint>(
     } else {
         Plane::default()
     };
-    for span in triangle_spans(p, clip) {
+    for span in triangle_spans(p, target.clip()) {
         let depth = if T::DEPTH {
             DepthSpan {
                 start: plane.at(span.x0, span.y),
@@ -132,10 +131,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let mut stats = Stats::default();
         let clip = target.clip();
         let map = ScreenMap::new(&self.frame.viewport);
-        let lighting = &self.scene.lighting;
         for setup in self.objects() {
-            // Gouraud needs per-vertex normals; without them the object is shaded flat.
-            let smooth = !S::PER_VERTEX || setup.object.mesh.normals().is_some();
             for tri in setup.object.mesh.triangles() {
                 bump(&mut stats.primitives);
                 let (Some(a), Some(b), Some(c)) = (
@@ -150,41 +146,24 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     bump(&mut stats.outside);
                     continue;
                 }
-                let model = || tri.map(|i| setup.model(i));
-                let face = |screen: [ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64| FaceInputs {
-                    base: setup.object.color,
-                    model: model(),
-                    normal_matrix: &setup.normal_matrix,
-                    vertex_rgb: rgb,
-                    screen,
-                    area2,
-                };
                 if a.outcode | b.outcode | c.outcode == 0 {
                     let p = [a.point(), b.point(), c.point()];
-                    if !rows_overlap(&p, &clip) {
-                        continue;
-                    }
-                    let area = area2(&p);
-                    if area == 0 {
-                        bump(&mut stats.degenerate);
-                        continue;
-                    }
-                    if !facing_kept(self.frame.cull, area) {
-                        bump(&mut stats.culled);
-                        continue;
-                    }
-                    let rgb = [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8));
-                    let f = face(p, rgb, area);
-                    if smooth {
-                        let paint = self.shading.paint(&f, lighting);
-                        fill(target, clip, p, [a.z, b.z, c.z], area, &paint, &mut stats)?;
-                    } else {
-                        let paint = Flat.paint(&f, lighting);
-                        fill(target, clip, p, [a.z, b.z, c.z], area, &paint, &mut stats)?;
+                    if rows_overlap(&p, &clip) {
+                        let rgb = [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8));
+                        self.fill_face(
+                            target,
+                            &setup,
+                            tri,
+                            [
+                                (p[0], a.z, rgb[0]),
+                                (p[1], b.z, rgb[1]),
+                                (p[2], c.z, rgb[2]),
+                            ],
+                            &mut stats,
+                        )?;
                     }
                     continue;
                 }
-                // Clipping path.
                 bump(&mut stats.clipped);
                 let planes = a.outcode | b.outcode | c.outcode;
                 let poly = clip_polygon(tri.map(|i| setup.clip_vertex(i)), planes, &map);
@@ -192,36 +171,63 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     bump(&mut stats.degenerate);
                     continue;
                 };
+                // A convex polygon: a fan from its first vertex.
                 let Some((first, rest)) = projected.split_first() else {
                     continue;
                 };
                 for pair in rest.windows(2) {
-                    let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) else {
-                        continue;
-                    };
-                    let p = [first.0, v1.0, v2.0];
-                    let area = area2(&p);
-                    if area == 0 {
-                        bump(&mut stats.degenerate);
-                        continue;
-                    }
-                    if !facing_kept(self.frame.cull, area) {
-                        bump(&mut stats.culled);
-                        continue;
-                    }
-                    let f = face(p, [first.2, v1.2, v2.2], area);
-                    let z = [first.1, v1.1, v2.1];
-                    if smooth {
-                        let paint = self.shading.paint(&f, lighting);
-                        fill(target, clip, p, z, area, &paint, &mut stats)?;
-                    } else {
-                        let paint = Flat.paint(&f, lighting);
-                        fill(target, clip, p, z, area, &paint, &mut stats)?;
+                    if let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) {
+                        self.fill_face(target, &setup, tri, [*first, *v1, *v2], &mut stats)?;
                     }
                 }
             }
         }
         Ok(stats)
+    }
+
+    /// Culls, shades and fills one screen triangle of `tri` (the whole triangle, or a piece of
+    /// it after clipping): vertices are (snapped position, depth, colour).
+    fn fill_face<T: RasterTarget>(
+        &self,
+        target: &mut T,
+        setup: &ObjectSetup<'_>,
+        tri: &Triangle,
+        v: [(ScreenPoint, i32, [i32; 3]); 3],
+        stats: &mut Stats,
+    ) -> Result<(), T::Error> {
+        let p = v.map(|v| v.0);
+        let area = area2(&p);
+        if area == 0 {
+            bump(&mut stats.degenerate);
+            return Ok(());
+        }
+        if !facing_kept(self.frame.cull, area) {
+            bump(&mut stats.culled);
+            return Ok(());
+        }
+        let face = FaceInputs {
+            base: setup.object.color,
+            model: tri.map(|i| setup.model(i)),
+            normal_matrix: &setup.normal_matrix,
+            vertex_rgb: v.map(|v| v.2),
+            screen: p,
+            area2: area,
+        };
+        let z = v.map(|v| v.1);
+        let lighting = &self.scene.lighting;
+        // Gouraud needs per-vertex normals; without them the object is shaded flat.
+        if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
+            fill(
+                target,
+                p,
+                z,
+                area,
+                &self.shading.paint(&face, lighting),
+                stats,
+            )
+        } else {
+            fill(target, p, z, area, &Flat.paint(&face, lighting), stats)
+        }
     }
 
     /// Draws edges into any `DrawTarget`, in each object's colour, with no depth test: for a
@@ -234,17 +240,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         D::Color: From<Rgb888>,
     {
         let mut stats = Stats::default();
-        let b = target.bounding_box();
-        let clip = PixelRect::new(
-            b.top_left.x,
-            b.top_left.y,
-            b.top_left
-                .x
-                .saturating_add(b.size.width.min(i32::MAX as u32) as i32),
-            b.top_left
-                .y
-                .saturating_add(b.size.height.min(i32::MAX as u32) as i32),
-        );
+        let clip = PixelRect::from_rectangle(&target.bounding_box());
         let map = ScreenMap::new(&self.frame.viewport);
         for setup in self.objects() {
             let color = D::Color::from(setup.object.color);

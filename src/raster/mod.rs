@@ -29,6 +29,8 @@ pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::Plane;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
+use embedded_graphics::primitives::Rectangle;
+
 use crate::math::SUBPIXEL_SCALE;
 
 /// The largest magnitude of a sub-pixel coordinate the rasterisers accept (2²⁴, a million
@@ -106,6 +108,15 @@ impl PixelRect {
             height as i32
         };
         PixelRect::new(0, 0, w, h)
+    }
+
+    /// The pixels of an embedded-graphics rectangle (saturated at the ends of the i32 range).
+    #[must_use]
+    pub fn from_rectangle(r: &Rectangle) -> Self {
+        let (x, y) = (r.top_left.x, r.top_left.y);
+        let w = r.size.width.min(i32::MAX as u32) as i32;
+        let h = r.size.height.min(i32::MAX as u32) as i32;
+        PixelRect::new(x, y, x.saturating_add(w), y.saturating_add(h))
     }
 
     /// True when the rectangle holds no pixel.

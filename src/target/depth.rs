@@ -1,6 +1,6 @@
 //! Depth buffers: per-pixel depth in a caller-supplied `&mut [u16]` or `&mut [u32]`.
 
-use super::framebuffer::{area, BufferError};
+use super::grid::{BufferError, Grid};
 
 mod sealed {
     pub trait Sealed {}
@@ -61,61 +61,47 @@ pub enum DepthTest {
 /// ```
 #[derive(Debug)]
 pub struct DepthBuffer<'a, D> {
-    values: &'a mut [D],
-    width: u32,
-    height: u32,
+    grid: Grid<'a, D>,
 }
 
 impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
     /// Wraps `values` (at least `width · height` long; only that prefix is used).
     pub fn new(values: &'a mut [D], width: u32, height: u32) -> Result<Self, BufferError> {
-        let n = area(width, height, values.len())?;
-        let (used, _) = values.split_at_mut(n);
         Ok(DepthBuffer {
-            values: used,
-            width,
-            height,
+            grid: Grid::new(values, width, height)?,
         })
     }
 
     /// Sets every value to the far plane.
     pub fn clear(&mut self) {
-        self.values.fill(D::FAR);
+        self.grid.fill(D::FAR);
     }
 
     /// Width in pixels.
     #[must_use]
     pub fn width(&self) -> u32 {
-        self.width
+        self.grid.width()
     }
 
     /// Height in pixels.
     #[must_use]
     pub fn height(&self) -> u32 {
-        self.height
+        self.grid.height()
     }
 
     /// The values, row-major.
     #[must_use]
     pub fn values(&self) -> &[D] {
-        self.values
+        self.grid.cells()
     }
 
     /// The depth at `(x, y)`, `None` outside.
     #[must_use]
     pub fn get(&self, x: i32, y: i32) -> Option<D> {
-        let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
-        if x >= self.width || y >= self.height {
-            return None;
-        }
-        self.values
-            .get(y as usize * self.width as usize + x as usize)
-            .copied()
+        self.grid.get(x, y)
     }
 
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [D]> {
-        let w = self.width as usize;
-        let start = usize::try_from(y).ok()?.checked_mul(w)?;
-        self.values.get_mut(start..start.checked_add(w)?)
+        self.grid.row_mut(y)
     }
 }

@@ -1,57 +1,12 @@
 //! A colour buffer over a caller-supplied slice.
 
-use core::fmt;
-
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{Dimensions, OriginDimensions, Point, Size};
 use embedded_graphics::pixelcolor::PixelColor;
 use embedded_graphics::primitives::{PointsIter, Rectangle};
 use embedded_graphics::Pixel;
 
-/// Why a buffer could not be wrapped.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[non_exhaustive]
-pub enum BufferError {
-    /// The slice holds fewer than `width · height` elements.
-    TooShort {
-        /// Elements needed.
-        needed: usize,
-        /// Elements given.
-        len: usize,
-    },
-    /// `width · height` overflows, or a dimension exceeds `i32::MAX`.
-    TooLarge,
-    /// A colour buffer and a depth buffer paired for one target differ in size.
-    SizeMismatch,
-}
-
-impl fmt::Display for BufferError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            BufferError::TooShort { needed, len } => {
-                write!(f, "buffer holds {len} elements, {needed} needed")
-            }
-            BufferError::TooLarge => f.write_str("buffer dimensions too large"),
-            BufferError::SizeMismatch => f.write_str("colour and depth buffers differ in size"),
-        }
-    }
-}
-
-impl core::error::Error for BufferError {}
-
-/// `width · height` as usize, checked.
-pub(crate) fn area(width: u32, height: u32, len: usize) -> Result<usize, BufferError> {
-    if width > i32::MAX as u32 || height > i32::MAX as u32 {
-        return Err(BufferError::TooLarge);
-    }
-    let needed = (width as usize)
-        .checked_mul(height as usize)
-        .ok_or(BufferError::TooLarge)?;
-    if len < needed {
-        return Err(BufferError::TooShort { needed, len });
-    }
-    Ok(needed)
-}
+use super::grid::{BufferError, Grid};
 
 /// A `width × height` image in a caller-supplied slice, row-major, top row first.
 ///
@@ -70,65 +25,49 @@ pub(crate) fn area(width: u32, height: u32, len: usize) -> Result<usize, BufferE
 /// ```
 #[derive(Debug)]
 pub struct FrameBuffer<'a, C> {
-    pixels: &'a mut [C],
-    width: u32,
-    height: u32,
+    grid: Grid<'a, C>,
 }
 
 impl<'a, C: PixelColor> FrameBuffer<'a, C> {
     /// Wraps `pixels` (at least `width · height` long; only that prefix is used).
     pub fn new(pixels: &'a mut [C], width: u32, height: u32) -> Result<Self, BufferError> {
-        let n = area(width, height, pixels.len())?;
-        let (used, _) = pixels.split_at_mut(n);
         Ok(FrameBuffer {
-            pixels: used,
-            width,
-            height,
+            grid: Grid::new(pixels, width, height)?,
         })
     }
 
     /// Width in pixels.
     #[must_use]
     pub fn width(&self) -> u32 {
-        self.width
+        self.grid.width()
     }
 
     /// Height in pixels.
     #[must_use]
     pub fn height(&self) -> u32 {
-        self.height
+        self.grid.height()
     }
 
     /// The pixels, row-major.
     #[must_use]
     pub fn pixels(&self) -> &[C] {
-        self.pixels
+        self.grid.cells()
     }
 
     /// The pixel at `(x, y)`, `None` outside.
     #[must_use]
     pub fn pixel(&self, x: i32, y: i32) -> Option<C> {
-        self.index(x, y).and_then(|i| self.pixels.get(i)).copied()
+        self.grid.get(x, y)
     }
 
     /// Sets every pixel to `color`.
     pub fn fill(&mut self, color: C) {
-        self.pixels.fill(color);
+        self.grid.fill(color);
     }
 
     /// Row `y` as a mutable slice.
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [C]> {
-        let w = self.width as usize;
-        let start = usize::try_from(y).ok()?.checked_mul(w)?;
-        self.pixels.get_mut(start..start.checked_add(w)?)
-    }
-
-    fn index(&self, x: i32, y: i32) -> Option<usize> {
-        let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
-        if x >= self.width || y >= self.height {
-            return None;
-        }
-        Some(y as usize * self.width as usize + x as usize)
+        self.grid.row_mut(y)
     }
 
     /// Sends the whole image to `display` with its top-left corner at the origin.
@@ -144,13 +83,13 @@ impl<'a, C: PixelColor> FrameBuffer<'a, C> {
         top_left: Point,
     ) -> Result<(), D::Error> {
         let area = Rectangle::new(top_left, self.size());
-        display.fill_contiguous(&area, self.pixels.iter().copied())
+        display.fill_contiguous(&area, self.pixels().iter().copied())
     }
 }
 
 impl<C: PixelColor> OriginDimensions for FrameBuffer<'_, C> {
     fn size(&self) -> Size {
-        Size::new(self.width, self.height)
+        Size::new(self.width(), self.height())
     }
 }
 
@@ -163,7 +102,7 @@ impl<C: PixelColor> DrawTarget for FrameBuffer<'_, C> {
         I: IntoIterator<Item = Pixel<C>>,
     {
         for Pixel(p, c) in pixels {
-            if let Some(slot) = self.index(p.x, p.y).and_then(|i| self.pixels.get_mut(i)) {
+            if let Some(slot) = self.grid.get_mut(p.x, p.y) {
                 *slot = c;
             }
         }

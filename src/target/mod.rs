@@ -13,9 +13,11 @@
 mod depth;
 mod dither;
 mod framebuffer;
+mod grid;
 mod surface;
 
 pub use depth::{DepthBuffer, DepthFormat, DepthTest};
 pub use dither::{Nearest, OrderedDither, Quantize};
-pub use framebuffer::{BufferError, FrameBuffer};
+pub use framebuffer::FrameBuffer;
+pub use grid::BufferError;
 pub use surface::{ColorDepth, DepthSpan, Direct, RasterTarget};

@@ -7,7 +7,8 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::depth::{DepthBuffer, DepthFormat, DepthTest};
 use super::dither::{Nearest, OrderedDither, Quantize};
-use super::framebuffer::{BufferError, FrameBuffer};
+use super::framebuffer::FrameBuffer;
+use super::grid::BufferError;
 use crate::pipeline::Stats;
 use crate::raster::{PixelRect, Span};
 use crate::shade::Paint;

@@ -1,0 +1,101 @@
+//! The storage under both buffers: a `width × height` grid over a caller-supplied slice.
+
+use core::fmt;
+
+/// Why a buffer could not be wrapped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum BufferError {
+    /// The slice holds fewer than `width · height` elements.
+    TooShort {
+        /// Elements needed.
+        needed: usize,
+        /// Elements given.
+        len: usize,
+    },
+    /// `width · height` overflows, or a dimension exceeds `i32::MAX`.
+    TooLarge,
+    /// A colour buffer and a depth buffer paired for one target differ in size.
+    SizeMismatch,
+}
+
+impl fmt::Display for BufferError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BufferError::TooShort { needed, len } => {
+                write!(f, "buffer holds {len} elements, {needed} needed")
+            }
+            BufferError::TooLarge => f.write_str("buffer dimensions too large"),
+            BufferError::SizeMismatch => f.write_str("colour and depth buffers differ in size"),
+        }
+    }
+}
+
+impl core::error::Error for BufferError {}
+
+/// Row-major cells, top row first; every access is checked.
+#[derive(Debug)]
+pub(crate) struct Grid<'a, T> {
+    cells: &'a mut [T],
+    width: u32,
+    height: u32,
+}
+
+impl<'a, T: Copy> Grid<'a, T> {
+    /// Wraps the first `width · height` cells of `cells`.
+    pub(crate) fn new(cells: &'a mut [T], width: u32, height: u32) -> Result<Self, BufferError> {
+        if width > i32::MAX as u32 || height > i32::MAX as u32 {
+            return Err(BufferError::TooLarge);
+        }
+        let needed = (width as usize)
+            .checked_mul(height as usize)
+            .ok_or(BufferError::TooLarge)?;
+        let len = cells.len();
+        let cells = cells
+            .get_mut(..needed)
+            .ok_or(BufferError::TooShort { needed, len })?;
+        Ok(Grid {
+            cells,
+            width,
+            height,
+        })
+    }
+
+    pub(crate) fn width(&self) -> u32 {
+        self.width
+    }
+
+    pub(crate) fn height(&self) -> u32 {
+        self.height
+    }
+
+    pub(crate) fn cells(&self) -> &[T] {
+        self.cells
+    }
+
+    pub(crate) fn fill(&mut self, value: T) {
+        self.cells.fill(value);
+    }
+
+    fn index(&self, x: i32, y: i32) -> Option<usize> {
+        let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        Some(y as usize * self.width as usize + x as usize)
+    }
+
+    pub(crate) fn get(&self, x: i32, y: i32) -> Option<T> {
+        self.index(x, y).and_then(|i| self.cells.get(i)).copied()
+    }
+
+    pub(crate) fn get_mut(&mut self, x: i32, y: i32) -> Option<&mut T> {
+        self.index(x, y).and_then(|i| self.cells.get_mut(i))
+    }
+
+    pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [T]> {
+        let w = self.width as usize;
+        let start = usize::try_from(y).ok()?.checked_mul(w)?;
+        self.cells.get_mut(start..start.checked_add(w)?)
+    }
+}
