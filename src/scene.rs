@@ -180,6 +180,8 @@ impl<'a, const N: usize> Scene<'a, N> {
     /// Vertices of all objects: the size of the vertex cache a frame needs.
     #[must_use]
     pub fn vertex_count(&self) -> usize {
-        self.objects.iter().map(|o| o.mesh.positions().len()).sum()
+        self.objects
+            .iter()
+            .fold(0usize, |n, o| n.saturating_add(o.mesh.positions().len()))
     }
 }
