@@ -18,6 +18,7 @@ extern crate std;
 pub mod camera;
 pub mod math;
 pub mod mesh;
+pub mod obj;
 pub mod pipeline;
 pub mod projection;
 pub mod raster;

@@ -88,6 +88,14 @@ pub struct Mesh<'a> {
 }
 
 impl<'a> Mesh<'a> {
+    /// A mesh with nothing in it.
+    pub const EMPTY: Mesh<'static> = Mesh {
+        positions: &[],
+        triangles: &[],
+        normals: None,
+        edges: None,
+    };
+
     /// A mesh of `positions` and `triangles`; every index must be below `positions.len()`.
     pub const fn new(positions: &'a [Vec3], triangles: &'a [Triangle]) -> Result<Self, MeshError> {
         let n = positions.len();
