@@ -8,6 +8,7 @@
 use core::fmt;
 
 use crate::math::{normalize, shr_round, Angle, Mat4, Scalar, Vec3, UNIT_ONE};
+use crate::projection::Projection;
 
 /// Why a camera could not build its view matrix.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -237,4 +238,91 @@ fn view_from_axes(axes: [[i32; 3]; 3], eye: Vec3) -> Mat4 {
     };
     let [x, y, z] = axes;
     Mat4::from_bits([row(x), row(y), row(z), [0, 0, 0, 1 << 16]])
+}
+
+/// A camera placement that shows a whole box: where to put a look-at camera and which near and
+/// far planes to use (for viewers that open on a model of unknown size).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Framing {
+    /// Looks at the box's centre.
+    pub look_at: LookAt,
+    /// A near plane just in front of the box.
+    pub near: Scalar,
+    /// A far plane just behind it.
+    pub far: Scalar,
+}
+
+impl Framing {
+    /// Frames the box `min..max` seen from `direction` (from the box's centre towards the eye,
+    /// any non-zero length): the eye is far enough back that the box's bounding sphere fits in
+    /// both the vertical field of view and the horizontal one (from `aspect`, width / height),
+    /// with a 5% margin.
+    ///
+    /// ```
+    /// use fixed3d::camera::Framing;
+    /// use fixed3d::math::{Angle, Scalar, Vec3};
+    /// let f = Framing::of_box(Vec3::from_int(-1, -1, -1), Vec3::from_int(1, 1, 1), Vec3::Z, Angle::from_degrees(90), Scalar::ONE).unwrap();
+    /// // The sphere of radius √3 fits a 45-degree half-angle at distance √3 / sin 45° = √6 (plus 5%).
+    /// let d = f.look_at.eye.z.to_num::<f64>();
+    /// assert!((d - 6f64.sqrt() * 1.05).abs() < 1e-3);
+    /// assert!(f.near < Scalar::from_num(d - 3f64.sqrt()) && f.far > Scalar::from_num(d + 3f64.sqrt()));
+    /// ```
+    pub fn of_box(
+        min: Vec3,
+        max: Vec3,
+        direction: Vec3,
+        fov_y: Angle,
+        aspect: Scalar,
+    ) -> Result<Framing, CameraError> {
+        let dir = normalize(direction.to_bits().map(i64::from)).ok_or(CameraError::EyeAtTarget)?;
+        let (lo, hi) = (min.to_bits().map(i64::from), max.to_bits().map(i64::from));
+        let centre = [0, 1, 2]
+            .map(|k| (lo.get(k).copied().unwrap_or(0) + hi.get(k).copied().unwrap_or(0)) / 2);
+        let half = [0, 1, 2]
+            .map(|k| (hi.get(k).copied().unwrap_or(0) - lo.get(k).copied().unwrap_or(0)).abs() / 2);
+        let radius = crate::math::isqrt_u64(
+            half.iter()
+                .map(|h| (h * h) as u64)
+                .fold(0u64, u64::saturating_add),
+        ) as i64;
+        let radius = radius.max(1 << 6);
+        // Sine of the smaller half-angle of the view (Q2.30).
+        let h = Angle::from_bits(fov_y.to_bits() / 2);
+        let (s, c) = (h.sin_bits() as i64, h.cos_bits() as i64);
+        let sin_min = if aspect >= Scalar::ONE {
+            s
+        } else {
+            // tan_x = aspect · tan(h); sin_x = tan_x / sqrt(1 + tan_x²), all Q2.30.
+            let tan_x = (aspect.to_bits() as i64 * crate::math::div_round(s << 30, c.max(1))) >> 16;
+            let len = crate::math::isqrt_u64(((1i64 << 60) + tan_x * tan_x) as u64) as i64;
+            crate::math::div_round(tan_x << 30, len.max(1))
+        }
+        .max(1 << 10);
+        // distance = 1.05 · radius / sin
+        let dist = crate::math::div_round((radius * 1075 / 1024).saturating_mul(1 << 30), sin_min)
+            .min(1 << 32);
+        let sat = |v: i64| v.clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+        let eye = [0, 1, 2].map(|k| {
+            sat(centre.get(k).copied().unwrap_or(0)
+                + ((dist * dir.get(k).copied().unwrap_or(0) as i64) >> 30))
+        });
+        let up = if dir[1].abs() > (UNIT_ONE / 16) * 15 {
+            Vec3::from_int(0, 0, -1)
+        } else {
+            Vec3::Y
+        };
+        let near = (dist - radius * 9 / 8)
+            .max(Projection::MIN_NEAR.to_bits() as i64)
+            .max(dist / 1000);
+        let far = (dist + radius * 9 / 8).max(near + 1);
+        Ok(Framing {
+            look_at: LookAt::new(
+                Vec3::from_bits(eye[0], eye[1], eye[2]),
+                Vec3::from_bits(sat(centre[0]), sat(centre[1]), sat(centre[2])),
+                up,
+            ),
+            near: Scalar::from_bits(sat(near)),
+            far: Scalar::from_bits(sat(far)),
+        })
+    }
 }

@@ -593,3 +593,50 @@ fn check_bounded(bytes: &[u8], cap: usize) {
         }
     }
 }
+
+/// Framing: every vertex of each model, placed by its bounding box, projects inside the
+/// viewport and between the near and far planes.
+#[test]
+fn framing_shows_the_whole_model() {
+    use embedded_graphics::pixelcolor::Rgb888;
+    use fixed3d::camera::Framing;
+    use fixed3d::math::{Angle, Mat4};
+    use fixed3d::mesh::{Mesh, Object};
+    use fixed3d::pipeline::{Frame, ScreenVertex};
+    use fixed3d::projection::{Projection, Viewport};
+    use fixed3d::scene::{LightColor, Lighting, Scene};
+    use fixed3d::shade::Unlit;
+    for name in ["teapot.obj", "suzanne.obj", "spot.obj", "beetle.obj"] {
+        let r = parse_with(&model(name), 8000).unwrap();
+        for (w, h) in [(320, 240), (128, 128), (100, 300)] {
+            let viewport = Viewport::new(w, h).unwrap();
+            let b = r.counts.bounds;
+            let f = Framing::of_box(
+                b.min,
+                b.max,
+                Vec3::from_int(1, 1, 2),
+                Angle::from_degrees(60),
+                viewport.aspect(),
+            )
+            .unwrap();
+            let proj =
+                Projection::perspective(Angle::from_degrees(60), viewport.aspect(), f.near, f.far)
+                    .unwrap();
+            let mesh = Mesh::new(&r.positions, &r.triangles).unwrap();
+            let objects = [Object::new(&mesh, Mat4::IDENTITY, Rgb888::new(1, 1, 1))];
+            let scene = Scene::new(&objects, Lighting::<0>::new(LightColor::WHITE));
+            let mut cache = vec![ScreenVertex::DEFAULT; r.positions.len()];
+            let prepared = Frame::new(&f.look_at.view().unwrap(), &proj, viewport)
+                .prepare(&scene, &mut cache, Unlit)
+                .unwrap();
+            for v in prepared.vertices() {
+                assert!(v.is_inside(), "{name}");
+                let p = v.point();
+                assert!(
+                    p.x >= 0 && p.y >= 0 && p.x < w as i32 * 16 && p.y < h as i32 * 16,
+                    "{name} {w}x{h}: {p:?}"
+                );
+            }
+        }
+    }
+}

@@ -6,6 +6,7 @@
 //! at compile time) and the pipeline reads indices with checked access all the same.
 //! An [`Object`] places a mesh in the world with a model matrix and gives it a colour.
 
+mod normals;
 mod shapes;
 
 use core::fmt;
@@ -14,6 +15,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 
 use crate::math::{Angle, Mat4, Vec3};
 
+pub use normals::vertex_normals;
 pub use shapes::{
     torus, torus_counts, uv_sphere, uv_sphere_counts, ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON,
 };

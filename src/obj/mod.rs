@@ -211,7 +211,8 @@ impl Placement {
     /// let fit = Placement::fit(&b, Scalar::ONE);
     /// let (mut p, mut t) = ([Vec3::ZERO; 3], [[0u16; 3]; 1]);
     /// let counts = parse(file, &mut ObjBuffers::new(&mut p, &mut t), fit).unwrap();
-    /// assert_eq!(p[0], Vec3::from_int(-1, 0, 0));
+    /// // Centred on the box (x 100000..300000, y 0..50000), the longest half-extent becomes 1.
+    /// assert_eq!(p[0], Vec3::new(-Scalar::ONE, Scalar::from_num(-0.25), Scalar::ZERO));
     /// assert_eq!(counts.bounds.max.x, Scalar::ONE);
     /// ```
     #[must_use]
@@ -887,5 +888,51 @@ impl<const V: usize, const T: usize> StaticObj<V, T> {
                 Err(_) => Mesh::EMPTY,
             },
         }
+    }
+}
+
+/// Per-vertex normals from an OBJ file's corner normals (`f v//vn`): each position gets the
+/// average direction of the normals its corners name (each normalised first; zero normals and
+/// corners without one are ignored), unit length. Positions no corner gives a normal get zero
+/// (ambient light only); fill those with [`vertex_normals`](crate::mesh::vertex_normals) if
+/// needed. `out` needs one entry per position.
+///
+/// ```
+/// use fixed3d::math::Vec3;
+/// use fixed3d::obj::{corner_normals_to_vertices, parse, ObjBuffers, Placement};
+/// let file = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1\n";
+/// let (mut p, mut n, mut t, mut tn) = ([Vec3::ZERO; 3], [Vec3::ZERO; 1], [[0u16; 3]; 1], [[0u16; 3]; 1]);
+/// let mut b = ObjBuffers::new(&mut p, &mut t);
+/// b.normals = &mut n;
+/// b.triangle_normals = &mut tn;
+/// parse(file, &mut b, Placement::AsIs).unwrap();
+/// let mut per_vertex = [Vec3::ZERO; 3];
+/// corner_normals_to_vertices(&t, &tn, &n, &mut per_vertex);
+/// assert_eq!(per_vertex, [Vec3::Z; 3]);
+/// ```
+pub fn corner_normals_to_vertices(
+    triangles: &[Triangle],
+    triangle_normals: &[Triangle],
+    normals: &[Vec3],
+    out: &mut [Vec3],
+) {
+    out.fill(Vec3::ZERO);
+    for (t, tn) in triangles.iter().zip(triangle_normals) {
+        for (&v, &n) in t.iter().zip(tn) {
+            let (Some(o), Some(dir)) = (out.get_mut(v as usize), normals.get(n as usize)) else {
+                continue;
+            };
+            let Some(u) = dir.normalized() else { continue };
+            let (a, b) = (o.to_bits(), u.to_bits());
+            let s = |k: usize| {
+                let x =
+                    a.get(k).copied().unwrap_or(0) as i64 + b.get(k).copied().unwrap_or(0) as i64;
+                x.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+            };
+            *o = Vec3::from_bits(s(0), s(1), s(2));
+        }
+    }
+    for o in out.iter_mut() {
+        *o = o.normalized().unwrap_or(Vec3::ZERO);
     }
 }
