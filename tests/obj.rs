@@ -640,3 +640,126 @@ fn framing_shows_the_whole_model() {
         }
     }
 }
+
+/// Parses through an ObjStream in chunks of the given sizes (cycled).
+fn parse_stream<const N: usize>(
+    text: &[u8],
+    chunks: &[usize],
+    cap: usize,
+) -> Result<Parsed, ObjError> {
+    use fixed3d::obj::ObjStream;
+    let mut positions = vec![Vec3::ZERO; cap];
+    let mut normals = vec![Vec3::ZERO; cap];
+    let mut texcoords = vec![[Scalar::ZERO; 2]; cap];
+    let mut triangles = vec![[0u16; 3]; cap];
+    let mut tri_normals = vec![[0u16; 3]; cap];
+    let mut tri_texcoords = vec![[0u16; 3]; cap];
+    let mut b = ObjBuffers {
+        positions: &mut positions,
+        texcoords: &mut texcoords,
+        normals: &mut normals,
+        triangles: &mut triangles,
+        triangle_texcoords: &mut tri_texcoords,
+        triangle_normals: &mut tri_normals,
+    };
+    let mut stream = ObjStream::<N>::new(Placement::AsIs);
+    let mut rest = text;
+    let mut k = 0;
+    while !rest.is_empty() {
+        let n = chunks[k % chunks.len()].clamp(1, rest.len());
+        let (head, tail) = rest.split_at(n);
+        stream.push(head, &mut b)?;
+        rest = tail;
+        k += 1;
+    }
+    let counts = stream.finish(&mut b)?;
+    positions.truncate(counts.positions);
+    normals.truncate(counts.normals);
+    texcoords.truncate(counts.texcoords);
+    triangles.truncate(counts.triangles);
+    tri_normals.truncate(counts.triangles);
+    tri_texcoords.truncate(counts.triangles);
+    Ok(Parsed {
+        counts,
+        positions,
+        normals,
+        texcoords,
+        triangles,
+        tri_normals,
+        tri_texcoords,
+    })
+}
+
+fn same_result(a: &Result<Parsed, ObjError>, b: &Result<Parsed, ObjError>) -> bool {
+    match (a, b) {
+        (Ok(x), Ok(y)) => {
+            x.counts == y.counts
+                && x.positions == y.positions
+                && x.normals == y.normals
+                && x.texcoords == y.texcoords
+                && x.triangles == y.triangles
+                && x.tri_normals == y.tri_normals
+                && x.tri_texcoords == y.tri_texcoords
+        }
+        (Err(x), Err(y)) => x == y,
+        _ => false,
+    }
+}
+
+#[test]
+fn stream_in_blocks_equals_whole_file() {
+    for name in ["teapot.obj", "suzanne.obj", "spot.obj", "beetle.obj"] {
+        let bytes = model(name);
+        let whole = parse_with(&bytes, 8000);
+        for chunks in [&[512usize][..], &[1], &[7, 1, 300, 2]] {
+            assert!(
+                same_result(&whole, &parse_stream::<128>(&bytes, chunks, 8000)),
+                "{name} {chunks:?}"
+            );
+        }
+    }
+    // Line ends split across chunks, a BOM split too, errors with the same line numbers.
+    for text in [
+        "\u{feff}v 1 2 3\r\nv 4 5 6\rv 7 8 9\r\n\r\nf 1 2 3",
+        "v 1 2 3\r\nv 4 5\r\nv 7 8 9\n",
+        "v 1 2 3\n\n\nf 1 1 1\nf 1 2 3\n",
+    ] {
+        let whole = p(text);
+        for chunks in [&[1usize][..], &[2], &[3, 1]] {
+            assert!(
+                same_result(&whole, &parse_stream::<64>(text.as_bytes(), chunks, 64)),
+                "{text:?}"
+            );
+        }
+    }
+}
+
+/// O24 for the streaming parser: a line longer than its buffer is an error naming the line.
+#[test]
+fn o24_stream_line_too_long() {
+    let text = format!("v 1 2 3\nv 1 2 3{}\nv 0 0 0\n", " ".repeat(200));
+    let e = parse_stream::<32>(text.as_bytes(), &[16], 8).unwrap_err();
+    assert_eq!(
+        (e.line, e.column, e.kind),
+        (2, 33, ObjErrorKind::LineTooLong)
+    );
+    let e = parse_stream::<32>(&text.as_bytes()[..100], &[1000], 8).unwrap_err();
+    assert_eq!((e.line, e.kind), (2, ObjErrorKind::LineTooLong));
+    assert!(parse_stream::<256>(text.as_bytes(), &[16], 8).is_ok());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Any text, any chunking: the stream gives exactly what the whole-file parser gives (as
+    /// long as every line fits its buffer).
+    #[test]
+    fn stream_equals_parse_for_any_chunking(tokens in prop::collection::vec(prop::sample::select(vec![
+        "v", "vt", "vn", "f", "o", " ", "\n", "\r", "\r\n", "#", "/", "//", "-", ".", "0", "1", "2", "3", "-1", "\u{feff}",
+    ]), 0..150), chunks in prop::collection::vec(1usize..20, 1..6), cap in 0usize..10) {
+        let text: String = tokens.concat();
+        let whole = parse_with(text.as_bytes(), cap);
+        let streamed = parse_stream::<1024>(text.as_bytes(), &chunks, cap);
+        prop_assert!(same_result(&whole, &streamed), "{:?}\n{:?}\n{:?}", text, whole, streamed);
+    }
+}

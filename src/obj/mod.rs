@@ -13,17 +13,25 @@
 //! is involved, so `inf`, `nan` and out-of-range values are errors, never wrapped coordinates.
 //! Memory is the caller's storage and nothing else; time is linear in the file's size.
 //!
-//! The parser is a `const fn`: [`StaticObj`] parses a model from `include_bytes!` at compile
-//! time into arrays that live in flash, so a firmware pays nothing at run time.
+//! Three ways in, one grammar:
+//! - [`parse`] reads a whole file from a byte slice;
+//! - [`ObjStream`] takes the file in pieces of any size (blocks from an SD card, packets from a
+//!   UART) and holds only one line of a size you choose;
+//! - [`StaticObj`] parses a model from `include_bytes!` at compile time (the parser is a
+//!   `const fn`) into arrays that live in flash, so a firmware pays nothing at run time.
 
 mod number;
+mod statement;
+mod static_obj;
+mod stream;
 
 use core::fmt;
 
-use number::{parse_index, parse_q16, parse_wide, NumberError};
-
 use crate::math::{Scalar, Vec3};
-use crate::mesh::{Mesh, Triangle};
+use crate::mesh::Triangle;
+
+pub use static_obj::StaticObj;
+pub use stream::ObjStream;
 
 /// What was wrong with a file, where.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -78,6 +86,25 @@ pub enum ObjErrorKind {
     TooManyVertices,
     /// A NUL byte or invalid UTF-8.
     Encoding,
+    /// A line longer than an [`ObjStream`]'s line buffer.
+    LineTooLong,
+}
+
+impl ObjCounts {
+    /// Nothing read yet.
+    pub const EMPTY: ObjCounts = ObjCounts {
+        positions: 0,
+        texcoords: 0,
+        normals: 0,
+        triangles: 0,
+        faces: 0,
+        skipped: 0,
+        lines: 0,
+        bounds: Aabb {
+            min: Vec3::ZERO,
+            max: Vec3::ZERO,
+        },
+    };
 }
 
 impl fmt::Display for ObjError {
@@ -98,6 +125,7 @@ impl fmt::Display for ObjError {
             ObjErrorKind::CapacityExceeded(s) => write!(f, "no room for more {s:?}"),
             ObjErrorKind::TooManyVertices => f.write_str("more than 65536 vertices"),
             ObjErrorKind::Encoding => f.write_str("NUL byte or invalid UTF-8"),
+            ObjErrorKind::LineTooLong => f.write_str("line longer than the line buffer"),
         }
     }
 }
@@ -265,327 +293,6 @@ impl Placement {
     }
 }
 
-/// Byte range `[a, b)` of `s` (const-friendly slicing; `a ≤ b ≤ s.len()`).
-const fn sub(s: &[u8], a: usize, b: usize) -> &[u8] {
-    let (head, _) = s.split_at(b);
-    let (_, tail) = head.split_at(a);
-    tail
-}
-
-const fn same(a: &[u8], b: &[u8]) -> bool {
-    if a.len() != b.len() {
-        return false;
-    }
-    let mut i = 0;
-    while i < a.len() {
-        if a[i] != b[i] {
-            return false;
-        }
-        i += 1;
-    }
-    true
-}
-
-const fn is_space(b: u8) -> bool {
-    b == b' ' || b == b'\t' || b == 0x0b || b == 0x0c
-}
-
-/// The next token of `line` from `pos`: `(start, end)`, or `None` at the end.
-const fn next_token(line: &[u8], pos: usize) -> Option<(usize, usize)> {
-    let mut i = pos;
-    while i < line.len() && is_space(line[i]) {
-        i += 1;
-    }
-    if i >= line.len() {
-        return None;
-    }
-    let start = i;
-    while i < line.len() && !is_space(line[i]) {
-        i += 1;
-    }
-    Some((start, i))
-}
-
-/// Where parsing starts: after a UTF-8 byte-order mark, if there is one.
-const fn skip_bom(bytes: &[u8]) -> usize {
-    if bytes.len() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF {
-        3
-    } else {
-        0
-    }
-}
-
-/// The line starting at `i`: its end (exclusive, without the line break) and where the next
-/// line starts. LF, CRLF and a lone CR each end a line.
-const fn next_line(bytes: &[u8], i: usize) -> (usize, usize) {
-    let len = bytes.len();
-    let mut end = i;
-    while end < len && bytes[end] != b'\n' && bytes[end] != b'\r' {
-        end += 1;
-    }
-    let next = if end + 1 < len && bytes[end] == b'\r' && bytes[end + 1] == b'\n' {
-        end + 2
-    } else if end < len {
-        end + 1
-    } else {
-        end
-    };
-    (end, next)
-}
-
-const fn err(line: u32, column: usize, kind: ObjErrorKind) -> ObjError {
-    ObjError {
-        line,
-        column: if column >= u32::MAX as usize {
-            u32::MAX
-        } else {
-            column as u32 + 1
-        },
-        kind,
-    }
-}
-
-const fn number_error(e: NumberError) -> ObjErrorKind {
-    match e {
-        NumberError::Invalid => ObjErrorKind::NumberInvalid,
-        NumberError::NotFinite => ObjErrorKind::NumberNotFinite,
-        NumberError::OutOfRange => ObjErrorKind::NumberOutOfRange,
-    }
-}
-
-/// Up to `N` tokens after the keyword: their byte ranges and how many there were (more than
-/// `N` is reported as `N + 1`).
-const fn tokens<const N: usize>(line: &[u8], from: usize) -> ([(usize, usize); N], usize) {
-    let mut out = [(0usize, 0usize); N];
-    let mut n = 0;
-    let mut pos = from;
-    while let Some((a, b)) = next_token(line, pos) {
-        if n == N {
-            return (out, N + 1);
-        }
-        out[n] = (a, b);
-        n += 1;
-        pos = b;
-    }
-    (out, n)
-}
-
-/// Parses the coordinate tokens `t[0..n]` as wide (Q32.16) or Q16.16 values.
-const fn coords<const N: usize>(
-    line: &[u8],
-    t: &[(usize, usize); N],
-    n: usize,
-    wide: bool,
-    line_no: u32,
-) -> Result<[i64; N], ObjError> {
-    let mut out = [0i64; N];
-    let mut k = 0;
-    while k < n && k < N {
-        let (a, b) = t[k];
-        let tok = sub(line, a, b);
-        let v = if wide {
-            parse_wide(tok)
-        } else {
-            match parse_q16(tok) {
-                Ok(v) => Ok(v as i64),
-                Err(e) => Err(e),
-            }
-        };
-        match v {
-            Ok(v) => out[k] = v,
-            Err(e) => return Err(err(line_no, a, number_error(e))),
-        }
-        k += 1;
-    }
-    Ok(out)
-}
-
-/// One corner of a face: resolved 0-based indices (`NO_INDEX` when absent).
-#[derive(Clone, Copy)]
-struct Corner {
-    v: u16,
-    t: u16,
-    n: u16,
-}
-
-/// Resolves a 1-based or negative OBJ index against the `count` elements read so far.
-const fn resolve(tok: &[u8], count: usize, line_no: u32, column: usize) -> Result<u16, ObjError> {
-    let idx = match parse_index(tok) {
-        Ok(i) => i,
-        Err(e) => return Err(err(line_no, column, number_error(e))),
-    };
-    if idx == 0 {
-        return Err(err(line_no, column, ObjErrorKind::IndexZero));
-    }
-    let resolved = if idx > 0 { idx - 1 } else { count as i64 + idx };
-    if resolved < 0 || resolved >= count as i64 {
-        return Err(err(line_no, column, ObjErrorKind::IndexOutOfRange));
-    }
-    Ok(resolved as u16)
-}
-
-/// Parses `v`, `v/t`, `v/t/n` or `v//n` (a trailing `/` leaves its field empty, i.e. absent).
-const fn corner(
-    line: &[u8],
-    a: usize,
-    b: usize,
-    c: &ObjCounts,
-    line_no: u32,
-) -> Result<Corner, ObjError> {
-    let tok = sub(line, a, b);
-    let mut fields = [(0usize, 0usize); 3];
-    let mut nf = 0;
-    let mut start = 0;
-    let mut i = 0;
-    while i <= tok.len() {
-        if i == tok.len() || tok[i] == b'/' {
-            if nf == 3 {
-                return Err(err(line_no, a + i, ObjErrorKind::ExtraField));
-            }
-            fields[nf] = (start, i);
-            nf += 1;
-            start = i + 1;
-        }
-        i += 1;
-    }
-    let (v0, v1) = fields[0];
-    if v0 == v1 {
-        return Err(err(line_no, a, ObjErrorKind::NumberInvalid));
-    }
-    let v = match resolve(sub(tok, v0, v1), c.positions, line_no, a + v0) {
-        Ok(v) => v,
-        Err(e) => return Err(e),
-    };
-    let mut t = NO_INDEX;
-    if nf > 1 && fields[1].0 != fields[1].1 {
-        t = match resolve(
-            sub(tok, fields[1].0, fields[1].1),
-            c.texcoords,
-            line_no,
-            a + fields[1].0,
-        ) {
-            Ok(t) => t,
-            Err(e) => return Err(e),
-        };
-    }
-    let mut n = NO_INDEX;
-    if nf > 2 && fields[2].0 != fields[2].1 {
-        n = match resolve(
-            sub(tok, fields[2].0, fields[2].1),
-            c.normals,
-            line_no,
-            a + fields[2].0,
-        ) {
-            Ok(n) => n,
-            Err(e) => return Err(e),
-        };
-    }
-    Ok(Corner { v, t, n })
-}
-
-const fn place(
-    v: [i64; 3],
-    placement: &Placement,
-    line_no: u32,
-    column: usize,
-) -> Result<Vec3, ObjError> {
-    let mut out = [0i32; 3];
-    let mut k = 0;
-    while k < 3 {
-        let raw = match placement {
-            Placement::AsIs => v[k],
-            Placement::Transformed {
-                centre,
-                scale,
-                shift,
-            } => {
-                // (p − centre) · scale / 2^shift, rounded to nearest: below 2⁴⁸ · 2⁶³.
-                let d = (v[k] - centre[k]) as i128 * *scale as i128;
-                let half = if *shift == 0 {
-                    0
-                } else {
-                    1i128 << (*shift - 1)
-                };
-                let r = if d >= 0 {
-                    (d + half) >> *shift
-                } else {
-                    -((-d + half) >> *shift)
-                };
-                if r > i64::MAX as i128 || r < i64::MIN as i128 {
-                    return Err(err(line_no, column, ObjErrorKind::NumberOutOfRange));
-                }
-                r as i64
-            }
-        };
-        if raw > i32::MAX as i64 || raw < i32::MIN as i64 {
-            return Err(err(line_no, column, ObjErrorKind::NumberOutOfRange));
-        }
-        out[k] = raw as i32;
-        k += 1;
-    }
-    Ok(Vec3::from_bits(out[0], out[1], out[2]))
-}
-
-const fn grow(b: &mut Aabb, p: Vec3, first: bool) {
-    if first {
-        b.min = p;
-        b.max = p;
-        return;
-    }
-    let (pb, mut lo, mut hi) = (p.to_bits(), b.min.to_bits(), b.max.to_bits());
-    let mut k = 0;
-    while k < 3 {
-        if pb[k] < lo[k] {
-            lo[k] = pb[k];
-        }
-        if pb[k] > hi[k] {
-            hi[k] = pb[k];
-        }
-        k += 1;
-    }
-    b.min = Vec3::from_bits(lo[0], lo[1], lo[2]);
-    b.max = Vec3::from_bits(hi[0], hi[1], hi[2]);
-}
-
-/// `v x y z [w | r g b]` → the (wide or narrow) coordinates divided by w.
-const fn vertex(
-    line: &[u8],
-    from: usize,
-    wide: bool,
-    line_no: u32,
-) -> Result<([i64; 3], usize), ObjError> {
-    let (t, n) = tokens::<7>(line, from);
-    if n < 3 {
-        return Err(err(line_no, line.len(), ObjErrorKind::MissingField));
-    }
-    if n == 5 || n > 6 {
-        let at = if n > 6 { line.len() } else { t[4].0 };
-        return Err(err(line_no, at, ObjErrorKind::ExtraField));
-    }
-    let v = match coords::<7>(line, &t, n, wide, line_no) {
-        Ok(v) => v,
-        Err(e) => return Err(e),
-    };
-    let mut xyz = [v[0], v[1], v[2]];
-    if n == 4 {
-        let w = v[3];
-        if w == 0 {
-            return Err(err(line_no, t[3].0, ObjErrorKind::ScaleByZero));
-        }
-        let mut k = 0;
-        while k < 3 {
-            // (x / w) in the same fixed format, checked.
-            let q = ((xyz[k] as i128) << 16) / w as i128;
-            if q > i64::MAX as i128 / 2 || q < i64::MIN as i128 / 2 {
-                return Err(err(line_no, t[3].0, ObjErrorKind::NumberOutOfRange));
-            }
-            xyz[k] = q as i64;
-            k += 1;
-        }
-    }
-    Ok((xyz, t[0].0))
-}
-
 /// Parses `bytes` into `out`: see the [module documentation](self). On error nothing is
 /// written past any slice's end; what was written before the error is left in place.
 ///
@@ -607,175 +314,16 @@ pub const fn parse(
     out: &mut ObjBuffers<'_>,
     placement: Placement,
 ) -> Result<ObjCounts, ObjError> {
-    let wide = !matches!(placement, Placement::AsIs);
-    let mut c = ObjCounts {
-        positions: 0,
-        texcoords: 0,
-        normals: 0,
-        triangles: 0,
-        faces: 0,
-        skipped: 0,
-        lines: 0,
-        bounds: Aabb {
-            min: Vec3::ZERO,
-            max: Vec3::ZERO,
-        },
-    };
-    let mut i = skip_bom(bytes);
+    let mut c = ObjCounts::EMPTY;
+    let mut i = statement::skip_bom(bytes);
     while i < bytes.len() {
-        let (end, next) = next_line(bytes, i);
-        let raw_line = sub(bytes, i, end);
+        let (end, next) = statement::next_line(bytes, i);
+        if let Err(e) =
+            statement::parse_line(statement::sub(bytes, i, end), &mut c, out, &placement)
+        {
+            return Err(e);
+        }
         i = next;
-        c.lines = c.lines.saturating_add(1);
-        let line_no = c.lines;
-        if core::str::from_utf8(raw_line).is_err() {
-            return Err(err(line_no, 0, ObjErrorKind::Encoding));
-        }
-        // Strip a comment; reject NUL.
-        let mut end = 0;
-        while end < raw_line.len() && raw_line[end] != b'#' {
-            if raw_line[end] == 0 {
-                return Err(err(line_no, end, ObjErrorKind::Encoding));
-            }
-            end += 1;
-        }
-        let mut k = end;
-        while k < raw_line.len() {
-            if raw_line[k] == 0 {
-                return Err(err(line_no, k, ObjErrorKind::Encoding));
-            }
-            k += 1;
-        }
-        let line = sub(raw_line, 0, end);
-        let Some((ka, kb)) = next_token(line, 0) else {
-            continue;
-        };
-        let key = sub(line, ka, kb);
-        if same(key, b"v") {
-            if c.positions >= 65_536 {
-                return Err(err(line_no, ka, ObjErrorKind::TooManyVertices));
-            }
-            let (xyz, col) = match vertex(line, kb, wide, line_no) {
-                Ok(v) => v,
-                Err(e) => return Err(e),
-            };
-            let p = match place(xyz, &placement, line_no, col) {
-                Ok(p) => p,
-                Err(e) => return Err(e),
-            };
-            if c.positions >= out.positions.len() {
-                return Err(err(
-                    line_no,
-                    ka,
-                    ObjErrorKind::CapacityExceeded(Storage::Positions),
-                ));
-            }
-            out.positions[c.positions] = p;
-            grow(&mut c.bounds, p, c.positions == 0);
-            c.positions += 1;
-        } else if same(key, b"vt") {
-            let (t, n) = tokens::<3>(line, kb);
-            if n == 0 {
-                return Err(err(line_no, line.len(), ObjErrorKind::MissingField));
-            }
-            if n > 3 {
-                return Err(err(line_no, line.len(), ObjErrorKind::ExtraField));
-            }
-            let v = match coords::<3>(line, &t, n, false, line_no) {
-                Ok(v) => v,
-                Err(e) => return Err(e),
-            };
-            if !out.texcoords.is_empty() {
-                if c.texcoords >= out.texcoords.len() {
-                    return Err(err(
-                        line_no,
-                        ka,
-                        ObjErrorKind::CapacityExceeded(Storage::TexCoords),
-                    ));
-                }
-                out.texcoords[c.texcoords] = [
-                    Scalar::from_bits(v[0] as i32),
-                    Scalar::from_bits(v[1] as i32),
-                ];
-            }
-            c.texcoords += 1;
-        } else if same(key, b"vn") {
-            let (t, n) = tokens::<3>(line, kb);
-            if n < 3 {
-                return Err(err(line_no, line.len(), ObjErrorKind::MissingField));
-            }
-            if n > 3 {
-                return Err(err(line_no, line.len(), ObjErrorKind::ExtraField));
-            }
-            let v = match coords::<3>(line, &t, n, false, line_no) {
-                Ok(v) => v,
-                Err(e) => return Err(e),
-            };
-            if !out.normals.is_empty() {
-                if c.normals >= out.normals.len() {
-                    return Err(err(
-                        line_no,
-                        ka,
-                        ObjErrorKind::CapacityExceeded(Storage::Normals),
-                    ));
-                }
-                out.normals[c.normals] = Vec3::from_bits(v[0] as i32, v[1] as i32, v[2] as i32);
-            }
-            c.normals += 1;
-        } else if same(key, b"f") {
-            let mut pos = kb;
-            let mut corners = 0usize;
-            let mut first = Corner { v: 0, t: 0, n: 0 };
-            let mut prev = first;
-            while let Some((a, b)) = next_token(line, pos) {
-                pos = b;
-                let cur = match corner(line, a, b, &c, line_no) {
-                    Ok(k) => k,
-                    Err(e) => return Err(e),
-                };
-                if corners == 0 {
-                    first = cur;
-                } else if corners >= 2 {
-                    if c.triangles >= out.triangles.len() {
-                        return Err(err(
-                            line_no,
-                            a,
-                            ObjErrorKind::CapacityExceeded(Storage::Triangles),
-                        ));
-                    }
-                    out.triangles[c.triangles] = [first.v, prev.v, cur.v];
-                    if !out.triangle_texcoords.is_empty() {
-                        if c.triangles >= out.triangle_texcoords.len() {
-                            return Err(err(
-                                line_no,
-                                a,
-                                ObjErrorKind::CapacityExceeded(Storage::Triangles),
-                            ));
-                        }
-                        out.triangle_texcoords[c.triangles] = [first.t, prev.t, cur.t];
-                    }
-                    if !out.triangle_normals.is_empty() {
-                        if c.triangles >= out.triangle_normals.len() {
-                            return Err(err(
-                                line_no,
-                                a,
-                                ObjErrorKind::CapacityExceeded(Storage::Triangles),
-                            ));
-                        }
-                        out.triangle_normals[c.triangles] = [first.n, prev.n, cur.n];
-                    }
-                    c.triangles += 1;
-                }
-                prev = cur;
-                corners += 1;
-            }
-            if corners < 3 {
-                return Err(err(line_no, line.len(), ObjErrorKind::FaceTooFewVertices));
-            }
-            c.faces += 1;
-        } else {
-            c.skipped += 1;
-        }
     }
     Ok(c)
 }
@@ -789,25 +337,25 @@ pub const fn bounds(bytes: &[u8]) -> Result<WideBounds, ObjError> {
         max: [0; 3],
     };
     let mut first = true;
-    let mut i = skip_bom(bytes);
+    let mut i = statement::skip_bom(bytes);
     let mut line_no = 0u32;
     while i < bytes.len() {
-        let (end, next) = next_line(bytes, i);
-        let raw_line = sub(bytes, i, end);
+        let (end, next) = statement::next_line(bytes, i);
+        let raw_line = statement::sub(bytes, i, end);
         i = next;
         line_no = line_no.saturating_add(1);
         let mut end = 0;
         while end < raw_line.len() && raw_line[end] != b'#' {
             end += 1;
         }
-        let line = sub(raw_line, 0, end);
-        let Some((ka, kb)) = next_token(line, 0) else {
+        let line = statement::sub(raw_line, 0, end);
+        let Some((ka, kb)) = statement::next_token(line, 0) else {
             continue;
         };
-        if !same(sub(line, ka, kb), b"v") {
+        if !statement::same(statement::sub(line, ka, kb), b"v") {
             continue;
         }
-        let (xyz, _) = match vertex(line, kb, true, line_no) {
+        let (xyz, _) = match statement::vertex(line, kb, true, line_no) {
             Ok(v) => v,
             Err(e) => return Err(e),
         };
@@ -824,71 +372,6 @@ pub const fn bounds(bytes: &[u8]) -> Result<WideBounds, ObjError> {
         first = false;
     }
     Ok(b)
-}
-
-/// A model parsed at compile time into arrays: `V` positions and `T` triangles at most.
-///
-/// ```
-/// use fixed3d::obj::StaticObj;
-/// static QUAD: StaticObj<4, 2> = match StaticObj::parse(b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4") {
-///     Ok(m) => m,
-///     Err(_) => panic!("bad model"), // a compile error, not a run-time panic
-/// };
-/// assert_eq!(QUAD.mesh().triangles().len(), 2);
-/// ```
-#[derive(Clone, Copy, Debug)]
-pub struct StaticObj<const V: usize, const T: usize> {
-    positions: [Vec3; V],
-    triangles: [Triangle; T],
-    counts: ObjCounts,
-}
-
-impl<const V: usize, const T: usize> StaticObj<V, T> {
-    /// Parses `bytes` (with [`Placement::AsIs`]); usable in a `static` initialiser.
-    pub const fn parse(bytes: &[u8]) -> Result<Self, ObjError> {
-        let mut positions = [Vec3::ZERO; V];
-        let mut triangles = [[0u16; 3]; T];
-        let counts = {
-            let mut buffers = ObjBuffers {
-                positions: &mut positions,
-                texcoords: &mut [],
-                normals: &mut [],
-                triangles: &mut triangles,
-                triangle_texcoords: &mut [],
-                triangle_normals: &mut [],
-            };
-            match parse(bytes, &mut buffers, Placement::AsIs) {
-                Ok(c) => c,
-                Err(e) => return Err(e),
-            }
-        };
-        Ok(StaticObj {
-            positions,
-            triangles,
-            counts,
-        })
-    }
-
-    /// What the parse read.
-    #[must_use]
-    pub const fn counts(&self) -> &ObjCounts {
-        &self.counts
-    }
-
-    /// The mesh over the parsed arrays (its indices were checked by the parser).
-    #[must_use]
-    pub const fn mesh(&self) -> Mesh<'_> {
-        let (p, _) = self.positions.split_at(self.counts.positions);
-        let (t, _) = self.triangles.split_at(self.counts.triangles);
-        match Mesh::new(p, t) {
-            Ok(m) => m,
-            // Unreachable: the parser resolved every index against the positions read.
-            Err(_) => match Mesh::new(p, &[]) {
-                Ok(m) => m,
-                Err(_) => Mesh::EMPTY,
-            },
-        }
-    }
 }
 
 /// Per-vertex normals from an OBJ file's corner normals (`f v//vn`): each position gets the
