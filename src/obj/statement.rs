@@ -438,7 +438,7 @@ pub(crate) const fn parse_line(
         let mut prev = first;
         while let Some((a, b)) = next_token(line, pos) {
             pos = b;
-            let cur = match corner(line, a, b, &c, line_no) {
+            let cur = match corner(line, a, b, c, line_no) {
                 Ok(k) => k,
                 Err(e) => return Err(e),
             };
