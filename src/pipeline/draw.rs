@@ -129,7 +129,6 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// drawn, or the target's first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
         let mut stats = Stats::default();
-        let clip = target.clip();
         let map = ScreenMap::new(&self.frame.viewport);
         for setup in self.objects() {
             for tri in setup.object.mesh.triangles() {
@@ -147,21 +146,13 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     continue;
                 }
                 if a.outcode | b.outcode | c.outcode == 0 {
-                    let p = [a.point(), b.point(), c.point()];
-                    if rows_overlap(&p, &clip) {
-                        let rgb = [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8));
-                        self.fill_face(
-                            target,
-                            &setup,
-                            tri,
-                            [
-                                (p[0], a.z, rgb[0]),
-                                (p[1], b.z, rgb[1]),
-                                (p[2], c.z, rgb[2]),
-                            ],
-                            &mut stats,
-                        )?;
-                    }
+                    let rgb = [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8));
+                    let v = [
+                        (a.point(), a.z, rgb[0]),
+                        (b.point(), b.z, rgb[1]),
+                        (c.point(), c.z, rgb[2]),
+                    ];
+                    self.fill_face(target, &setup, tri, v, &mut stats)?;
                     continue;
                 }
                 bump(&mut stats.clipped);
@@ -203,6 +194,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         }
         if !facing_kept(self.frame.cull, area) {
             bump(&mut stats.culled);
+            return Ok(());
+        }
+        // Culling comes first so that every band of a frame counts the same culled triangles.
+        if !rows_overlap(&p, &target.clip()) {
             return Ok(());
         }
         let face = FaceInputs {

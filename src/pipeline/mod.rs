@@ -43,7 +43,9 @@ pub enum Cull {
     None,
 }
 
-/// What one drawing call did. Counts saturate.
+/// What one drawing call did. Counts saturate. Drawing a frame band by band gives every band
+/// the same `primitives`, `invalid`, `outside`, `clipped`, `culled` and `degenerate` counts;
+/// `drawn`, `fragments` and `written` are that band's.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Stats {
     /// Triangles (or edges, for wireframes with an edge list) looked at.
