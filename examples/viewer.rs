@@ -1,0 +1,557 @@
+//! The viewer: fly a camera around lit models in the embedded-graphics simulator window.
+//!
+//! ```text
+//! cargo run --release --features window --example viewer -- [MODEL.obj ...]
+//! ```
+//!
+//! Opens on the given OBJ files (or a bundled teapot among a few shapes), framed by their
+//! bounding box, lit by an ambient colour and three coloured lights. Keys (also shown by H):
+//!
+//! | key | does |
+//! |---|---|
+//! | W / S | forward / back |
+//! | A / D | strafe left / right |
+//! | Q / E, Shift / Space | down / up |
+//! | arrow keys | turn (yaw and pitch) |
+//! | + / - | field of view |
+//! | M (or 1, 2, 3) | wireframe / flat / Gouraud |
+//! | Z | depth buffer on / off |
+//! | C | back-face culling on / off |
+//! | O | orthographic / perspective |
+//! | Tab | spinning on / off |
+//! | R | add an object: path, colour and position asked on the terminal |
+//! | Backspace | remove the last object |
+//! | P | save the frame as PNG |
+//! | H | key help on screen |
+//! | Escape | quit |
+//!
+//! Held keys move the camera smoothly by elapsed time (key repeats are ignored). The render
+//! time of each frame is shown on screen and printed to the terminal once per second.
+
+#[path = "common/desktop.rs"]
+mod desktop;
+
+use std::collections::HashSet;
+use std::io::BufRead;
+use std::sync::mpsc::{channel, Receiver};
+use std::time::{Duration, Instant};
+
+use desktop::{render, save_png, Mode, Model, Placed, View};
+use embedded_graphics::mono_font::{ascii::FONT_6X10, MonoTextStyle};
+use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
+use embedded_graphics::text::{Baseline, Text};
+use embedded_graphics_simulator::sdl2::Keycode;
+use embedded_graphics_simulator::{
+    OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent, Window,
+};
+use fixed3d::camera::FlyCamera;
+use fixed3d::math::{Angle, Scalar, Vec3};
+use fixed3d::mesh::Transform;
+use fixed3d::projection::Projection;
+use fixed3d::scene::LightColor;
+
+const WIDTH: u32 = 640;
+const HEIGHT: u32 = 480;
+const TITLE: &str = "fixed3d viewer";
+
+const HELP: &[&str] = &[
+    "W/S forward/back   A/D strafe   Q/E Shift/Space down/up",
+    "arrows turn        +/- field of view",
+    "M or 1/2/3 wire/flat/gouraud   Z depth   C culling",
+    "O ortho/perspective   Tab spin   P save PNG",
+    "R add object (terminal)   Backspace remove last",
+    "H help   Esc quit",
+];
+
+/// One object of the scene: a model scaled to a radius of one unit around its position.
+struct Item {
+    model: usize,
+    position: Vec3,
+    color: Rgb888,
+    spin: bool,
+}
+
+/// The terminal dialogue of R.
+enum Prompt {
+    Path,
+    Color(Model),
+    Position(Model, Rgb888),
+}
+
+impl Prompt {
+    fn question(&self) -> &'static str {
+        match self {
+            Prompt::Path => {
+                "OBJ file (or cube, tetrahedron, octahedron, sphere, torus; 'exit' cancels): "
+            }
+            Prompt::Color(_) => "colour r,g,b (0-255; 'exit' cancels): ",
+            Prompt::Position(..) => "position x,y,z ('exit' cancels): ",
+        }
+    }
+}
+
+struct App {
+    models: Vec<Model>,
+    items: Vec<Item>,
+    camera: FlyCamera,
+    radius: f32,
+    fov: f32,
+    mode: Mode,
+    depth: bool,
+    cull: bool,
+    ortho: bool,
+    spinning: bool,
+    spin: Angle,
+    help: bool,
+    held: HashSet<Keycode>,
+    prompt: Option<Prompt>,
+    message: String,
+    shots: u32,
+}
+
+fn parse_numbers(s: &str) -> Option<[f32; 3]> {
+    let v: Vec<f32> = s
+        .split(',')
+        .map(|p| p.trim().parse::<f32>().ok().filter(|x| x.is_finite()))
+        .collect::<Option<_>>()?;
+    <[f32; 3]>::try_from(v).ok()
+}
+
+impl App {
+    fn model_transform(&self, item: &Item) -> fixed3d::math::Mat4 {
+        let model = &self.models[item.model];
+        let b = model.bounds;
+        let half = (b.max - b.min).length().to_num::<f32>() / 2.0;
+        let scale = if half > 0.0 { 1.0 / half } else { 1.0 };
+        let centre = [
+            (b.min.x + b.max.x).to_num::<f32>() / 2.0,
+            (b.min.y + b.max.y).to_num::<f32>() / 2.0,
+            (b.min.z + b.max.z).to_num::<f32>() / 2.0,
+        ];
+        let s = Scalar::from_num(scale);
+        let spin = if item.spin { self.spin } else { Angle::ZERO };
+        let recentre = fixed3d::math::Mat4::translation(
+            Vec3::from_f32(-centre[0], -centre[1], -centre[2]).unwrap_or_default(),
+        );
+        Transform::new()
+            .translated(item.position)
+            .rotated_y(spin)
+            .scaled(Vec3::new(s, s, s))
+            .matrix()
+            * recentre
+    }
+
+    fn view(&self) -> Result<View, String> {
+        let aspect = Scalar::from_num(WIDTH as f32 / HEIGHT as f32);
+        let r = self.radius;
+        let projection = if self.ortho {
+            Projection::orthographic(
+                Scalar::from_num(r * 2.4),
+                aspect,
+                Scalar::from_num(-r * 20.0),
+                Scalar::from_num(r * 20.0),
+            )
+        } else {
+            Projection::perspective(
+                Angle::from_degrees_f32(self.fov),
+                aspect,
+                Scalar::from_num((r / 200.0).max(0.002)),
+                Scalar::from_num((r * 40.0).min(30000.0)),
+            )
+        }
+        .map_err(|e| e.to_string())?;
+        let third = Scalar::from_num(0.45);
+        Ok(View {
+            width: WIDTH,
+            height: HEIGHT,
+            mode: self.mode,
+            view: self.camera.view(),
+            projection,
+            ambient: Scalar::from_num(0.15),
+            lights: vec![
+                (
+                    Vec3::from_int(-1, 1, 1),
+                    LightColor::new(
+                        Scalar::from_num(0.75),
+                        Scalar::from_num(0.7),
+                        Scalar::from_num(0.6),
+                    ),
+                ),
+                (
+                    Vec3::from_int(1, 0, 1),
+                    LightColor::new(third, Scalar::from_num(0.15), Scalar::from_num(0.1)),
+                ),
+                (
+                    Vec3::from_int(0, -1, -1),
+                    LightColor::new(Scalar::from_num(0.1), Scalar::from_num(0.2), third),
+                ),
+            ],
+            background: Rgb888::new(12, 12, 20),
+            cull: self.cull,
+            depth: self.depth,
+            bands: 0,
+        })
+    }
+
+    /// Applies held keys for `dt` seconds.
+    fn fly(&mut self, dt: f32) {
+        let step = Scalar::from_num(self.radius * 0.9 * dt);
+        let turn = Angle::from_degrees_f32(70.0 * dt);
+        let held = |k: Keycode| self.held.contains(&k);
+        let (fwd, side, up) = (
+            held(Keycode::W) as i32 - held(Keycode::S) as i32,
+            held(Keycode::D) as i32 - held(Keycode::A) as i32,
+            (held(Keycode::E) || held(Keycode::Space)) as i32
+                - (held(Keycode::Q) || held(Keycode::LShift) || held(Keycode::RShift)) as i32,
+        );
+        let (yaw, pitch) = (
+            held(Keycode::Left) as i32 - held(Keycode::Right) as i32,
+            held(Keycode::Up) as i32 - held(Keycode::Down) as i32,
+        );
+        let times = |n: i32| Scalar::from_num(n) * step;
+        self.camera.move_forward(times(fwd));
+        self.camera.strafe_right(times(side));
+        self.camera.move_up(times(up));
+        let a = |n: i32| match n {
+            1 => turn,
+            -1 => -turn,
+            _ => Angle::ZERO,
+        };
+        self.camera.turn(a(yaw), a(pitch));
+        if held(Keycode::Plus) || held(Keycode::Equals) || held(Keycode::KpPlus) {
+            self.fov = (self.fov + 40.0 * dt).min(150.0);
+        }
+        if held(Keycode::Minus) || held(Keycode::KpMinus) {
+            self.fov = (self.fov - 40.0 * dt).max(10.0);
+        }
+    }
+
+    fn key(&mut self, key: Keycode, frame: &[Rgb888]) {
+        match key {
+            Keycode::M => self.mode = self.mode.next(),
+            Keycode::Num1 => self.mode = Mode::Wire,
+            Keycode::Num2 => self.mode = Mode::Flat,
+            Keycode::Num3 => self.mode = Mode::Gouraud,
+            Keycode::Z => self.depth = !self.depth,
+            Keycode::C => self.cull = !self.cull,
+            Keycode::O => self.ortho = !self.ortho,
+            Keycode::Tab => self.spinning = !self.spinning,
+            Keycode::H => self.help = !self.help,
+            Keycode::Backspace => {
+                self.message = match self.items.pop() {
+                    Some(_) => format!("removed the last object, {} left", self.items.len()),
+                    None => "no object to remove".into(),
+                };
+                println!("{}", self.message);
+            }
+            Keycode::P => {
+                self.shots += 1;
+                let path = format!("viewer-{:03}.png", self.shots);
+                self.message = match save_png(&path, WIDTH, HEIGHT, frame) {
+                    Ok(()) => format!("saved {path}"),
+                    Err(e) => format!("could not save: {e}"),
+                };
+                println!("{}", self.message);
+            }
+            Keycode::R if self.prompt.is_none() => {
+                let p = Prompt::Path;
+                print_prompt(&p);
+                self.message = "answer in the terminal".into();
+                self.prompt = Some(p);
+            }
+            _ => {}
+        }
+    }
+
+    /// One line typed on the terminal while a prompt is open.
+    fn answer(&mut self, line: &str) {
+        let Some(prompt) = self.prompt.take() else {
+            return;
+        };
+        let line = line.trim();
+        if line == "exit" {
+            println!("cancelled");
+            self.message = "adding cancelled".into();
+            return;
+        }
+        let next = match prompt {
+            Prompt::Path => match Model::shape(line)
+                .map(Ok)
+                .unwrap_or_else(|| Model::load_obj(line))
+            {
+                Ok(model) => Prompt::Color(model),
+                Err(e) => {
+                    println!("error: {e}");
+                    Prompt::Path
+                }
+            },
+            Prompt::Color(model) => match parse_numbers(line)
+                .filter(|c| c.iter().all(|v| (0.0..=255.0).contains(v)))
+            {
+                Some([r, g, b]) => Prompt::Position(model, Rgb888::new(r as u8, g as u8, b as u8)),
+                None => {
+                    println!(
+                        "error: give three numbers 0-255 separated by commas, like 255,160,64"
+                    );
+                    Prompt::Color(model)
+                }
+            },
+            Prompt::Position(model, color) => {
+                match parse_numbers(line).and_then(|[x, y, z]| Vec3::from_f32(x, y, z)) {
+                    Some(position) => {
+                        self.models.push(model);
+                        self.items.push(Item {
+                            model: self.models.len() - 1,
+                            position,
+                            color,
+                            spin: false,
+                        });
+                        self.message = format!("added object {}", self.items.len());
+                        println!("{}", self.message);
+                        return;
+                    }
+                    None => {
+                        println!("error: give three numbers separated by commas, like 0,1.5,-2");
+                        Prompt::Position(model, color)
+                    }
+                }
+            }
+        };
+        print_prompt(&next);
+        self.prompt = Some(next);
+    }
+}
+
+fn print_prompt(p: &Prompt) {
+    use std::io::Write;
+    print!("{}", p.question());
+    let _ = std::io::stdout().flush();
+}
+
+/// Lines from standard input, read on their own thread so the window keeps running.
+fn terminal_lines() -> Receiver<String> {
+    let (tx, rx) = channel();
+    std::thread::spawn(move || {
+        for line in std::io::stdin().lock().lines() {
+            let Ok(line) = line else { break };
+            if tx.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    rx
+}
+
+fn initial_scene(args: &[String]) -> Result<(Vec<Model>, Vec<Item>), String> {
+    let mut models = Vec::new();
+    let mut items = Vec::new();
+    if args.is_empty() {
+        let teapot = Model::from_obj_bytes("teapot", include_bytes!("../models/teapot.obj"))
+            .map_err(|e| e.to_string())?;
+        models.push(teapot);
+        items.push(Item {
+            model: 0,
+            position: Vec3::ZERO,
+            color: Rgb888::new(230, 200, 150),
+            spin: false,
+        });
+        for (name, pos, color) in [
+            (
+                "torus",
+                Vec3::from_f32(-2.4, 0.0, -0.6),
+                Rgb888::new(255, 160, 64),
+            ),
+            (
+                "sphere",
+                Vec3::from_f32(2.3, 0.1, -0.4),
+                Rgb888::new(120, 200, 255),
+            ),
+            (
+                "cube",
+                Vec3::from_f32(0.2, 0.0, -2.8),
+                Rgb888::new(160, 255, 140),
+            ),
+            (
+                "octahedron",
+                Vec3::from_f32(-0.6, 0.3, 2.4),
+                Rgb888::new(255, 120, 200),
+            ),
+        ] {
+            let Some(m) = Model::shape(name) else {
+                continue;
+            };
+            models.push(m);
+            items.push(Item {
+                model: models.len() - 1,
+                position: pos.unwrap_or_default(),
+                color,
+                spin: true,
+            });
+        }
+    } else {
+        for (k, path) in args.iter().enumerate() {
+            let m = Model::load_obj(path).map_err(|e| e.to_string())?;
+            if let Some(p) = &m.rescaled {
+                println!("{path}: outside the fixed-point range, rescaled (one step = {:.3e} file units)", p.resolution());
+            }
+            models.push(m);
+            let x = (k as f32 - (args.len() as f32 - 1.0) / 2.0) * 2.5;
+            items.push(Item {
+                model: k,
+                position: Vec3::from_f32(x, 0.0, 0.0).unwrap_or_default(),
+                color: Rgb888::new(230, 200, 150),
+                spin: false,
+            });
+        }
+    }
+    Ok((models, items))
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let (models, items) = match initial_scene(&args) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            std::process::exit(1);
+        }
+    };
+    // Every item has a radius of one unit; the scene spans their positions.
+    let extent = items
+        .iter()
+        .map(|i| i.position.length().to_num::<f32>() + 1.0)
+        .fold(1.0f32, f32::max);
+    let fov = 60.0f32;
+    let distance = extent / (fov.to_radians() / 2.0).sin() * 0.7;
+    let eye = [0.0, distance * 0.35, distance];
+    let mut camera = FlyCamera::new(Vec3::from_f32(eye[0], eye[1], eye[2]).unwrap_or_default());
+    // Look at the origin: yaw 0 faces -z; pitch down towards it.
+    camera.set_orientation(
+        Angle::ZERO,
+        -Angle::from_radians_f32((eye[1] / (eye[1].hypot(eye[2]))).asin()),
+    );
+    let mut app = App {
+        models,
+        items,
+        camera,
+        radius: extent,
+        fov,
+        mode: Mode::Gouraud,
+        depth: true,
+        cull: true,
+        ortho: false,
+        spinning: true,
+        spin: Angle::ZERO,
+        help: false,
+        held: HashSet::new(),
+        prompt: None,
+        message: "H for help".into(),
+        shots: 0,
+    };
+    let lines = terminal_lines();
+    let mut window = Window::new(TITLE, &OutputSettingsBuilder::new().build());
+    window.set_max_fps(60);
+    let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(WIDTH, HEIGHT));
+    let text = MonoTextStyle::new(&FONT_6X10, Rgb888::WHITE);
+    let mut last = Instant::now();
+    let (mut second, mut frames, mut render_us) = (Instant::now(), 0u32, 0u128);
+    let mut frame = vec![Rgb888::BLACK; (WIDTH * HEIGHT) as usize];
+    loop {
+        let now = Instant::now();
+        let dt = now
+            .duration_since(last)
+            .min(Duration::from_millis(100))
+            .as_secs_f32();
+        last = now;
+        app.fly(dt);
+        if app.spinning {
+            app.spin += Angle::from_degrees_f32(45.0 * dt);
+        }
+        let placed: Vec<Placed<'_>> = app
+            .items
+            .iter()
+            .map(|i| Placed {
+                model: &app.models[i.model],
+                matrix: app.model_transform(i),
+                color: i.color,
+            })
+            .collect();
+        let time = match app.view().and_then(|v| render(&placed, &v)) {
+            Ok(r) => {
+                frame = r.pixels;
+                r.time
+            }
+            Err(e) => {
+                app.message = e;
+                Duration::ZERO
+            }
+        };
+        let _ = display.fill_contiguous(
+            &Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT)),
+            frame.iter().copied(),
+        );
+        frames += 1;
+        render_us += time.as_micros();
+        let fps = frames as f32 / second.elapsed().as_secs_f32().max(1e-3);
+        let status = format!(
+            "{} | render {} us | {:.0} fps | {} objects | depth {} | cull {} | {} | fov {:.0} | {}",
+            app.mode.name(),
+            time.as_micros(),
+            fps,
+            app.items.len(),
+            if app.depth { "on" } else { "off" },
+            if app.cull { "on" } else { "off" },
+            if app.ortho { "ortho" } else { "persp" },
+            app.fov,
+            app.message
+        );
+        let _ =
+            Text::with_baseline(&status, Point::new(4, 2), text, Baseline::Top).draw(&mut display);
+        if app.help {
+            let h = HELP.len() as u32 * 12 + 8;
+            let _ = Rectangle::new(Point::new(8, 20), Size::new(340, h))
+                .into_styled(PrimitiveStyle::with_fill(Rgb888::new(0, 0, 60)))
+                .draw(&mut display);
+            for (k, line) in HELP.iter().enumerate() {
+                let _ = Text::with_baseline(
+                    line,
+                    Point::new(14, 24 + 12 * k as i32),
+                    text,
+                    Baseline::Top,
+                )
+                .draw(&mut display);
+            }
+        }
+        if second.elapsed() >= Duration::from_secs(1) {
+            println!(
+                "frame: render {} us on average, {:.0} fps",
+                render_us / frames.max(1) as u128,
+                fps
+            );
+            (second, frames, render_us) = (Instant::now(), 0, 0);
+        }
+        window.update(&display);
+        for event in window.events() {
+            match event {
+                SimulatorEvent::Quit => return,
+                SimulatorEvent::KeyDown {
+                    keycode,
+                    repeat: false,
+                    ..
+                } => {
+                    app.held.insert(keycode);
+                    app.key(keycode, &frame);
+                }
+                SimulatorEvent::KeyUp { keycode, .. } => {
+                    app.held.remove(&keycode);
+                }
+                _ => {}
+            }
+        }
+        while let Ok(line) = lines.try_recv() {
+            app.answer(&line);
+        }
+    }
+}

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Drives the viewer in a real window under Xvfb, as a person would: key presses with xdotool,
+# screenshots with ImageMagick, and checks that the picture changes the right way.
+#   W makes the model larger; Left turns the view (the scene moves right); M changes the image;
+#   Escape quits cleanly.
+# Needs: xvfb xdotool imagemagick x11-utils libsdl2 (installed by .ci/run), and the viewer built
+# with `cargo build --release --features window --example viewer`.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=target/release/examples/viewer
+out=target/viewer-test
+mkdir -p "$out"
+fail() { echo "viewer test FAILED: $*" >&2; exit 1; }
+
+display=:97
+Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
+xvfb=$!
+trap 'kill $xvfb 2>/dev/null || true; [ -n "${viewer:-}" ] && kill $viewer 2>/dev/null || true' EXIT
+export DISPLAY=$display
+for _ in $(seq 50); do xdpyinfo >/dev/null 2>&1 && break; sleep 0.1; done
+
+# The terminal: a FIFO the test writes answers into (held open so the viewer never sees EOF).
+rm -f "$out/stdin"; mkfifo "$out/stdin"; exec 3<>"$out/stdin"
+"$bin" >"$out/viewer.log" 2>&1 <"$out/stdin" &
+viewer=$!
+wid=$(timeout 30 xdotool search --sync --name "fixed3d viewer" | head -1) || fail "no window"
+sleep 1.5
+xdotool windowfocus --sync "$wid" || true
+
+shot() { import -window "$wid" "$out/$1.png"; }
+# Fraction of the picture below the status line that is not background, overall and per half.
+covered() { convert "$out/$1.png" -crop 640x460+0+20 +repage -fuzz 6% -fill black -opaque "rgb(12,12,20)" \
+    -colorspace gray -threshold 4% -format "%[fx:mean]" info:; }
+right_half() { convert "$out/$1.png" -crop 320x460+320+20 +repage -fuzz 6% -fill black -opaque "rgb(12,12,20)" \
+    -colorspace gray -threshold 4% -format "%[fx:mean]" info:; }
+changed() { { compare -metric AE -fuzz 2% "$out/$1.png" "$out/$2.png" null: 2>&1 || true; } | cut -d' ' -f1; }
+hold() { xdotool keydown "$1"; sleep "$2"; xdotool keyup "$1"; sleep 0.4; }
+bigger() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(b > a * 1.15) }'; }
+
+# Stop the spinning first so that only our keys change the picture.
+xdotool key Tab; sleep 0.5
+shot start
+hold w 0.8
+shot forward
+c0=$(covered start); c1=$(covered forward)
+echo "W: covered $c0 -> $c1"
+bigger "$c0" "$c1" || fail "W did not make the model larger ($c0 -> $c1)"
+
+r0=$(right_half forward)
+hold Left 0.5
+shot left
+r1=$(right_half left)
+echo "Left: right half covered $r0 -> $r1, $(changed forward left) pixels changed"
+bigger "$r0" "$r1" || fail "Left did not turn the view to the left ($r0 -> $r1)"
+
+xdotool key m; sleep 0.6
+shot mode
+n=$(changed left mode)
+echo "M: $n pixels changed"
+[ "$n" -gt 2000 ] || fail "M did not change the image ($n pixels)"
+
+# R asks on the terminal; bad answers are reported and asked again; the window keeps running.
+xdotool key r; sleep 0.3
+printf '/no/such/model.obj\ncube\n300,0,0\n40,200,90\n1,2\n0,0,1.5\n' >&3
+sleep 1.2
+grep -q "No such file" "$out/viewer.log" || fail "a bad path was not reported"
+grep -q "give three numbers 0-255" "$out/viewer.log" || fail "a bad colour was not reported"
+grep -q "added object 6" "$out/viewer.log" || fail "the object was not added"
+xdotool key r; sleep 0.3
+printf 'exit\n' >&3
+sleep 0.5
+grep -q "cancelled" "$out/viewer.log" || fail "exit did not cancel"
+xdotool key BackSpace; sleep 0.4
+grep -q "removed the last object, 5 left" "$out/viewer.log" || fail "Backspace did not remove the object"
+
+xdotool key Escape
+for _ in $(seq 50); do kill -0 $viewer 2>/dev/null || break; sleep 0.1; done
+if kill -0 $viewer 2>/dev/null; then fail "Escape did not quit"; fi
+wait $viewer || fail "the viewer exited with status $?"
+viewer=
+grep -q "frame: render" "$out/viewer.log" || fail "no render time printed"
+echo "viewer test passed"
