@@ -19,4 +19,4 @@ pub use vector::Vec3;
 pub(crate) use scalar::{div_round, shr_round, DEPTH_ONE, UNIT_ONE};
 
 pub(crate) use sqrt::isqrt_u64;
-pub(crate) use vector::{dot_unit, normalize};
+pub(crate) use vector::{dot_unit, normalize, normalize_fast};

@@ -21,9 +21,50 @@ pub(crate) const fn isqrt_u64(n: u64) -> u64 {
     root
 }
 
+/// `RSQRT[i] = 2³³ / sqrt(i + 16.5)`: seeds for `1/sqrt(m)` with `m` in `[2²⁸, 2³⁰)`, indexed by
+/// `m >> 24` (48 entries, 192 bytes; built at compile time).
+const RSQRT: [u32; 48] = {
+    let mut t = [0u32; 48];
+    let mut i = 0;
+    while i < 48 {
+        // 2³³ / sqrt(m + 0.5) = sqrt(2⁶⁷ / (2m + 1))
+        let m = (i + 16) as u128;
+        t[i] = isqrt_u64(((1u128 << 67) / (2 * m + 1)) as u64) as u32;
+        i += 1;
+    }
+    t
+};
+
+/// `2⁴⁵ / sqrt(m)` for `m` in `[2²⁸, 2³⁰)`: a table seed and two Newton steps, multiplications
+/// only (no division, no loop), relative error below 10⁻⁶.
+pub(crate) fn rsqrt_q45(m: u64) -> u64 {
+    let idx = ((m >> 24) as usize).saturating_sub(16);
+    let mut y = RSQRT.get(idx).copied().unwrap_or(1 << 30) as u64;
+    let mut k = 0;
+    while k < 2 {
+        // m·y² in Q2.30, then y·(3 − m·y²)/2.
+        let t = (m * ((y * y) >> 31)) >> 29;
+        y = (y * ((3u64 << 30).saturating_sub(t))) >> 31;
+        k += 1;
+    }
+    y
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rsqrt_relative_error() {
+        let mut worst = 0f64;
+        let mut m = 1u64 << 28;
+        while m < 1 << 30 {
+            let exact = (1u64 << 45) as f64 / (m as f64).sqrt();
+            worst = worst.max((rsqrt_q45(m) as f64 - exact).abs() / exact);
+            m += 9_973;
+        }
+        assert!(worst < 1e-6, "{worst}");
+    }
 
     #[test]
     fn isqrt_is_exact_floor() {

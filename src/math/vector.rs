@@ -3,7 +3,7 @@
 use core::ops::{Add, Neg, Sub};
 
 use super::scalar::{shr_round, Scalar, UNIT_ONE};
-use super::sqrt::isqrt_u64;
+use super::sqrt::{isqrt_u64, rsqrt_q45};
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
 ///
@@ -185,6 +185,25 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
     }))
 }
 
+/// Unit vector (Q2.30) of a non-zero integer vector of any scale, like [`normalize`] but
+/// without division or square-root loop (a table and two Newton steps): relative error below
+/// 2·10⁻⁶, for per-face and per-vertex lighting. `None` for zero.
+pub(crate) fn normalize_fast(v: [i64; 3]) -> Option<[i32; 3]> {
+    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+    if max == 0 {
+        return None;
+    }
+    // Largest component to [2¹⁴, 2¹⁵): the sum of squares lies in [2²⁸, 3·2³⁰).
+    let bits = 64 - max.leading_zeros() as i32;
+    let shift = bits - 15;
+    let c = v.map(|x| if shift > 0 { x >> shift } else { x << (-shift) as u32 });
+    let s = c.iter().map(|x| (x * x) as u64).sum::<u64>();
+    let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
+    let y = rsqrt_q45(m) as i64; // 2⁴⁵ / sqrt(m)
+    // c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
+    Some(c.map(|x| ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32))
+}
+
 /// Dot product of two Q2.30 unit vectors, Q2.30.
 pub(crate) fn dot_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
     let s: i64 = a
@@ -231,6 +250,26 @@ impl Neg for Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fast_normalize_agrees() {
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..20_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let scale = (x >> 58) as u32;
+            let v = [(x as i16) as i64, ((x >> 16) as i16) as i64, ((x >> 32) as i16) as i64].map(|c| c << scale);
+            match (normalize(v), normalize_fast(v)) {
+                (Some(a), Some(b)) => {
+                    for (p, q) in a.iter().zip(b) {
+                        assert!((p - q).abs() <= 4 << 10, "{v:?}: {a:?} {b:?}");
+                    }
+                }
+                (a, b) => assert_eq!(a.is_none(), b.is_none()),
+            }
+        }
+    }
 
     #[test]
     fn normalize_any_scale() {

@@ -2,7 +2,9 @@
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-use crate::math::{dot_unit, normalize, UNIT_ONE};
+use crate::math::{dot_unit, normalize_fast, UNIT_ONE};
+#[cfg(test)]
+use crate::math::normalize;
 use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
@@ -65,14 +67,14 @@ pub(crate) fn face_normal(p: [[i32; 3]; 3], normal_matrix: &[[i32; 3]; 3]) -> Op
         e1[2] * e2[0] - e1[0] * e2[2],
         e1[0] * e2[1] - e1[1] * e2[0],
     ];
-    normalize(apply(normal_matrix, shrink(n)))
+    normalize_fast(apply(normal_matrix, shrink(n)))
 }
 
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
 /// zero normal (lit by ambient only, case T34).
 pub(crate) fn vertex_normal(n: [i32; 3], normal_matrix: &[[i32; 3]; 3]) -> Option<[i32; 3]> {
     let v = shrink(n.map(i64::from));
-    let w = normalize(apply(normal_matrix, v))?;
+    let w = normalize_fast(apply(normal_matrix, v))?;
     debug_assert!(w.iter().all(|c| c.abs() <= UNIT_ONE));
     Some(w)
 }

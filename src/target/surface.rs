@@ -146,39 +146,22 @@ where
             return Ok(());
         };
         stats.fragments = stats.fragments.saturating_add(cs.len() as u32);
-        let mut acc = depth.start;
-        let step = depth.step;
-        let le = self.test == DepthTest::LessOrEqual;
-        let mut written = 0u32;
-        match paint.solid() {
+        let written = match paint.solid() {
             Some(rgb) if Q::UNIFORM => {
                 let c = self.quantize.quantize(rgb, 0, span.y);
-                for (cp, dp) in cs.iter_mut().zip(ds.iter_mut()) {
-                    let z = D::from_interpolated(acc);
-                    acc = acc.wrapping_add(step);
-                    if z < *dp || (le && z == *dp) {
-                        *dp = z;
-                        *cp = c;
-                        written += 1;
-                    }
-                }
+                D::test_span(ds, cs, depth.start, depth.step, self.test, || c)
             }
             _ => {
                 let mut cursor = paint.cursor(span.x0, span.y);
+                let (q, y) = (self.quantize, span.y);
                 let mut x = span.x0;
-                for (cp, dp) in cs.iter_mut().zip(ds.iter_mut()) {
-                    let z = D::from_interpolated(acc);
-                    acc = acc.wrapping_add(step);
-                    let rgb = cursor.next().unwrap_or_default();
-                    if z < *dp || (le && z == *dp) {
-                        *dp = z;
-                        *cp = self.quantize.quantize(rgb, x, span.y);
-                        written += 1;
-                    }
+                D::test_span(ds, cs, depth.start, depth.step, self.test, || {
+                    let c = q.quantize(cursor.next().unwrap_or_default(), x, y);
                     x = x.wrapping_add(1);
-                }
+                    c
+                })
             }
-        }
+        };
         stats.written = stats.written.saturating_add(written);
         Ok(())
     }

@@ -1,0 +1,83 @@
+//! The reference scene of the benchmarks (a tilted torus, 320x240, flat Lambert, u16 depth)
+//! rendered N times, for timing and for instruction counts under callgrind (`bench/host.sh`).
+//!
+//! ```text
+//! cargo run --release --example torus_bench -- [N]
+//! ```
+//!
+//! One frame is `clear_buffers` (colour and depth) then `draw_scene` (vertex stage, culling,
+//! shading, rasterising); both are `#[inline(never)]` so that a profiler can count them apart.
+
+use std::time::Instant;
+
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use fixed3d::camera::LookAt;
+use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
+use fixed3d::mesh::{torus, torus_counts, Mesh, Object};
+use fixed3d::pipeline::{Frame, ScreenVertex, Stats};
+use fixed3d::projection::{Projection, Viewport};
+use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
+use fixed3d::shade::Flat;
+use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+
+const W: u32 = 320;
+const H: u32 = 240;
+
+#[inline(never)]
+fn clear_buffers(color: &mut [Rgb565], depth: &mut [u16]) {
+    color.fill(Rgb565::BLACK);
+    depth.fill(u16::MAX);
+}
+
+#[inline(never)]
+fn draw_scene(frame: &Frame, scene: &Scene<'_, 1>, cache: &mut [ScreenVertex], color: &mut [Rgb565], depth: &mut [u16]) -> Stats {
+    let (Ok(prepared), Ok(mut c), Ok(mut d)) = (
+        frame.prepare(scene, cache, Flat),
+        FrameBuffer::new(color, W, H),
+        DepthBuffer::new(depth, W, H),
+    ) else {
+        return Stats::default();
+    };
+    match ColorDepth::new(&mut c, &mut d) {
+        Ok(mut target) => prepared.draw(&mut target).unwrap_or_default(),
+        Err(_) => Stats::default(),
+    }
+}
+
+fn main() {
+    let n: usize = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(100).max(1);
+    let s = |v: f64| Scalar::from_num(v);
+    let (nv, nt) = torus_counts(48, 24);
+    let (mut p, mut nrm, mut t) = (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0u16; 3]; nt]);
+    let mesh: Mesh<'_> = torus(Scalar::ONE, s(0.4), 48, 24, &mut p, &mut nrm, &mut t).expect("torus");
+    let model = Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::rotation_x(Angle::from_degrees(20));
+    let objects = [Object::new(&mesh, model, Rgb888::new(255, 160, 64))];
+    let mut lighting = Lighting::<1>::new(LightColor::gray(s(0.2)));
+    lighting.push(DirectionalLight::new(Vec3::from_int(-1, 1, 1), LightColor::gray(s(0.8)))).expect("light");
+    let scene = Scene::new(&objects, lighting);
+    let viewport = Viewport::new(W, H).expect("viewport");
+    let view = LookAt::new(Vec3::new(s(0.0), s(0.0), s(2.6)), Vec3::ZERO, Vec3::Y).view().expect("camera");
+    let projection = Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1.0), s(10.0)).expect("projection");
+    let frame = Frame::new(&view, &projection, viewport);
+
+    let mut cache = vec![ScreenVertex::DEFAULT; nv];
+    let mut color = vec![Rgb565::BLACK; (W * H) as usize];
+    let mut depth = vec![0u16; (W * H) as usize];
+    let mut times = Vec::with_capacity(n);
+    let mut stats = Stats::default();
+    for _ in 0..n {
+        clear_buffers(&mut color, &mut depth);
+        let started = Instant::now();
+        stats = draw_scene(&frame, &scene, &mut cache, &mut color, &mut depth);
+        times.push(started.elapsed());
+    }
+    times.sort();
+    let covered = color.iter().filter(|&&c| c != Rgb565::BLACK).count();
+    println!(
+        "torus 320x240: {n} frames, median {} us per frame; covered {covered} pixels, {} triangles drawn, {} fragments tested, {} written",
+        times[n / 2].as_micros(),
+        stats.drawn,
+        stats.fragments,
+        stats.written
+    );
+}
