@@ -30,7 +30,13 @@ fn clear_buffers(color: &mut [Rgb565], depth: &mut [u16]) {
 }
 
 #[inline(never)]
-fn draw_scene(frame: &Frame, scene: &Scene<'_, 1>, cache: &mut [ScreenVertex], color: &mut [Rgb565], depth: &mut [u16]) -> Stats {
+fn draw_scene(
+    frame: &Frame,
+    scene: &Scene<'_, 1>,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Stats {
     let (Ok(prepared), Ok(mut c), Ok(mut d)) = (
         frame.prepare(scene, cache, Flat),
         FrameBuffer::new(color, W, H),
@@ -45,19 +51,38 @@ fn draw_scene(frame: &Frame, scene: &Scene<'_, 1>, cache: &mut [ScreenVertex], c
 }
 
 fn main() {
-    let n: usize = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(100).max(1);
+    let n: usize = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(100)
+        .max(1);
     let s = |v: f64| Scalar::from_num(v);
     let (nv, nt) = torus_counts(48, 24);
-    let (mut p, mut nrm, mut t) = (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0u16; 3]; nt]);
-    let mesh: Mesh<'_> = torus(Scalar::ONE, s(0.4), 48, 24, &mut p, &mut nrm, &mut t).expect("torus");
-    let model = Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::rotation_x(Angle::from_degrees(20));
+    let (mut p, mut nrm, mut t) = (
+        vec![Vec3::ZERO; nv],
+        vec![Vec3::ZERO; nv],
+        vec![[0u16; 3]; nt],
+    );
+    let mesh: Mesh<'_> =
+        torus(Scalar::ONE, s(0.4), 48, 24, &mut p, &mut nrm, &mut t).expect("torus");
+    let model =
+        Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::rotation_x(Angle::from_degrees(20));
     let objects = [Object::new(&mesh, model, Rgb888::new(255, 160, 64))];
     let mut lighting = Lighting::<1>::new(LightColor::gray(s(0.2)));
-    lighting.push(DirectionalLight::new(Vec3::from_int(-1, 1, 1), LightColor::gray(s(0.8)))).expect("light");
+    lighting
+        .push(DirectionalLight::new(
+            Vec3::from_int(-1, 1, 1),
+            LightColor::gray(s(0.8)),
+        ))
+        .expect("light");
     let scene = Scene::new(&objects, lighting);
     let viewport = Viewport::new(W, H).expect("viewport");
-    let view = LookAt::new(Vec3::new(s(0.0), s(0.0), s(2.6)), Vec3::ZERO, Vec3::Y).view().expect("camera");
-    let projection = Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1.0), s(10.0)).expect("projection");
+    let view = LookAt::new(Vec3::new(s(0.0), s(0.0), s(2.6)), Vec3::ZERO, Vec3::Y)
+        .view()
+        .expect("camera");
+    let projection =
+        Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1.0), s(10.0))
+            .expect("projection");
     let frame = Frame::new(&view, &projection, viewport);
 
     let mut cache = vec![ScreenVertex::DEFAULT; nv];

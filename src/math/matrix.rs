@@ -127,17 +127,21 @@ impl Mat4 {
         Vec3::new(row(&self.m[0]), row(&self.m[1]), row(&self.m[2]))
     }
 
-    /// `self * (p, 1)` as raw Q16.16 in 64 bits: exact products, each row rounded once.
-    /// With Q16.16 inputs every component is below 2⁴⁸ in magnitude.
+    /// `self * (p, 1)` as raw Q16.16 in 64 bits, for the vertex stage. Each product (below 2⁶²)
+    /// is halved before the sum so that no input can overflow it, and the sum is rounded once
+    /// (half up): within 2⁻¹⁶ of a unit of the exact value. Every component is below 2⁴⁸.
+    #[inline]
     pub(crate) fn transform_wide(&self, p: [i32; 3]) -> [i64; 4] {
-        let p = p.map(i64::from);
-        self.m.map(|r| {
-            let s = (r[0] as i64 * p[0])
-                .saturating_add(r[1] as i64 * p[1])
-                .saturating_add(r[2] as i64 * p[2])
-                .saturating_add((r[3] as i64) << 16);
-            shr_round(s, 16)
-        })
+        let [x, y, z] = p.map(i64::from);
+        let row = |r: &[i32; 4]| {
+            let s = ((r[0] as i64 * x) >> 1)
+                + ((r[1] as i64 * y) >> 1)
+                + ((r[2] as i64 * z) >> 1)
+                + ((r[3] as i64) << 15);
+            (s + (1 << 14)) >> 15
+        };
+        let [r0, r1, r2, r3] = &self.m;
+        [row(r0), row(r1), row(r2), row(r3)]
     }
 
     /// The upper-left 3x3 block's cofactor matrix (`det · M⁻ᵀ`), raw Q16.16 rows: it carries

@@ -196,11 +196,17 @@ pub(crate) fn normalize_fast(v: [i64; 3]) -> Option<[i32; 3]> {
     // Largest component to [2¹⁴, 2¹⁵): the sum of squares lies in [2²⁸, 3·2³⁰).
     let bits = 64 - max.leading_zeros() as i32;
     let shift = bits - 15;
-    let c = v.map(|x| if shift > 0 { x >> shift } else { x << (-shift) as u32 });
+    let c = v.map(|x| {
+        if shift > 0 {
+            x >> shift
+        } else {
+            x << (-shift) as u32
+        }
+    });
     let s = c.iter().map(|x| (x * x) as u64).sum::<u64>();
     let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
     let y = rsqrt_q45(m) as i64; // 2⁴⁵ / sqrt(m)
-    // c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
+                                 // c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
     Some(c.map(|x| ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32))
 }
 
@@ -259,7 +265,12 @@ mod tests {
             x ^= x >> 7;
             x ^= x << 17;
             let scale = (x >> 58) as u32;
-            let v = [(x as i16) as i64, ((x >> 16) as i16) as i64, ((x >> 32) as i16) as i64].map(|c| c << scale);
+            let v = [
+                (x as i16) as i64,
+                ((x >> 16) as i16) as i64,
+                ((x >> 32) as i16) as i64,
+            ]
+            .map(|c| c << scale);
             match (normalize(v), normalize_fast(v)) {
                 (Some(a), Some(b)) => {
                     for (p, q) in a.iter().zip(b) {

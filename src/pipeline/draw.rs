@@ -11,7 +11,7 @@ use crate::math::Mat4;
 use crate::mesh::{Object, Triangle};
 use crate::raster::{line_pixels, triangle_spans, PixelRect, Plane, ScreenPoint};
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
-use crate::target::{DepthSpan, RasterTarget};
+use crate::target::{DepthPlane, RasterTarget};
 
 /// Doubled signed area, y down: negative for front faces.
 fn area2(p: &[ScreenPoint; 3]) -> i64 {
@@ -79,6 +79,7 @@ fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
 
 fn fill<T: RasterTarget, P: Paint>(
     target: &mut T,
+    clip: PixelRect,
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
@@ -87,22 +88,11 @@ fn fill<T: RasterTarget, P: Paint>(
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
     let plane = if T::DEPTH {
-        Plane::new(&p, z.map(|z| (z as i64) << 14), area)
+        DepthPlane(Plane::new(&p, z.map(|z| (z as i64) << 14), area))
     } else {
-        Plane::default()
+        DepthPlane::default()
     };
-    for span in triangle_spans(p, target.clip()) {
-        let depth = if T::DEPTH {
-            DepthSpan {
-                start: plane.at(span.x0, span.y),
-                step: plane.step_x(),
-            }
-        } else {
-            DepthSpan::default()
-        };
-        target.fill_span(span, &depth, paint, stats)?;
-    }
-    Ok(())
+    target.fill_triangle(triangle_spans(p, clip), &plane, paint, stats)
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
@@ -129,6 +119,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// drawn, or the target's first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
         let mut stats = Stats::default();
+        let clip = target.clip();
         let map = ScreenMap::new(&self.frame.viewport);
         for setup in self.objects() {
             for tri in setup.object.mesh.triangles() {
@@ -146,13 +137,18 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     continue;
                 }
                 if a.outcode | b.outcode | c.outcode == 0 {
-                    let rgb = [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8));
+                    // Vertex colours matter only to per-vertex shading.
+                    let rgb = if S::PER_VERTEX {
+                        [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8))
+                    } else {
+                        [[0; 3]; 3]
+                    };
                     let v = [
                         (a.point(), a.z, rgb[0]),
                         (b.point(), b.z, rgb[1]),
                         (c.point(), c.z, rgb[2]),
                     ];
-                    self.fill_face(target, &setup, tri, v, &mut stats)?;
+                    self.fill_face(target, clip, &setup, tri, v, &mut stats)?;
                     continue;
                 }
                 bump(&mut stats.clipped);
@@ -168,7 +164,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 };
                 for pair in rest.windows(2) {
                     if let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) {
-                        self.fill_face(target, &setup, tri, [*first, *v1, *v2], &mut stats)?;
+                        self.fill_face(target, clip, &setup, tri, [*first, *v1, *v2], &mut stats)?;
                     }
                 }
             }
@@ -181,6 +177,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     fn fill_face<T: RasterTarget>(
         &self,
         target: &mut T,
+        clip: PixelRect,
         setup: &ObjectSetup<'_>,
         tri: &Triangle,
         v: [(ScreenPoint, i32, [i32; 3]); 3],
@@ -197,7 +194,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             return Ok(());
         }
         // Culling comes first so that every band of a frame counts the same culled triangles.
-        if !rows_overlap(&p, &target.clip()) {
+        if !rows_overlap(&p, &clip) {
             return Ok(());
         }
         let face = FaceInputs {
@@ -212,16 +209,18 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let lighting = &self.scene.lighting;
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
+            let paint = self.shading.paint(&face, lighting);
+            fill(target, clip, p, z, area, &paint, stats)
+        } else {
             fill(
                 target,
+                clip,
                 p,
                 z,
                 area,
-                &self.shading.paint(&face, lighting),
+                &Flat.paint(&face, lighting),
                 stats,
             )
-        } else {
-            fill(target, p, z, area, &Flat.paint(&face, lighting), stats)
         }
     }
 

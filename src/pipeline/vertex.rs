@@ -83,7 +83,13 @@ fn reduce_shift(c: &[i64; 4]) -> u32 {
     (64 - max.leading_zeros()).saturating_sub(31)
 }
 
+#[inline]
 pub(crate) fn reduce(c: [i64; 4]) -> [i64; 4] {
+    // The common case, coordinates below 2³¹, needs nothing.
+    let lim = 1i64 << 31;
+    if c.iter().all(|v| *v > -lim && *v < lim) {
+        return c;
+    }
     let s = reduce_shift(&c);
     c.map(|v| shr_round(v, s))
 }

@@ -175,12 +175,15 @@ impl RationalStepper {
         // For ceil the step subtracts from rem (rem = qD − N), for floor it adds.
         let sq = floor_div(step, den);
         let sr = step - sq * den;
+        // Callers keep coordinates within ±COORD_LIMIT (2²⁴ sub-pixels): the denominator is
+        // below 2²⁹, remainders below it, quotients (pixel coordinates) below 2²¹ and steps below
+        // 2²⁹, so every value fits i32 and the casts are exact.
         RationalStepper {
-            value: clamp_i32(value),
-            rem: clamp_i32(rem),
-            den: clamp_i32(den),
-            step_q: clamp_i32(sq),
-            step_r: clamp_i32(sr),
+            value: value as i32,
+            rem: rem as i32,
+            den: den as i32,
+            step_q: sq as i32,
+            step_r: sr as i32,
             ceil,
         }
     }
@@ -202,15 +205,5 @@ impl RationalStepper {
                 self.value = self.value.wrapping_add(1);
             }
         }
-    }
-}
-
-pub(crate) const fn clamp_i32(v: i64) -> i32 {
-    if v > i32::MAX as i64 {
-        i32::MAX
-    } else if v < i32::MIN as i64 {
-        i32::MIN
-    } else {
-        v as i32
     }
 }

@@ -2,9 +2,9 @@
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-use crate::math::{dot_unit, normalize_fast, UNIT_ONE};
 #[cfg(test)]
 use crate::math::normalize;
+use crate::math::{dot_unit, normalize_fast, UNIT_ONE};
 use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.

@@ -22,7 +22,14 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
     /// colour is stored where the fragment passes. Returns how many passed.
     #[doc(hidden)]
     #[inline(always)]
-    fn test_span<C: Copy>(depths: &mut [Self], colors: &mut [C], start: i64, step: i64, test: DepthTest, mut next_color: impl FnMut() -> C) -> u32 {
+    fn test_span<C: Copy>(
+        depths: &mut [Self],
+        colors: &mut [C],
+        start: i64,
+        step: i64,
+        test: DepthTest,
+        mut next_color: impl FnMut() -> C,
+    ) -> u32 {
         let mut acc = start;
         let mut written = 0;
         let le = test == DepthTest::LessOrEqual;
@@ -56,7 +63,14 @@ impl DepthFormat for u16 {
     /// drifts less than 2⁻⁴ of a unit over 2048 pixels. Spans whose ends are both inside the
     /// range need no clamp at all (depth is linear along a span); others take the general loop.
     #[inline(always)]
-    fn test_span<C: Copy>(depths: &mut [u16], colors: &mut [C], start: i64, step: i64, test: DepthTest, mut next_color: impl FnMut() -> C) -> u32 {
+    fn test_span<C: Copy>(
+        depths: &mut [u16],
+        colors: &mut [C],
+        start: i64,
+        step: i64,
+        test: DepthTest,
+        mut next_color: impl FnMut() -> C,
+    ) -> u32 {
         let n = depths.len().min(colors.len());
         let a = start.saturating_add(1 << 27) >> 13;
         let st = step.saturating_add(1 << 12) >> 13;
@@ -180,7 +194,8 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
         self.grid.get(x, y)
     }
 
-    pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [D]> {
-        self.grid.row_mut(y)
+    #[inline]
+    pub(crate) fn span_mut(&mut self, y: i32, x0: i32, x1: i32) -> Option<&mut [D]> {
+        self.grid.span_mut(y, x0, x1)
     }
 }

@@ -65,6 +65,12 @@ impl<'a, C: PixelColor> FrameBuffer<'a, C> {
         self.grid.fill(color);
     }
 
+    /// Pixels `x0..x1` of row `y`.
+    #[inline]
+    pub(crate) fn span_mut(&mut self, y: i32, x0: i32, x1: i32) -> Option<&mut [C]> {
+        self.grid.span_mut(y, x0, x1)
+    }
+
     /// Row `y` as a mutable slice.
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [C]> {
         self.grid.row_mut(y)

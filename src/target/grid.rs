@@ -93,6 +93,22 @@ impl<'a, T: Copy> Grid<'a, T> {
         self.index(x, y).and_then(|i| self.cells.get_mut(i))
     }
 
+    /// Cells `x0..x1` of row `y` (`None` unless the whole range lies in the grid).
+    #[inline]
+    pub(crate) fn span_mut(&mut self, y: i32, x0: i32, x1: i32) -> Option<&mut [T]> {
+        let (y, x0, x1) = (
+            u32::try_from(y).ok()?,
+            u32::try_from(x0).ok()?,
+            u32::try_from(x1).ok()?,
+        );
+        if y >= self.height || x1 > self.width || x0 > x1 {
+            return None;
+        }
+        // y < height and x1 ≤ width: the range lies within width · height ≤ len.
+        let base = y as usize * self.width as usize;
+        self.cells.get_mut(base + x0 as usize..base + x1 as usize)
+    }
+
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [T]> {
         let w = self.width as usize;
         let start = usize::try_from(y).ok()?.checked_mul(w)?;

@@ -20,4 +20,4 @@ pub use depth::{DepthBuffer, DepthFormat, DepthTest};
 pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;
-pub use surface::{ColorDepth, DepthSpan, Direct, RasterTarget};
+pub use surface::{ColorDepth, DepthPlane, Direct, RasterTarget};

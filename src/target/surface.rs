@@ -10,15 +10,12 @@ use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::pipeline::Stats;
-use crate::raster::{PixelRect, Span};
+use crate::raster::{PixelRect, Plane, TriangleSpans};
 use crate::shade::Paint;
 
-/// Depth along a span: the interpolator's value at the first pixel and its step per pixel.
+/// Depth across one triangle: the plane through its snapped vertices (opaque).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct DepthSpan {
-    pub(crate) start: i64,
-    pub(crate) step: i64,
-}
+pub struct DepthPlane(pub(crate) Plane);
 
 /// Something the triangle filler can write spans into: [`ColorDepth`] or [`Direct`].
 pub trait RasterTarget {
@@ -28,12 +25,12 @@ pub trait RasterTarget {
     const DEPTH: bool;
     /// The frame pixels this target receives (frame coordinates).
     fn clip(&self) -> PixelRect;
-    /// Writes one span.
+    /// Writes the spans of one triangle (per-triangle set-up happens here once, not per row).
     #[doc(hidden)]
-    fn fill_span<P: Paint>(
+    fn fill_triangle<P: Paint>(
         &mut self,
-        span: Span,
-        depth: &DepthSpan,
+        spans: TriangleSpans,
+        depth: &DepthPlane,
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), Self::Error>;
@@ -129,39 +126,68 @@ where
     }
 
     #[inline]
-    fn fill_span<P: Paint>(
+    fn fill_triangle<P: Paint>(
         &mut self,
-        span: Span,
-        depth: &DepthSpan,
+        spans: TriangleSpans,
+        depth: &DepthPlane,
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), Self::Error> {
-        let local = span.y.wrapping_sub(self.first_row);
-        let (Some(crow), Some(drow)) = (self.color.row_mut(local), self.depth.row_mut(local))
-        else {
-            return Ok(());
-        };
-        let (x0, x1) = (span.x0.max(0) as usize, span.x1.max(0) as usize);
-        let (Some(cs), Some(ds)) = (crow.get_mut(x0..x1), drow.get_mut(x0..x1)) else {
-            return Ok(());
-        };
-        stats.fragments = stats.fragments.saturating_add(cs.len() as u32);
-        let written = match paint.solid() {
+        let (plane, step, test, first_row) =
+            (&depth.0, depth.0.step_x(), self.test, self.first_row);
+        let (mut fragments, mut written) = (0u32, 0u32);
+        match paint.solid() {
             Some(rgb) if Q::UNIFORM => {
-                let c = self.quantize.quantize(rgb, 0, span.y);
-                D::test_span(ds, cs, depth.start, depth.step, self.test, || c)
+                // One conversion per triangle.
+                let c = self.quantize.quantize(rgb, 0, 0);
+                for span in spans {
+                    let local = span.y.wrapping_sub(first_row);
+                    let (Some(cs), Some(ds)) = (
+                        self.color.span_mut(local, span.x0, span.x1),
+                        self.depth.span_mut(local, span.x0, span.x1),
+                    ) else {
+                        continue;
+                    };
+                    fragments = fragments.wrapping_add(cs.len() as u32);
+                    written = written.wrapping_add(D::test_span(
+                        ds,
+                        cs,
+                        plane.at(span.x0, span.y),
+                        step,
+                        test,
+                        || c,
+                    ));
+                }
             }
             _ => {
-                let mut cursor = paint.cursor(span.x0, span.y);
-                let (q, y) = (self.quantize, span.y);
-                let mut x = span.x0;
-                D::test_span(ds, cs, depth.start, depth.step, self.test, || {
-                    let c = q.quantize(cursor.next().unwrap_or_default(), x, y);
-                    x = x.wrapping_add(1);
-                    c
-                })
+                let q = self.quantize;
+                for span in spans {
+                    let local = span.y.wrapping_sub(first_row);
+                    let (Some(cs), Some(ds)) = (
+                        self.color.span_mut(local, span.x0, span.x1),
+                        self.depth.span_mut(local, span.x0, span.x1),
+                    ) else {
+                        continue;
+                    };
+                    fragments = fragments.wrapping_add(cs.len() as u32);
+                    let mut cursor = paint.cursor(span.x0, span.y);
+                    let (mut x, y) = (span.x0, span.y);
+                    written = written.wrapping_add(D::test_span(
+                        ds,
+                        cs,
+                        plane.at(span.x0, span.y),
+                        step,
+                        test,
+                        || {
+                            let c = q.quantize(cursor.next().unwrap_or_default(), x, y);
+                            x = x.wrapping_add(1);
+                            c
+                        },
+                    ));
+                }
             }
-        };
+        }
+        stats.fragments = stats.fragments.saturating_add(fragments);
         stats.written = stats.written.saturating_add(written);
         Ok(())
     }
@@ -214,41 +240,38 @@ where
     const DEPTH: bool = false;
 
     fn clip(&self) -> PixelRect {
-        let b = self.target.bounding_box();
-        let w = b.size.width.min(i32::MAX as u32) as i32;
-        let h = b.size.height.min(i32::MAX as u32) as i32;
-        PixelRect::new(
-            b.top_left.x,
-            b.top_left.y,
-            b.top_left.x.saturating_add(w),
-            b.top_left.y.saturating_add(h),
-        )
+        PixelRect::from_rectangle(&self.target.bounding_box())
     }
 
-    fn fill_span<P: Paint>(
+    fn fill_triangle<P: Paint>(
         &mut self,
-        span: Span,
-        _: &DepthSpan,
+        spans: TriangleSpans,
+        _: &DepthPlane,
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
-        let n = span.x1.saturating_sub(span.x0).max(0) as u32;
-        let area = Rectangle::new(Point::new(span.x0, span.y), Size::new(n, 1));
-        stats.fragments = stats.fragments.saturating_add(n);
-        stats.written = stats.written.saturating_add(n);
-        match paint.solid() {
-            Some(rgb) if Q::UNIFORM => self
-                .target
-                .fill_solid(&area, self.quantize.quantize(rgb, 0, span.y)),
-            _ => {
-                let q = self.quantize;
-                let y = span.y;
-                let colors = paint
-                    .cursor(span.x0, span.y)
-                    .zip(span.x0..span.x1)
-                    .map(move |(rgb, x)| q.quantize(rgb, x, y));
-                self.target.fill_contiguous(&area, colors)
+        let solid = match paint.solid() {
+            Some(rgb) if Q::UNIFORM => Some(self.quantize.quantize(rgb, 0, 0)),
+            _ => None,
+        };
+        for span in spans {
+            let n = span.x1.saturating_sub(span.x0).max(0) as u32;
+            let area = Rectangle::new(Point::new(span.x0, span.y), Size::new(n, 1));
+            stats.fragments = stats.fragments.saturating_add(n);
+            stats.written = stats.written.saturating_add(n);
+            match solid {
+                Some(c) => self.target.fill_solid(&area, c)?,
+                None => {
+                    let q = self.quantize;
+                    let y = span.y;
+                    let colors = paint
+                        .cursor(span.x0, span.y)
+                        .zip(span.x0..span.x1)
+                        .map(move |(rgb, x)| q.quantize(rgb, x, y));
+                    self.target.fill_contiguous(&area, colors)?;
+                }
             }
         }
+        Ok(())
     }
 }
