@@ -1,0 +1,300 @@
+//! The scenes of the firmware presets, shared by the firmware (no_std) and the host test that
+//! checks its hashes (`tests/firmware.rs` includes this file): one definition, so host and
+//! target render the same frames.
+
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::geometry::{OriginDimensions, Size};
+use embedded_graphics::pixelcolor::{IntoStorage, Rgb565, Rgb888, RgbColor};
+use embedded_graphics::Pixel;
+use fixed3d::camera::LookAt;
+use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
+use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
+use fixed3d::pipeline::{Frame, ScreenVertex};
+use fixed3d::projection::{Projection, Viewport};
+use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
+use fixed3d::shade::{Flat, Gouraud, Unlit};
+use fixed3d::target::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
+
+/// Frames per preset (the hash chains over them).
+pub const FRAMES: u32 = 4;
+
+/// The hash chain the firmware prints: `chain = chain.rotl(5) ^ hash(frame)` over `FRAMES`.
+pub fn chain(mut frame_hash: impl FnMut(u32) -> u32) -> u32 {
+    let mut c = 0u32;
+    for f in 0..FRAMES {
+        c = c.rotate_left(5) ^ frame_hash(f);
+    }
+    c
+}
+
+/// Frame size of every preset (the micro:bit runs `wire` at its own size).
+pub const W: u32 = 320;
+pub const H: u32 = 240;
+/// Rows per band in the `bands` preset: 320 · 12 · (2 + 2) bytes = 15 KiB of buffers.
+pub const BAND_ROWS: u32 = 12;
+/// Torus resolution and sizes.
+pub const TORUS_VERTICES: usize = 48 * 24;
+pub const TORUS_TRIANGLES: usize = 2 * TORUS_VERTICES;
+/// A small OBJ model in flash for the `obj` preset: an octahedron with a quad-split belly.
+pub const OBJ_MODEL: &[u8] = b"# a small model parsed at start-up\no gem\nv 0 1.2 0\nv 1 0 0\nv 0 0 1\nv -1 0 0\nv 0 0 -1\nv 0 -1 0\n\
+f 1 3 2\nf 1 4 3\nf 1 5 4\nf 1 2 5\nf 6 2 3\nf 6 3 4\nf 6 4 5\nf 6 5 2\n";
+
+/// FNV-1a over 16-bit values: the hash the firmware prints and the host checks.
+#[derive(Clone, Copy, Debug)]
+pub struct Fnv(pub u32);
+
+impl Fnv {
+    pub const fn new() -> Self {
+        Fnv(0x811c_9dc5)
+    }
+    #[inline]
+    pub fn write(&mut self, v: u32) {
+        for b in v.to_le_bytes() {
+            self.0 = (self.0 ^ b as u32).wrapping_mul(0x0100_0193);
+        }
+    }
+    pub fn pixels(&mut self, px: &[Rgb565]) {
+        for p in px {
+            self.write(p.into_storage() as u32);
+        }
+    }
+}
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Fnv::new()
+    }
+}
+
+/// A display stand-in that keeps nothing but a hash of every pixel drawn, in order: what a
+/// wireframe firmware draws straight into its display driver.
+#[derive(Debug)]
+pub struct HashDisplay {
+    pub hash: Fnv,
+    pub size: Size,
+}
+
+impl OriginDimensions for HashDisplay {
+    fn size(&self) -> Size {
+        self.size
+    }
+}
+
+impl DrawTarget for HashDisplay {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        for Pixel(p, c) in pixels {
+            self.hash.write(p.x as u32);
+            self.hash.write(p.y as u32);
+            self.hash.write(c.into_storage() as u32);
+        }
+        Ok(())
+    }
+}
+
+fn s(v: i32, den: i32) -> Scalar {
+    Scalar::from_bits(((v as i64) << 16) as i32 / den)
+}
+
+/// The reference torus (R = 1, r = 0.4, 48 x 24) into the given storage.
+pub fn torus_mesh<'a>(p: &'a mut [Vec3], n: &'a mut [Vec3], t: &'a mut [Triangle]) -> Mesh<'a> {
+    torus(Scalar::ONE, s(2, 5), 48, 24, p, n, t).unwrap_or(Mesh::EMPTY)
+}
+
+/// The benchmark camera: look-at from (0, 0, 2.6), 60 degrees, near 1, far 10.
+pub fn frame(w: u32, h: u32) -> Option<Frame> {
+    camera(w, h, Vec3::new(Scalar::ZERO, Scalar::ZERO, s(13, 5)))
+}
+
+fn camera(w: u32, h: u32, eye: Vec3) -> Option<Frame> {
+    let viewport = Viewport::new(w, h).ok()?;
+    let view = LookAt::new(eye, Vec3::ZERO, Vec3::Y).view().ok()?;
+    let projection = Projection::perspective(
+        Angle::from_degrees(60),
+        viewport.aspect(),
+        Scalar::ONE,
+        s(10, 1),
+    )
+    .ok()?;
+    Some(Frame::new(&view, &projection, viewport))
+}
+
+/// Frame `f` turns the torus one more degree about y: (30 + f) degrees, after 20 about x.
+pub fn torus_model(f: u32) -> Mat4 {
+    Mat4::rotation_y(Angle::from_degrees(30).wrapping_add(Angle::from_degrees(f as i32)))
+        * Mat4::rotation_x(Angle::from_degrees(20))
+}
+
+pub const ORANGE: Rgb888 = Rgb888::new(255, 160, 64);
+
+/// Ambient 0.2 and one white light towards (−1, 1, 1) at 0.8.
+pub fn sun() -> Lighting<1> {
+    let mut l = Lighting::new(LightColor::gray(s(1, 5)));
+    let _ = l.push(DirectionalLight::new(
+        Vec3::from_int(-1, 1, 1),
+        LightColor::gray(s(4, 5)),
+    ));
+    l
+}
+
+/// Ambient and three coloured lights.
+pub fn three_lights() -> Lighting<3> {
+    let mut l = Lighting::new(LightColor::gray(s(3, 20)));
+    let _ = l.push(DirectionalLight::new(
+        Vec3::from_int(-1, 0, 1),
+        LightColor::new(s(9, 10), s(1, 5), s(1, 5)),
+    ));
+    let _ = l.push(DirectionalLight::new(
+        Vec3::from_int(0, 1, 1),
+        LightColor::new(s(1, 5), s(9, 10), s(3, 10)),
+    ));
+    let _ = l.push(DirectionalLight::new(
+        Vec3::from_int(1, -1, 1),
+        LightColor::new(s(1, 5), s(3, 10), s(9, 10)),
+    ));
+    l
+}
+
+/// `full`: the torus, flat Lambert, u16 depth, into a 320x240 framebuffer.
+pub fn full(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let objects = [Object::new(mesh, torus_model(f), ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
+        .ok()
+        .map(|_| ())
+}
+
+/// `gouraud`: the torus with per-vertex normals, Gouraud shading, three coloured lights.
+pub fn gouraud(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
+    let scene = Scene::new(&objects, three_lights());
+    let p = frame(W, H)?.prepare(&scene, cache, Gouraud).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
+        .ok()
+        .map(|_| ())
+}
+
+/// `bands`: the `full` frame drawn band by band through small buffers; each band is hashed as
+/// it would be sent to the display, so the hash equals `full`'s.
+pub fn bands(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<u32> {
+    let objects = [Object::new(mesh, torus_model(f), ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    let mut hash = Fnv::new();
+    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
+    let mut y0 = 0;
+    while y0 < H {
+        let rows = BAND_ROWS.min(H - y0);
+        let (mut c, mut d) = (
+            FrameBuffer::new(&mut *color, W, rows).ok()?,
+            DepthBuffer::new(&mut *depth, W, rows).ok()?,
+        );
+        c.fill(Rgb565::BLACK);
+        d.clear();
+        p.draw(&mut ColorDepth::band(&mut c, &mut d, y0).ok()?)
+            .ok()?;
+        hash.pixels(c.pixels());
+        y0 += rows;
+    }
+    Some(hash.0)
+}
+
+/// `flat`: a convex mesh (the cube) filled flat, back-face culling only, no depth buffer.
+pub fn flat(f: u32, cache: &mut [ScreenVertex], color: &mut [Rgb565]) -> Option<()> {
+    let model = Mat4::rotation_y(Angle::from_degrees(25 + f as i32))
+        * Mat4::rotation_x(Angle::from_degrees(30));
+    let objects = [Object::new(&CUBE, model, ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    let p = camera(W, H, Vec3::from_int(0, 0, 5))?
+        .prepare(&scene, cache, Flat)
+        .ok()?;
+    let mut c = FrameBuffer::new(color, W, H).ok()?;
+    p.draw(&mut Direct::new(&mut c)).ok().map(|_| ())
+}
+
+/// `wire`: the torus's wireframe straight into a display: no framebuffer, depth or lighting.
+pub fn wire(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    display: &mut HashDisplay,
+) -> Option<()> {
+    let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
+    let scene = Scene::new(&objects, Lighting::<0>::new(LightColor::WHITE));
+    let size = display.size;
+    let p = frame(size.width, size.height)?
+        .prepare(&scene, cache, Unlit)
+        .ok()?;
+    p.draw_wireframe(display).ok().map(|_| ())
+}
+
+/// `obj`: a model parsed at start-up from OBJ text in flash (into the given storage).
+pub fn obj_mesh<'a>(p: &'a mut [Vec3], t: &'a mut [Triangle]) -> Mesh<'a> {
+    let parsed = fixed3d::obj::parse(
+        OBJ_MODEL,
+        &mut fixed3d::obj::ObjBuffers::new(&mut *p, &mut *t),
+        fixed3d::obj::Placement::AsIs,
+    );
+    let (p, t): (&'a [Vec3], &'a [Triangle]) = (p, t);
+    match parsed {
+        Ok(c) => match (p.get(..c.positions), t.get(..c.triangles)) {
+            (Some(p), Some(t)) => Mesh::new(p, t).unwrap_or(Mesh::EMPTY),
+            _ => Mesh::EMPTY,
+        },
+        Err(_) => Mesh::EMPTY,
+    }
+}
+
+/// `obj`: the parsed model, flat Lambert, u16 depth.
+pub fn obj(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let model = Mat4::rotation_y(Angle::from_degrees(10 + 3 * f as i32))
+        * Mat4::rotation_x(Angle::from_degrees(15));
+    let objects = [Object::new(mesh, model, Rgb888::new(120, 200, 255))];
+    let scene = Scene::new(&objects, sun());
+    let p = camera(W, H, Vec3::from_int(0, 1, 4))?
+        .prepare(&scene, cache, Flat)
+        .ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
+        .ok()
+        .map(|_| ())
+}

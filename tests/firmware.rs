@@ -1,0 +1,99 @@
+//! Host and target agree bit for bit: the firmware presets' frames rendered here, with the
+//! firmware's own scene code (`bench/mcu/src/scenes.rs`), hash to the values in
+//! `bench/mcu/hashes.txt`, which `bench/mcu/run.sh` (with CHECK=1) requires of the firmware
+//! running on the emulated Cortex-M0 and M4. `BLESS=1 cargo test --test firmware` rewrites the
+//! file.
+
+#[path = "../bench/mcu/src/scenes.rs"]
+#[allow(dead_code)]
+mod scenes;
+
+use embedded_graphics::geometry::Size;
+use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use fixed3d::math::Vec3;
+use fixed3d::pipeline::ScreenVertex;
+use scenes::*;
+
+fn frame_hash(fb: &[Rgb565]) -> u32 {
+    let mut h = Fnv::new();
+    h.pixels(fb);
+    h.0
+}
+
+/// Draws one frame into the cache, colour and depth buffers.
+type DrawFrame<'a> = dyn FnMut(u32, &mut [ScreenVertex], &mut [Rgb565], &mut [u16]) + 'a;
+
+fn host_hashes() -> Vec<(&'static str, u32)> {
+    let n = (W * H) as usize;
+    let (mut p, mut nrm, mut t) = (
+        vec![Vec3::ZERO; TORUS_VERTICES],
+        vec![Vec3::ZERO; TORUS_VERTICES],
+        vec![[0u16; 3]; TORUS_TRIANGLES],
+    );
+    let mesh = torus_mesh(&mut p, &mut nrm, &mut t);
+    let mut cache = vec![ScreenVertex::DEFAULT; TORUS_VERTICES];
+    let (mut fb, mut depth) = (vec![Rgb565::BLACK; n], vec![0u16; n]);
+    let mut framed = |draw: &mut DrawFrame<'_>| {
+        chain(|f| {
+            fb.fill(Rgb565::BLACK);
+            depth.fill(u16::MAX);
+            draw(f, &mut cache, &mut fb, &mut depth);
+            frame_hash(&fb)
+        })
+    };
+    let full_hash = framed(&mut |f, c, fb, d| {
+        full(&mesh, f, c, fb, d);
+    });
+    let gouraud_hash = framed(&mut |f, c, fb, d| {
+        gouraud(&mesh, f, c, fb, d);
+    });
+    let flat_hash = framed(&mut |f, c, fb, _| {
+        flat(f, c, fb);
+    });
+    let (mut op, mut ot) = ([Vec3::ZERO; 16], [[0u16; 3]; 16]);
+    let gem = obj_mesh(&mut op, &mut ot);
+    assert_eq!(gem.triangles().len(), 8);
+    let obj_hash = framed(&mut |f, c, fb, d| {
+        obj(&gem, f, c, fb, d);
+    });
+    let rows = (W * BAND_ROWS) as usize;
+    let (mut band, mut band_depth) = (vec![Rgb565::BLACK; rows], vec![0u16; rows]);
+    let bands_hash =
+        chain(|f| bands(&mesh, f, &mut cache, &mut band, &mut band_depth).unwrap_or(0));
+    let wire_hash = chain(|f| {
+        let mut display = HashDisplay {
+            hash: Fnv::new(),
+            size: Size::new(W, H),
+        };
+        wire(&mesh, f, &mut cache, &mut display);
+        display.hash.0
+    });
+    vec![
+        ("wire", wire_hash),
+        ("flat", flat_hash),
+        ("full", full_hash),
+        ("gouraud", gouraud_hash),
+        ("bands", bands_hash),
+        ("obj", obj_hash),
+    ]
+}
+
+#[test]
+fn host_hashes_match_the_firmware_file() {
+    let hashes = host_hashes();
+    let full = hashes.iter().find(|(p, _)| *p == "full").map(|h| h.1);
+    let bands = hashes.iter().find(|(p, _)| *p == "bands").map(|h| h.1);
+    assert_eq!(
+        full, bands,
+        "a frame drawn in bands is the frame drawn at once"
+    );
+    let text: String = hashes
+        .iter()
+        .map(|(p, h)| format!("{p} 0x{h:08x}\n"))
+        .collect();
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/bench/mcu/hashes.txt");
+    if std::env::var_os("BLESS").is_some() {
+        std::fs::write(path, &text).unwrap();
+    }
+    assert_eq!(std::fs::read_to_string(path).unwrap(), text);
+}
