@@ -9,7 +9,7 @@
 mod scenes;
 
 use embedded_graphics::geometry::Size;
-use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
 use fixed3d::math::Vec3;
 use fixed3d::pipeline::ScreenVertex;
 use scenes::*;
@@ -60,6 +60,13 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     let (mut band, mut band_depth) = (vec![Rgb565::BLACK; rows], vec![0u16; rows]);
     let bands_hash =
         chain(|f| bands(&mesh, f, &mut cache, &mut band, &mut band_depth).unwrap_or(0));
+    let mono_n = (MONO_W * MONO_H) as usize;
+    let (mut mono_px, mut mono_depth) = (vec![BinaryColor::Off; mono_n], vec![0u16; mono_n]);
+    let display_chain = chain(|f| {
+        let colour = bands(&mesh, f, &mut cache, &mut band, &mut band_depth).unwrap_or(0);
+        mono(&mesh, f, &mut cache, &mut mono_px, &mut mono_depth);
+        display_hash(colour, mono_hash(&mono_px))
+    });
     let wire_hash = chain(|f| {
         let mut display = HashDisplay {
             hash: Fnv::new(),
@@ -68,13 +75,30 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         wire(&mesh, f, &mut cache, &mut display);
         display.hash.0
     });
+    let (mut sp, mut sn, mut st) = (
+        vec![Vec3::ZERO; SMALL_VERTICES],
+        vec![Vec3::ZERO; SMALL_VERTICES],
+        vec![[0u16; 3]; SMALL_TRIANGLES],
+    );
+    let small = small_torus_mesh(&mut sp, &mut sn, &mut st);
+    let mut small_cache = vec![ScreenVertex::DEFAULT; SMALL_VERTICES];
+    let microbit_hash = chain(|f| {
+        let mut display = HashDisplay {
+            hash: Fnv::new(),
+            size: Size::new(SMALL_W, SMALL_H),
+        };
+        wire(&small, f, &mut small_cache, &mut display);
+        display.hash.0
+    });
     vec![
         ("wire", wire_hash),
+        ("wire@microbit", microbit_hash),
         ("flat", flat_hash),
         ("full", full_hash),
         ("gouraud", gouraud_hash),
         ("bands", bands_hash),
         ("obj", obj_hash),
+        ("display", display_chain),
     ]
 }
 

@@ -5,6 +5,7 @@
 #   bench/mcu/run.sh setup       # once per machine: qemu-system-arm, binutils, rustup targets
 #   bench/mcu/run.sh             # every preset on thumbv6m-none-eabi and thumbv7em-none-eabihf
 #   PRESETS="full wire" TARGETS=thumbv6m-none-eabi bench/mcu/run.sh
+#   BOARD=microbit bench/mcu/run.sh   # `wire` on the micro:bit model: a real Cortex-M0, 16 KiB RAM
 #   CHECK=1 bench/mcu/run.sh     # fail if a hash differs from bench/mcu/hashes.txt (the host's)
 #                                # or a library's flash exceeds its budget in docs/footprint.md
 #
@@ -28,12 +29,20 @@ if [[ "${1:-}" == setup ]]; then
     exit 0
 fi
 
-TARGETS=${TARGETS:-"thumbv6m-none-eabi thumbv7em-none-eabihf"}
-PRESETS=${PRESETS:-"wire flat full gouraud bands obj"}
+BOARD=${BOARD:-mps2}
+if [[ $BOARD == microbit ]]; then
+    TARGETS=${TARGETS:-thumbv6m-none-eabi}
+    PRESETS=${PRESETS:-wire} # the others need more than 16 KiB of RAM
+    features=(--no-default-features --features board-microbit)
+else
+    TARGETS=${TARGETS:-"thumbv6m-none-eabi thumbv7em-none-eabihf"}
+    PRESETS=${PRESETS:-"wire flat full gouraud bands obj display"}
+    features=()
+fi
 OPT=${OPT:-s}
 CHECK=${CHECK:-0}
 QEMU_TIMEOUT=${QEMU_TIMEOUT:-600}
-TARGET_DIR=${CARGO_TARGET_DIR:-$here/target}
+TARGET_DIR=${CARGO_TARGET_DIR:-$here/target}/$BOARD
 RESULTS=${RESULTS:-$here/target/results.tsv}
 
 for tool in qemu-system-arm size cargo; do
@@ -41,6 +50,11 @@ for tool in qemu-system-arm size cargo; do
 done
 
 machine_for() {
+    if [[ $BOARD == microbit ]]; then
+        [[ $1 == thumbv6m-none-eabi ]] && { echo microbit; return; }
+        echo "the micro:bit runs thumbv6m-none-eabi only" >&2
+        return 1
+    fi
     case "$1" in
         thumbv6m-none-eabi | thumbv7m-none-eabi) echo mps2-an385 ;; # Cortex-M3 runs v6-M code
         thumbv7em-none-eabi | thumbv7em-none-eabihf) echo mps2-an386 ;; # Cortex-M4F
@@ -64,7 +78,9 @@ mkdir -p "$(dirname "$RESULTS")"
 status=0
 for target in $TARGETS; do
     machine=$(machine_for "$target")
-    cargo build --quiet --profile "release-$OPT" --target "$target" --target-dir "$TARGET_DIR" --bins
+    bins=(--bin baseline)
+    for preset in $PRESETS; do bins+=(--bin "$preset"); done
+    cargo build --quiet --profile "release-$OPT" --target "$target" --target-dir "$TARGET_DIR" "${bins[@]}" ${features[@]+"${features[@]}"}
     out=$TARGET_DIR/$target/release-$OPT
     read -r base_flash _ < <(sizes "$out/baseline")
     for preset in $PRESETS; do
@@ -84,10 +100,13 @@ for target in $TARGETS; do
         ipf=$(field instructions_per_frame)
         hash=$(field hash)
         stack=$(field stack)
-        echo "preset=$preset target=$target lib_flash=$lib_flash static_ram=$ram stack=$stack instructions_per_frame=$ipf hash=$hash"
+        [[ $BOARD == mps2 ]] || target_label="$target@$BOARD"
+        echo "preset=$preset target=${target_label:-$target} lib_flash=$lib_flash static_ram=$ram stack=$stack instructions_per_frame=$ipf hash=$hash"
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$preset" "$target" "$OPT" "$lib_flash" "$ram" "$stack" "$ipf" "$hash" >>"$RESULTS"
         if [[ $CHECK == 1 ]]; then
-            expect=$(awk -v p="$preset" '$1==p {print $2}' "$here/hashes.txt")
+            key=$preset
+            [[ $BOARD == mps2 ]] || key="$preset@$BOARD"
+            expect=$(awk -v p="$key" '$1==p {print $2}' "$here/hashes.txt")
             if [[ "$hash" != "$expect" ]]; then
                 echo "  hash $hash differs from the host's $expect" >&2
                 status=1

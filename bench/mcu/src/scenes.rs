@@ -4,7 +4,7 @@
 
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{OriginDimensions, Size};
-use embedded_graphics::pixelcolor::{IntoStorage, Rgb565, Rgb888, RgbColor};
+use embedded_graphics::pixelcolor::{BinaryColor, IntoStorage, Rgb565, Rgb888, RgbColor};
 use embedded_graphics::Pixel;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
@@ -103,6 +103,23 @@ fn s(v: i32, den: i32) -> Scalar {
 /// The reference torus (R = 1, r = 0.4, 48 x 24) into the given storage.
 pub fn torus_mesh<'a>(p: &'a mut [Vec3], n: &'a mut [Vec3], t: &'a mut [Triangle]) -> Mesh<'a> {
     torus(Scalar::ONE, s(2, 5), 48, 24, p, n, t).unwrap_or(Mesh::EMPTY)
+}
+
+/// The `wire` preset on the micro:bit (16 KiB of RAM): a 16 x 8 torus on a 64x48 display.
+pub const SMALL_RING: u16 = 16;
+pub const SMALL_TUBE: u16 = 8;
+pub const SMALL_VERTICES: usize = 16 * 8;
+pub const SMALL_TRIANGLES: usize = 2 * SMALL_VERTICES;
+pub const SMALL_W: u32 = 64;
+pub const SMALL_H: u32 = 48;
+
+/// The micro:bit's smaller torus into the given storage.
+pub fn small_torus_mesh<'a>(
+    p: &'a mut [Vec3],
+    n: &'a mut [Vec3],
+    t: &'a mut [Triangle],
+) -> Mesh<'a> {
+    torus(Scalar::ONE, s(2, 5), SMALL_RING, SMALL_TUBE, p, n, t).unwrap_or(Mesh::EMPTY)
 }
 
 /// The benchmark camera: look-at from (0, 0, 2.6), 60 degrees, near 1, far 10.
@@ -208,6 +225,18 @@ pub fn bands(
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> Option<u32> {
+    bands_into(mesh, f, cache, color, depth, |_, _, _| {})
+}
+
+/// [`bands`], handing each finished band (its pixels, first row and row count) to `send`.
+pub fn bands_into(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+    mut send: impl FnMut(&[Rgb565], u32, u32),
+) -> Option<u32> {
     let objects = [Object::new(mesh, torus_model(f), ORANGE)];
     let scene = Scene::new(&objects, sun());
     let mut hash = Fnv::new();
@@ -224,6 +253,7 @@ pub fn bands(
         p.draw(&mut ColorDepth::band(&mut c, &mut d, y0).ok()?)
             .ok()?;
         hash.pixels(c.pixels());
+        send(c.pixels(), y0, rows);
         y0 += rows;
     }
     Some(hash.0)
@@ -297,4 +327,52 @@ pub fn obj(
     p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
         .ok()
         .map(|_| ())
+}
+
+/// The SSD1306 frame of the `display` preset: 128x64, one bit per pixel.
+pub const MONO_W: u32 = 128;
+pub const MONO_H: u32 = 64;
+
+/// The torus on a 128x64 one-bit display: Gouraud shading through an ordered dither.
+pub fn mono(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [BinaryColor],
+    depth: &mut [u16],
+) -> Option<()> {
+    let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
+    let mut light = Lighting::<1>::new(LightColor::gray(s(1, 20)));
+    let _ = light.push(DirectionalLight::new(
+        Vec3::from_int(-1, 1, 1),
+        LightColor::gray(s(19, 20)),
+    ));
+    let scene = Scene::new(&objects, light);
+    let p = frame(MONO_W, MONO_H)?
+        .prepare(&scene, cache, Gouraud)
+        .ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, MONO_W, MONO_H).ok()?,
+        DepthBuffer::new(depth, MONO_W, MONO_H).ok()?,
+    );
+    c.fill(BinaryColor::Off);
+    d.clear();
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?.dithered())
+        .ok()
+        .map(|_| ())
+}
+
+/// Hash of a one-bit frame.
+pub fn mono_hash(px: &[BinaryColor]) -> u32 {
+    let mut h = Fnv::new();
+    for p in px {
+        h.write(p.is_on() as u32);
+    }
+    h.0
+}
+
+/// The `display` preset's hash of one frame: the colour bands sent to the ILI9341 and the
+/// one-bit frame sent to the SSD1306.
+pub fn display_hash(bands: u32, mono: u32) -> u32 {
+    bands ^ mono.rotate_left(16)
 }

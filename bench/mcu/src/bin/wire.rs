@@ -1,21 +1,38 @@
-//! Preset `wire`: the torus wireframe straight into a display (a hashing stand-in): no framebuffer, no depth, no lighting.
+//! Preset `wire`: the torus wireframe straight into a display (a hashing stand-in): no
+//! framebuffer, no depth, no lighting. On the micro:bit (16 KiB of RAM) a 16 x 8 torus on a
+//! 64x48 display.
 #![no_std]
 #![no_main]
 
 use core::ptr::addr_of_mut;
 
 use cortex_m_rt::entry;
-
-#[allow(unused_imports)]
+use embedded_graphics::geometry::Size;
 use fixed3d::{math::Vec3, pipeline::ScreenVertex};
 use mcu_bench::scenes::*;
 use mcu_bench::Op;
 use panic_semihosting as _;
 
-static mut CACHE: [ScreenVertex; TORUS_VERTICES] = [ScreenVertex::DEFAULT; TORUS_VERTICES];
-static mut POS: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut NOR: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut TRI: [[u16; 3]; TORUS_TRIANGLES] = [[0; 3]; TORUS_TRIANGLES];
+#[cfg(not(feature = "board-microbit"))]
+mod size {
+    pub const VERTICES: usize = super::TORUS_VERTICES;
+    pub const TRIANGLES: usize = super::TORUS_TRIANGLES;
+    pub const DISPLAY: (u32, u32) = (super::W, super::H);
+    pub use mcu_bench::scenes::torus_mesh as mesh;
+}
+
+#[cfg(feature = "board-microbit")]
+mod size {
+    pub const VERTICES: usize = super::SMALL_VERTICES;
+    pub const TRIANGLES: usize = super::SMALL_TRIANGLES;
+    pub const DISPLAY: (u32, u32) = (super::SMALL_W, super::SMALL_H);
+    pub use mcu_bench::scenes::small_torus_mesh as mesh;
+}
+
+static mut CACHE: [ScreenVertex; size::VERTICES] = [ScreenVertex::DEFAULT; size::VERTICES];
+static mut POS: [Vec3; size::VERTICES] = [Vec3::ZERO; size::VERTICES];
+static mut NOR: [Vec3; size::VERTICES] = [Vec3::ZERO; size::VERTICES];
+static mut TRI: [[u16; 3]; size::TRIANGLES] = [[0; 3]; size::TRIANGLES];
 
 #[entry]
 fn main() -> ! {
@@ -28,10 +45,11 @@ fn main() -> ! {
             &mut *addr_of_mut!(TRI),
         )
     };
-    let mesh = torus_mesh(pos, nor, tri);
+    let mesh = size::mesh(pos, nor, tri);
+    let (w, h) = size::DISPLAY;
     let mut display = HashDisplay {
         hash: Fnv::new(),
-        size: embedded_graphics::geometry::Size::new(W, H),
+        size: Size::new(w, h),
     };
     mcu_bench::run("wire", |op| match op {
         Op::Clear => {
