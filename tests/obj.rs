@@ -19,37 +19,63 @@ struct Parsed {
     tri_texcoords: Vec<[u16; 3]>,
 }
 
+/// Owned storage for a parse, of one capacity for everything.
+struct Store {
+    positions: Vec<Vec3>,
+    normals: Vec<Vec3>,
+    texcoords: Vec<[Scalar; 2]>,
+    triangles: Vec<[u16; 3]>,
+    tri_normals: Vec<[u16; 3]>,
+    tri_texcoords: Vec<[u16; 3]>,
+}
+
+impl Store {
+    fn new(cap: usize) -> Self {
+        Store {
+            positions: vec![Vec3::ZERO; cap],
+            normals: vec![Vec3::ZERO; cap],
+            texcoords: vec![[Scalar::ZERO; 2]; cap],
+            triangles: vec![[0u16; 3]; cap],
+            tri_normals: vec![[0u16; 3]; cap],
+            tri_texcoords: vec![[0u16; 3]; cap],
+        }
+    }
+
+    fn buffers(&mut self) -> ObjBuffers<'_> {
+        ObjBuffers {
+            positions: &mut self.positions,
+            texcoords: &mut self.texcoords,
+            normals: &mut self.normals,
+            triangles: &mut self.triangles,
+            triangle_texcoords: &mut self.tri_texcoords,
+            triangle_normals: &mut self.tri_normals,
+        }
+    }
+
+    /// What the parse wrote, cut to its counts.
+    fn parsed(mut self, counts: ObjCounts) -> Parsed {
+        self.positions.truncate(counts.positions);
+        self.normals.truncate(counts.normals);
+        self.texcoords.truncate(counts.texcoords);
+        self.triangles.truncate(counts.triangles);
+        self.tri_normals.truncate(counts.triangles);
+        self.tri_texcoords.truncate(counts.triangles);
+        Parsed {
+            counts,
+            positions: self.positions,
+            normals: self.normals,
+            texcoords: self.texcoords,
+            triangles: self.triangles,
+            tri_normals: self.tri_normals,
+            tri_texcoords: self.tri_texcoords,
+        }
+    }
+}
+
 fn parse_with(text: &[u8], cap: usize) -> Result<Parsed, ObjError> {
-    let mut positions = vec![Vec3::ZERO; cap];
-    let mut normals = vec![Vec3::ZERO; cap];
-    let mut texcoords = vec![[Scalar::ZERO; 2]; cap];
-    let mut triangles = vec![[0u16; 3]; cap];
-    let mut tri_normals = vec![[0u16; 3]; cap];
-    let mut tri_texcoords = vec![[0u16; 3]; cap];
-    let mut b = ObjBuffers {
-        positions: &mut positions,
-        texcoords: &mut texcoords,
-        normals: &mut normals,
-        triangles: &mut triangles,
-        triangle_texcoords: &mut tri_texcoords,
-        triangle_normals: &mut tri_normals,
-    };
-    let counts = parse(text, &mut b, Placement::AsIs)?;
-    positions.truncate(counts.positions);
-    normals.truncate(counts.normals);
-    texcoords.truncate(counts.texcoords);
-    triangles.truncate(counts.triangles);
-    tri_normals.truncate(counts.triangles);
-    tri_texcoords.truncate(counts.triangles);
-    Ok(Parsed {
-        counts,
-        positions,
-        normals,
-        texcoords,
-        triangles,
-        tri_normals,
-        tri_texcoords,
-    })
+    let mut store = Store::new(cap);
+    let counts = parse(text, &mut store.buffers(), Placement::AsIs)?;
+    Ok(store.parsed(counts))
 }
 
 fn p(text: &str) -> Result<Parsed, ObjError> {
@@ -648,46 +674,22 @@ fn parse_stream<const N: usize>(
     cap: usize,
 ) -> Result<Parsed, ObjError> {
     use fixed3d::obj::ObjStream;
-    let mut positions = vec![Vec3::ZERO; cap];
-    let mut normals = vec![Vec3::ZERO; cap];
-    let mut texcoords = vec![[Scalar::ZERO; 2]; cap];
-    let mut triangles = vec![[0u16; 3]; cap];
-    let mut tri_normals = vec![[0u16; 3]; cap];
-    let mut tri_texcoords = vec![[0u16; 3]; cap];
-    let mut b = ObjBuffers {
-        positions: &mut positions,
-        texcoords: &mut texcoords,
-        normals: &mut normals,
-        triangles: &mut triangles,
-        triangle_texcoords: &mut tri_texcoords,
-        triangle_normals: &mut tri_normals,
+    let mut store = Store::new(cap);
+    let counts = {
+        let mut b = store.buffers();
+        let mut stream = ObjStream::<N>::new(Placement::AsIs);
+        let mut rest = text;
+        let mut k = 0;
+        while !rest.is_empty() {
+            let n = chunks[k % chunks.len()].clamp(1, rest.len());
+            let (head, tail) = rest.split_at(n);
+            stream.push(head, &mut b)?;
+            rest = tail;
+            k += 1;
+        }
+        stream.finish(&mut b)?
     };
-    let mut stream = ObjStream::<N>::new(Placement::AsIs);
-    let mut rest = text;
-    let mut k = 0;
-    while !rest.is_empty() {
-        let n = chunks[k % chunks.len()].clamp(1, rest.len());
-        let (head, tail) = rest.split_at(n);
-        stream.push(head, &mut b)?;
-        rest = tail;
-        k += 1;
-    }
-    let counts = stream.finish(&mut b)?;
-    positions.truncate(counts.positions);
-    normals.truncate(counts.normals);
-    texcoords.truncate(counts.texcoords);
-    triangles.truncate(counts.triangles);
-    tri_normals.truncate(counts.triangles);
-    tri_texcoords.truncate(counts.triangles);
-    Ok(Parsed {
-        counts,
-        positions,
-        normals,
-        texcoords,
-        triangles,
-        tri_normals,
-        tri_texcoords,
-    })
+    Ok(store.parsed(counts))
 }
 
 fn same_result(a: &Result<Parsed, ObjError>, b: &Result<Parsed, ObjError>) -> bool {

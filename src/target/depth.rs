@@ -28,23 +28,36 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         start: i64,
         step: i64,
         test: DepthTest,
-        mut next_color: impl FnMut() -> C,
+        next_color: impl FnMut() -> C,
     ) -> u32 {
-        let mut acc = start;
-        let mut written = 0;
-        let le = test == DepthTest::LessOrEqual;
-        for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
-            let z = Self::from_interpolated(acc);
-            acc = acc.wrapping_add(step);
-            let color = next_color();
-            if z < *d || (le && z == *d) {
-                *d = z;
-                *c = color;
-                written += 1;
-            }
-        }
-        written
+        clamped_span(depths, colors, start, step, test, next_color)
     }
+}
+
+/// The general span loop: every pixel's depth converted (rounded and clamped) on its own.
+#[inline(always)]
+fn clamped_span<D: DepthFormat, C: Copy>(
+    depths: &mut [D],
+    colors: &mut [C],
+    start: i64,
+    step: i64,
+    test: DepthTest,
+    mut next_color: impl FnMut() -> C,
+) -> u32 {
+    let mut acc = start;
+    let mut written = 0;
+    let le = test == DepthTest::LessOrEqual;
+    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
+        let z = D::from_interpolated(acc);
+        acc = acc.wrapping_add(step);
+        let color = next_color();
+        if z < *d || (le && z == *d) {
+            *d = z;
+            *c = color;
+            written += 1;
+        }
+    }
+    written
 }
 
 impl sealed::Sealed for u16 {}
@@ -78,20 +91,7 @@ impl DepthFormat for u16 {
         let in_range = |v: i64| (0..=i32::MAX as i64).contains(&v);
         if !(in_range(a) && in_range(last) && i32::try_from(st).is_ok()) {
             // Ends outside [0, 65536): clamp pixel by pixel.
-            let mut acc = start;
-            let mut written = 0;
-            let le = test == DepthTest::LessOrEqual;
-            for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
-                let z = Self::from_interpolated(acc);
-                acc = acc.wrapping_add(step);
-                let color = next_color();
-                if z < *d || (le && z == *d) {
-                    *d = z;
-                    *c = color;
-                    written += 1;
-                }
-            }
-            return written;
+            return clamped_span(depths, colors, start, step, test, next_color);
         }
         let (mut acc, st) = (a as i32, st as i32);
         let mut written = 0;
