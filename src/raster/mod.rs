@@ -165,25 +165,33 @@ pub(crate) struct RationalStepper {
 impl RationalStepper {
     /// Starts at `n0 / den` (den > 0, den < 2³¹; the quotient and `step / den` must fit i32).
     pub(crate) fn new(n0: i64, den: i64, step: i64, ceil: bool) -> Self {
-        let (value, rem) = if ceil {
-            let q = ceil_div(n0, den);
-            (q, q * den - n0)
-        } else {
-            let q = floor_div(n0, den);
-            (q, n0 - q * den)
-        };
-        // For ceil the step subtracts from rem (rem = qD − N), for floor it adds.
-        let sq = floor_div(step, den);
-        let sr = step - sq * den;
+        // Callers pass den ≥ 1; the guard keeps a wrong call from dividing by zero.
+        let den = den.max(1);
+        // One 64-bit division (quotient and remainder together), then the floor/ceil fix-up.
+        let (mut q, mut r) = (n0 / den, n0 % den);
+        if r < 0 {
+            q -= 1;
+            r += den;
+        }
+        // Now n0 = q·den + r with 0 ≤ r < den.
+        let (value, rem) = if ceil && r != 0 { (q + 1, den - r) } else { (q, r) };
+        // For ceil the step subtracts from rem (rem = qD − N), for floor it adds. The step and
+        // the denominator fit i32 (see below): a 32-bit division.
+        let (step32, den32) = (step as i32, den as i32);
+        let (mut sq, mut sr) = (step32 / den32, step32 % den32);
+        if sr < 0 {
+            sq -= 1;
+            sr += den32;
+        }
         // Callers keep coordinates within ±COORD_LIMIT (2²⁴ sub-pixels): the denominator is
         // below 2²⁹, remainders below it, quotients (pixel coordinates) below 2²¹ and steps below
         // 2²⁹, so every value fits i32 and the casts are exact.
         RationalStepper {
             value: value as i32,
             rem: rem as i32,
-            den: den as i32,
-            step_q: sq as i32,
-            step_r: sr as i32,
+            den: den32,
+            step_q: sq,
+            step_r: sr,
             ceil,
         }
     }
