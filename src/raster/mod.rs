@@ -174,7 +174,11 @@ impl RationalStepper {
             r += den;
         }
         // Now n0 = q·den + r with 0 ≤ r < den.
-        let (value, rem) = if ceil && r != 0 { (q + 1, den - r) } else { (q, r) };
+        let (value, rem) = if ceil && r != 0 {
+            (q + 1, den - r)
+        } else {
+            (q, r)
+        };
         // For ceil the step subtracts from rem (rem = qD − N), for floor it adds. The step and
         // the denominator fit i32 (see below): a 32-bit division.
         let (step32, den32) = (step as i32, den as i32);
