@@ -7,6 +7,11 @@
 //!
 //! One frame is `clear_buffers` (colour and depth) then `draw_scene` (vertex stage, culling,
 //! shading, rasterising); both are `#[inline(never)]` so that a profiler can count them apart.
+//! The same scene is then drawn by the crate's f64 reference renderer, timed side by side.
+
+#[path = "common/reference.rs"]
+#[allow(dead_code)]
+mod reference;
 
 use std::time::Instant;
 
@@ -104,5 +109,56 @@ fn main() {
         stats.drawn,
         stats.fragments,
         stats.written
+    );
+    if std::env::var_os("NO_REFERENCE").is_none() {
+        reference_side_by_side(&p, &t, model, n.min(20), times[n / 2]);
+    }
+}
+
+/// The same frame drawn by the f64 reference (same vertices, model matrix applied in f64).
+fn reference_side_by_side(
+    positions: &[Vec3],
+    triangles: &[[u16; 3]],
+    model: Mat4,
+    n: usize,
+    ours: std::time::Duration,
+) {
+    let m = model.to_bits().map(|r| r.map(|c| c as f64 / 65536.0));
+    let world: Vec<[f64; 3]> = positions
+        .iter()
+        .map(|p| {
+            let v = p.to_bits().map(|c| c as f64 / 65536.0);
+            [0, 1, 2].map(|i| m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2] + m[i][3])
+        })
+        .collect();
+    let tris: Vec<[[f64; 3]; 3]> = triangles
+        .iter()
+        .map(|t| t.map(|i| world[i as usize]))
+        .collect();
+    let cam = reference::Camera::new(
+        [0.0, 0.0, 2.6],
+        [0.0; 3],
+        [0.0, 1.0, 0.0],
+        60.0,
+        1.0,
+        10.0,
+        W,
+        H,
+    );
+    let mut times = Vec::with_capacity(n);
+    let mut covered = 0;
+    for _ in 0..n {
+        let started = Instant::now();
+        let img =
+            reference::render_flat(&cam, &tris, [255, 160, 64], 0.2, &[([-1.0, 1.0, 1.0], 0.8)]);
+        times.push(started.elapsed());
+        covered = img.color.iter().filter(|c| c.is_some()).count();
+    }
+    times.sort();
+    let median = times[n / 2];
+    println!(
+        "f64 reference, same scene: median {} us per frame ({:.1}x the fixed-point time); covered {covered} pixels",
+        median.as_micros(),
+        median.as_secs_f64() / ours.as_secs_f64().max(1e-9)
     );
 }

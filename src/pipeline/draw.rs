@@ -174,6 +174,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
 
     /// Culls, shades and fills one screen triangle of `tri` (the whole triangle, or a piece of
     /// it after clipping): vertices are (snapped position, depth, colour).
+    // Not inlined: one call per triangle costs little and keeps the stage measurable.
+    #[inline(never)]
     fn fill_face<T: RasterTarget>(
         &self,
         target: &mut T,

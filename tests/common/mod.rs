@@ -4,6 +4,7 @@
 #![allow(dead_code)]
 
 pub mod golden;
+#[path = "../../examples/common/reference.rs"]
 pub mod reference;
 pub mod scene;
 pub mod world;

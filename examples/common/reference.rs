@@ -1,7 +1,10 @@
-//! An independent float64 reference for whole-pipeline tests: f64 look-at and perspective,
-//! f64 near-plane clipping, no snapping. Each pixel is classified like dEQP does: FULL or NONE
-//! when every edge is further than `tol` pixels from its centre, PARTIAL otherwise (anything
-//! goes there: snapping may move an edge by up to half a sub-pixel).
+//! The crate's independent float64 reference, for tests, benchmarks and reports: f64 look-at and
+//! perspective, f64 near-plane clipping, no snapping, and a renderer written as a different
+//! algorithm from the crate's (per-pixel edge functions over each triangle's bounding box,
+//! depth from barycentric weights, flat Lambert in f64). For tests, each pixel can also be
+//! classified like dEQP does: FULL or NONE when every edge is further than `tol` pixels from its
+//! centre, PARTIAL otherwise (anything goes there: snapping may move an edge by up to half a
+//! sub-pixel).
 #![allow(dead_code)]
 
 pub type V3 = [f64; 3];
@@ -169,4 +172,109 @@ pub fn depth_at(poly: &[[f64; 3]], px: i32, py: i32) -> f64 {
     let l1 = ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / det;
     let l2 = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / det;
     a[2] + l1 * (b[2] - a[2]) + l2 * (c[2] - a[2])
+}
+
+/// What the reference renderer produced.
+pub struct RefImage {
+    pub width: u32,
+    pub height: u32,
+    /// RGB per pixel (`None`: background).
+    pub color: Vec<Option<[u8; 3]>>,
+    /// z/w per pixel (1.0 where nothing was drawn).
+    pub depth: Vec<f64>,
+    /// Front-facing triangles after clipping.
+    pub drawn: usize,
+}
+
+/// Renders triangles (world space, counter-clockwise front) with back-face culling, a
+/// depth buffer (strictly nearer wins) and flat Lambert shading:
+/// `colour = floor(base · clamp(ambient + Σ intensity · max(0, n·l)))` per channel.
+pub fn render_flat(
+    cam: &Camera,
+    tris: &[[V3; 3]],
+    base: [u8; 3],
+    ambient: f64,
+    lights: &[(V3, f64)],
+) -> RefImage {
+    let (w, h) = (cam.width as usize, cam.height as usize);
+    let mut img = RefImage {
+        width: cam.width as u32,
+        height: cam.height as u32,
+        color: vec![None; w * h],
+        depth: vec![1.0; w * h],
+        drawn: 0,
+    };
+    let lights: Vec<(V3, f64)> = lights.iter().map(|(d, i)| (norm(*d), *i)).collect();
+    for t in tris {
+        let poly = cam.project_triangle(*t);
+        if poly.len() < 3 || polygon_area(&poly) >= 0.0 {
+            continue; // behind the camera, degenerate or back-facing (y down: front is negative)
+        }
+        img.drawn += 1;
+        let n = norm(cross(sub(t[1], t[0]), sub(t[2], t[0])));
+        let s = (ambient
+            + lights
+                .iter()
+                .map(|(l, i)| i * dot(n, *l).max(0.0))
+                .sum::<f64>())
+        .clamp(0.0, 1.0);
+        let rgb = base.map(|c| (c as f64 * s).floor() as u8);
+        for k in 1..poly.len() - 1 {
+            fill(&mut img, [poly[0], poly[k], poly[k + 1]], rgb);
+        }
+    }
+    img
+}
+
+/// One screen triangle by per-pixel edge functions over its bounding box.
+fn fill(img: &mut RefImage, p: [[f64; 3]; 3], rgb: [u8; 3]) {
+    let (w, h) = (img.width as i64, img.height as i64);
+    let area =
+        (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+    if area == 0.0 {
+        return;
+    }
+    let x0 = p
+        .iter()
+        .map(|v| v[0])
+        .fold(f64::INFINITY, f64::min)
+        .floor()
+        .max(0.0) as i64;
+    let x1 = p
+        .iter()
+        .map(|v| v[0])
+        .fold(f64::NEG_INFINITY, f64::max)
+        .ceil()
+        .min(w as f64) as i64;
+    let y0 = p
+        .iter()
+        .map(|v| v[1])
+        .fold(f64::INFINITY, f64::min)
+        .floor()
+        .max(0.0) as i64;
+    let y1 = p
+        .iter()
+        .map(|v| v[1])
+        .fold(f64::NEG_INFINITY, f64::max)
+        .ceil()
+        .min(h as f64) as i64;
+    for py in y0..y1 {
+        for px in x0..x1 {
+            let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
+            // Barycentric weights, each positive inside whatever the winding.
+            let e = |a: [f64; 3], b: [f64; 3]| {
+                ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])) / area
+            };
+            let (l0, l1, l2) = (e(p[1], p[2]), e(p[2], p[0]), e(p[0], p[1]));
+            if l0 < 0.0 || l1 < 0.0 || l2 < 0.0 {
+                continue;
+            }
+            let z = l0 * p[0][2] + l1 * p[1][2] + l2 * p[2][2];
+            let i = (py * w + px) as usize;
+            if z < img.depth[i] {
+                img.depth[i] = z;
+                img.color[i] = Some(rgb);
+            }
+        }
+    }
 }
