@@ -10,7 +10,6 @@
 //! The same scene is then drawn by the crate's f64 reference renderer, timed side by side.
 
 #[path = "common/reference.rs"]
-#[allow(dead_code)]
 mod reference;
 
 use std::time::Instant;
