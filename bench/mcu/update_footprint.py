@@ -1,0 +1,35 @@
+#!/usr/bin/env python3
+"""Rewrites the numbers of docs/footprint.md's table (and its goal rows) from run.sh output.
+
+    bench/mcu/run.sh > results.txt; BOARD=microbit bench/mcu/run.sh >> results.txt
+    python3 bench/mcu/update_footprint.py results.txt
+"""
+import re
+import sys
+from pathlib import Path
+
+rows = {}
+for line in Path(sys.argv[1]).read_text().splitlines():
+    m = re.match(r"preset=(\S+) target=(\S+) lib_flash=(\d+) static_ram=(\d+) stack=(\d+) instructions_per_frame=(\d+)", line)
+    if m:
+        rows[(m.group(1), m.group(2))] = [int(m.group(i)) for i in range(3, 7)]
+
+doc = Path(__file__).resolve().parent.parent.parent / "docs" / "footprint.md"
+triples = {"thumbv6m": "thumbv6m-none-eabi", "thumbv7em": "thumbv7em-none-eabihf"}
+out = []
+for line in doc.read_text().split("\n"):
+    m = re.match(r"^\| `(\w+)` \|(.*)\| (thumbv6m|thumbv7em) \| [\d,]+ \| [\d,]+ \| [\d,]+ \| [\d,]+ \|$", line)
+    if m:
+        preset, desc, short = m.groups()
+        key = (preset, "thumbv6m-none-eabi@microbit" if "micro:bit" in desc else triples[short])
+        if key in rows:
+            v = rows[key]
+            line = f"| `{preset}` |{desc}| {short} | {v[0]:,} | {v[1]:,} | {v[2]:,} | {v[3]:,} |"
+    m = re.match(r"^\| thumbv6m library flash, `(\w+)` at most (\d+) KiB \| [\d,]+ B \| (.*) \|$", line)
+    if m and (m.group(1), "thumbv6m-none-eabi") in rows:
+        flash = rows[(m.group(1), "thumbv6m-none-eabi")][0]
+        status = "reached" if flash <= int(m.group(2)) * 1024 else "not reached"
+        line = f"| thumbv6m library flash, `{m.group(1)}` at most {m.group(2)} KiB | {flash:,} B | {status} |"
+    out.append(line)
+doc.write_text("\n".join(out))
+print(f"updated {doc} from {len(rows)} results")
