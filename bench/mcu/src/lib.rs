@@ -344,3 +344,29 @@ pub fn run(preset: &str, mut op: impl FnMut(Op) -> u32) -> ! {
 fn frame(op: &mut impl FnMut(Op) -> u32, f: u32) {
     core::hint::black_box(op(Op::Draw(f)));
 }
+
+/// Declares statics inside a block and borrows each once: `storage!(NAME: Type = init, ...)`
+/// gives a tuple of `&'static mut` references. Use it once, at start-up in `main`.
+#[macro_export]
+macro_rules! storage {
+    ($($name:ident : $ty:ty = $init:expr),+ $(,)?) => {{
+        $(static mut $name: $ty = $init;)+
+        // SAFETY: the statics are declared in this block, which `main` runs once: these are the
+        // only references ever taken to them.
+        unsafe { ($(&mut *core::ptr::addr_of_mut!($name)),+) }
+    }};
+}
+
+/// The torus's storage (vertex cache, positions, normals, triangles).
+#[macro_export]
+macro_rules! torus_storage {
+    () => {
+        $crate::storage!(
+            CACHE: [fixed3d::pipeline::ScreenVertex; $crate::scenes::TORUS_VERTICES] =
+                [fixed3d::pipeline::ScreenVertex::DEFAULT; $crate::scenes::TORUS_VERTICES],
+            POS: [fixed3d::math::Vec3; $crate::scenes::TORUS_VERTICES] = [fixed3d::math::Vec3::ZERO; $crate::scenes::TORUS_VERTICES],
+            NOR: [fixed3d::math::Vec3; $crate::scenes::TORUS_VERTICES] = [fixed3d::math::Vec3::ZERO; $crate::scenes::TORUS_VERTICES],
+            TRI: [[u16; 3]; $crate::scenes::TORUS_TRIANGLES] = [[0; 3]; $crate::scenes::TORUS_TRIANGLES],
+        )
+    };
+}

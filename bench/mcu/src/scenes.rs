@@ -60,6 +60,13 @@ impl Fnv {
     }
 }
 
+/// The hash of a colour frame.
+pub fn frame_hash(px: &[Rgb565]) -> u32 {
+    let mut h = Fnv::new();
+    h.pixels(px);
+    h.0
+}
+
 impl Default for Fnv {
     fn default() -> Self {
         Fnv::new()
@@ -176,6 +183,25 @@ pub fn three_lights() -> Lighting<3> {
     l
 }
 
+/// Draws `scene` through `frame` into a 320x240 framebuffer with a u16 depth buffer.
+fn depth_frame<const N: usize, S: fixed3d::shade::Shading>(
+    frame: Frame,
+    scene: &Scene<'_, N>,
+    shading: S,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let p = frame.prepare(scene, cache, shading).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
+        .ok()
+        .map(|_| ())
+}
+
 /// `full`: the torus, flat Lambert, u16 depth, into a 320x240 framebuffer.
 pub fn full(
     mesh: &Mesh<'_>,
@@ -185,15 +211,14 @@ pub fn full(
     depth: &mut [u16],
 ) -> Option<()> {
     let objects = [Object::new(mesh, torus_model(f), ORANGE)];
-    let scene = Scene::new(&objects, sun());
-    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
-    let (mut c, mut d) = (
-        FrameBuffer::new(color, W, H).ok()?,
-        DepthBuffer::new(depth, W, H).ok()?,
-    );
-    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
-        .ok()
-        .map(|_| ())
+    depth_frame(
+        frame(W, H)?,
+        &Scene::new(&objects, sun()),
+        Flat,
+        cache,
+        color,
+        depth,
+    )
 }
 
 /// `gouraud`: the torus with per-vertex normals, Gouraud shading, three coloured lights.
@@ -206,14 +231,7 @@ pub fn gouraud(
 ) -> Option<()> {
     let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
     let scene = Scene::new(&objects, three_lights());
-    let p = frame(W, H)?.prepare(&scene, cache, Gouraud).ok()?;
-    let (mut c, mut d) = (
-        FrameBuffer::new(color, W, H).ok()?,
-        DepthBuffer::new(depth, W, H).ok()?,
-    );
-    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
-        .ok()
-        .map(|_| ())
+    depth_frame(frame(W, H)?, &scene, Gouraud, cache, color, depth)
 }
 
 /// `bands`: the `full` frame drawn band by band through small buffers; each band is hashed as
@@ -316,17 +334,15 @@ pub fn obj(
     let model = Mat4::rotation_y(Angle::from_degrees(10 + 3 * f as i32))
         * Mat4::rotation_x(Angle::from_degrees(15));
     let objects = [Object::new(mesh, model, Rgb888::new(120, 200, 255))];
-    let scene = Scene::new(&objects, sun());
-    let p = camera(W, H, Vec3::from_int(0, 1, 4))?
-        .prepare(&scene, cache, Flat)
-        .ok()?;
-    let (mut c, mut d) = (
-        FrameBuffer::new(color, W, H).ok()?,
-        DepthBuffer::new(depth, W, H).ok()?,
-    );
-    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
-        .ok()
-        .map(|_| ())
+    let frame = camera(W, H, Vec3::from_int(0, 1, 4))?;
+    depth_frame(
+        frame,
+        &Scene::new(&objects, sun()),
+        Flat,
+        cache,
+        color,
+        depth,
+    )
 }
 
 /// The SSD1306 frame of the `display` preset: 128x64, one bit per pixel.

@@ -2,36 +2,19 @@
 #![no_std]
 #![no_main]
 
-use core::ptr::addr_of_mut;
-
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-#[allow(unused_imports)]
-use fixed3d::{math::Vec3, pipeline::ScreenVertex};
 use mcu_bench::scenes::*;
-use mcu_bench::Op;
+use mcu_bench::{storage, torus_storage, Op};
 use panic_semihosting as _;
-
-static mut CACHE: [ScreenVertex; TORUS_VERTICES] = [ScreenVertex::DEFAULT; TORUS_VERTICES];
-static mut POS: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut NOR: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut TRI: [[u16; 3]; TORUS_TRIANGLES] = [[0; 3]; TORUS_TRIANGLES];
-static mut BAND: [Rgb565; (W * BAND_ROWS) as usize] = [Rgb565::BLACK; (W * BAND_ROWS) as usize];
-static mut BAND_DEPTH: [u16; (W * BAND_ROWS) as usize] = [0; (W * BAND_ROWS) as usize];
 
 #[entry]
 fn main() -> ! {
-    // SAFETY: the only references to these statics, each taken once here.
-    let (cache, pos, nor, tri, band, band_depth) = unsafe {
-        (
-            &mut *addr_of_mut!(CACHE),
-            &mut *addr_of_mut!(POS),
-            &mut *addr_of_mut!(NOR),
-            &mut *addr_of_mut!(TRI),
-            &mut *addr_of_mut!(BAND),
-            &mut *addr_of_mut!(BAND_DEPTH),
-        )
-    };
+    let (cache, pos, nor, tri) = torus_storage!();
+    let (band, band_depth) = storage!(
+        BAND: [Rgb565; (W * BAND_ROWS) as usize] = [Rgb565::BLACK; (W * BAND_ROWS) as usize],
+        BAND_DEPTH: [u16; (W * BAND_ROWS) as usize] = [0; (W * BAND_ROWS) as usize],
+    );
     let mesh = torus_mesh(pos, nor, tri);
     let mut last = 0;
     mcu_bench::run("bands", |op| match op {

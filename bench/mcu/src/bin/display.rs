@@ -6,14 +6,12 @@
 #![no_std]
 #![no_main]
 
-use core::ptr::addr_of_mut;
-
 use cortex_m_rt::entry;
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
 use embedded_graphics::primitives::Rectangle;
-use fixed3d::{math::Vec3, pipeline::ScreenVertex, target::FrameBuffer};
+use fixed3d::target::FrameBuffer;
 use mcu_bench::scenes::*;
 use mcu_bench::Op;
 use mipidsi::interface::SpiInterface;
@@ -82,33 +80,16 @@ mod bus {
     }
 }
 
-static mut CACHE: [ScreenVertex; TORUS_VERTICES] = [ScreenVertex::DEFAULT; TORUS_VERTICES];
-static mut POS: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut NOR: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut TRI: [[u16; 3]; TORUS_TRIANGLES] = [[0; 3]; TORUS_TRIANGLES];
-static mut BAND: [Rgb565; (W * BAND_ROWS) as usize] = [Rgb565::BLACK; (W * BAND_ROWS) as usize];
-static mut BAND_DEPTH: [u16; (W * BAND_ROWS) as usize] = [0; (W * BAND_ROWS) as usize];
-static mut MONO: [BinaryColor; (MONO_W * MONO_H) as usize] =
-    [BinaryColor::Off; (MONO_W * MONO_H) as usize];
-static mut MONO_DEPTH: [u16; (MONO_W * MONO_H) as usize] = [0; (MONO_W * MONO_H) as usize];
-static mut SPI_BUFFER: [u8; 512] = [0; 512];
-
 #[entry]
 fn main() -> ! {
-    // SAFETY: the only references to these statics, each taken once here.
-    let (cache, pos, nor, tri, band, band_depth, mono_px, mono_depth, spi_buffer) = unsafe {
-        (
-            &mut *addr_of_mut!(CACHE),
-            &mut *addr_of_mut!(POS),
-            &mut *addr_of_mut!(NOR),
-            &mut *addr_of_mut!(TRI),
-            &mut *addr_of_mut!(BAND),
-            &mut *addr_of_mut!(BAND_DEPTH),
-            &mut *addr_of_mut!(MONO),
-            &mut *addr_of_mut!(MONO_DEPTH),
-            &mut *addr_of_mut!(SPI_BUFFER),
-        )
-    };
+    let (cache, pos, nor, tri) = mcu_bench::torus_storage!();
+    let (band, band_depth, mono_px, mono_depth, spi_buffer) = mcu_bench::storage!(
+        BAND: [Rgb565; (W * BAND_ROWS) as usize] = [Rgb565::BLACK; (W * BAND_ROWS) as usize],
+        BAND_DEPTH: [u16; (W * BAND_ROWS) as usize] = [0; (W * BAND_ROWS) as usize],
+        MONO: [BinaryColor; (MONO_W * MONO_H) as usize] = [BinaryColor::Off; (MONO_W * MONO_H) as usize],
+        MONO_DEPTH: [u16; (MONO_W * MONO_H) as usize] = [0; (MONO_W * MONO_H) as usize],
+        SPI_BUFFER: [u8; 512] = [0; 512],
+    );
     let mesh = torus_mesh(pos, nor, tri);
     let di = SpiInterface::new(bus::Spi::default(), bus::Pin, spi_buffer);
     let Ok(mut lcd) = mipidsi::Builder::new(ILI9341Rgb565, di)

@@ -2,36 +2,19 @@
 #![no_std]
 #![no_main]
 
-use core::ptr::addr_of_mut;
-
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-#[allow(unused_imports)]
-use fixed3d::{math::Vec3, pipeline::ScreenVertex};
 use mcu_bench::scenes::*;
-use mcu_bench::Op;
+use mcu_bench::{storage, torus_storage, Op};
 use panic_semihosting as _;
-
-static mut CACHE: [ScreenVertex; TORUS_VERTICES] = [ScreenVertex::DEFAULT; TORUS_VERTICES];
-static mut POS: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut NOR: [Vec3; TORUS_VERTICES] = [Vec3::ZERO; TORUS_VERTICES];
-static mut TRI: [[u16; 3]; TORUS_TRIANGLES] = [[0; 3]; TORUS_TRIANGLES];
-static mut FB: [Rgb565; (W * H) as usize] = [Rgb565::BLACK; (W * H) as usize];
-static mut DEPTH: [u16; (W * H) as usize] = [0; (W * H) as usize];
 
 #[entry]
 fn main() -> ! {
-    // SAFETY: the only references to these statics, each taken once here.
-    let (cache, pos, nor, tri, fb, depth) = unsafe {
-        (
-            &mut *addr_of_mut!(CACHE),
-            &mut *addr_of_mut!(POS),
-            &mut *addr_of_mut!(NOR),
-            &mut *addr_of_mut!(TRI),
-            &mut *addr_of_mut!(FB),
-            &mut *addr_of_mut!(DEPTH),
-        )
-    };
+    let (cache, pos, nor, tri) = torus_storage!();
+    let (fb, depth) = storage!(
+        FB: [Rgb565; (W * H) as usize] = [Rgb565::BLACK; (W * H) as usize],
+        DEPTH: [u16; (W * H) as usize] = [0; (W * H) as usize],
+    );
     let mesh = torus_mesh(pos, nor, tri);
     mcu_bench::run("gouraud", |op| match op {
         Op::Clear => {
@@ -40,10 +23,6 @@ fn main() -> ! {
             0
         }
         Op::Draw(f) => gouraud(&mesh, f, cache, fb, depth).is_some() as u32,
-        Op::Hash => {
-            let mut h = Fnv::new();
-            h.pixels(fb);
-            h.0
-        }
+        Op::Hash => frame_hash(fb),
     })
 }

@@ -2,34 +2,23 @@
 #![no_std]
 #![no_main]
 
-use core::ptr::addr_of_mut;
-
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-#[allow(unused_imports)]
-use fixed3d::{math::Vec3, pipeline::ScreenVertex};
 use mcu_bench::scenes::*;
-use mcu_bench::Op;
+use mcu_bench::{storage, Op};
 use panic_semihosting as _;
-
-static mut CACHE: [ScreenVertex; 16] = [ScreenVertex::DEFAULT; 16];
-static mut POS: [Vec3; 16] = [Vec3::ZERO; 16];
-static mut TRI: [[u16; 3]; 16] = [[0; 3]; 16];
-static mut FB: [Rgb565; (W * H) as usize] = [Rgb565::BLACK; (W * H) as usize];
-static mut DEPTH: [u16; (W * H) as usize] = [0; (W * H) as usize];
 
 #[entry]
 fn main() -> ! {
-    // SAFETY: the only references to these statics, each taken once here.
-    let (cache, pos, tri, fb, depth) = unsafe {
-        (
-            &mut *addr_of_mut!(CACHE),
-            &mut *addr_of_mut!(POS),
-            &mut *addr_of_mut!(TRI),
-            &mut *addr_of_mut!(FB),
-            &mut *addr_of_mut!(DEPTH),
-        )
-    };
+    let (cache, pos, tri) = storage!(
+        CACHE: [fixed3d::pipeline::ScreenVertex; 16] = [fixed3d::pipeline::ScreenVertex::DEFAULT; 16],
+        POS: [fixed3d::math::Vec3; 16] = [fixed3d::math::Vec3::ZERO; 16],
+        TRI: [[u16; 3]; 16] = [[0; 3]; 16],
+    );
+    let (fb, depth) = storage!(
+        FB: [Rgb565; (W * H) as usize] = [Rgb565::BLACK; (W * H) as usize],
+        DEPTH: [u16; (W * H) as usize] = [0; (W * H) as usize],
+    );
     let mesh = obj_mesh(pos, tri);
     mcu_bench::run("obj", |op| match op {
         Op::Clear => {
@@ -38,10 +27,6 @@ fn main() -> ! {
             0
         }
         Op::Draw(f) => obj(&mesh, f, cache, fb, depth).is_some() as u32,
-        Op::Hash => {
-            let mut h = Fnv::new();
-            h.pixels(fb);
-            h.0
-        }
+        Op::Hash => frame_hash(fb),
     })
 }
