@@ -4,6 +4,7 @@
 use super::number::{parse_index, parse_q16, parse_wide, NumberError};
 use super::{Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, Placement, Storage, NO_INDEX};
 use crate::math::{Scalar, Vec3};
+use crate::mesh::Triangle;
 
 /// Byte range `[a, b)` of `s` (const-friendly slicing; `a ≤ b ≤ s.len()`).
 pub(crate) const fn sub(s: &[u8], a: usize, b: usize) -> &[u8] {
@@ -146,6 +147,19 @@ struct Corner {
     v: u16,
     t: u16,
     n: u16,
+}
+
+/// Stores triangle `i` of an index stream; false when the stream is full. An empty optional
+/// stream keeps nothing (and is never full).
+const fn put(stream: &mut [Triangle], i: usize, t: Triangle, optional: bool) -> bool {
+    if optional && stream.is_empty() {
+        return true;
+    }
+    if i >= stream.len() {
+        return false;
+    }
+    stream[i] = t;
+    true
 }
 
 /// Resolves a 1-based or negative OBJ index against the `count` elements read so far.
@@ -445,33 +459,17 @@ pub(crate) const fn parse_line(
             if corners == 0 {
                 first = cur;
             } else if corners >= 2 {
-                if c.triangles >= out.triangles.len() {
-                    return Err(err(
-                        line_no,
-                        a,
-                        ObjErrorKind::CapacityExceeded(Storage::Triangles),
-                    ));
-                }
-                out.triangles[c.triangles] = [first.v, prev.v, cur.v];
-                if !out.triangle_texcoords.is_empty() {
-                    if c.triangles >= out.triangle_texcoords.len() {
-                        return Err(err(
-                            line_no,
-                            a,
-                            ObjErrorKind::CapacityExceeded(Storage::Triangles),
-                        ));
-                    }
-                    out.triangle_texcoords[c.triangles] = [first.t, prev.t, cur.t];
-                }
-                if !out.triangle_normals.is_empty() {
-                    if c.triangles >= out.triangle_normals.len() {
-                        return Err(err(
-                            line_no,
-                            a,
-                            ObjErrorKind::CapacityExceeded(Storage::Triangles),
-                        ));
-                    }
-                    out.triangle_normals[c.triangles] = [first.n, prev.n, cur.n];
+                let i = c.triangles;
+                let full = err(
+                    line_no,
+                    a,
+                    ObjErrorKind::CapacityExceeded(Storage::Triangles),
+                );
+                if !put(out.triangles, i, [first.v, prev.v, cur.v], false)
+                    || !put(out.triangle_texcoords, i, [first.t, prev.t, cur.t], true)
+                    || !put(out.triangle_normals, i, [first.n, prev.n, cur.n], true)
+                {
+                    return Err(full);
                 }
                 c.triangles += 1;
             }

@@ -10,7 +10,7 @@ use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::pipeline::Stats;
-use crate::raster::{PixelRect, Plane, TriangleSpans};
+use crate::raster::{PixelRect, Plane, Span, TriangleSpans};
 use crate::shade::Paint;
 
 /// Depth across one triangle: the plane through its snapped vertices (opaque).
@@ -110,6 +110,42 @@ impl<'t, 'a, C, D, Q> ColorDepth<'t, 'a, C, D, Q> {
     }
 }
 
+impl<C, D, Q> ColorDepth<'_, '_, C, D, Q>
+where
+    C: PixelColor,
+    D: DepthFormat,
+{
+    /// Depth-tests the spans of one triangle; `colors_for(span)` gives the colour of each of
+    /// the span's pixels in turn.
+    #[inline(always)]
+    fn depth_tested_spans<G: FnMut() -> C>(
+        &mut self,
+        spans: TriangleSpans,
+        depth: &DepthPlane,
+        stats: &mut Stats,
+        mut colors_for: impl FnMut(Span) -> G,
+    ) {
+        let (plane, step, test, first_row) =
+            (&depth.0, depth.0.step_x(), self.test, self.first_row);
+        let (mut fragments, mut written) = (0u32, 0u32);
+        for span in spans {
+            let local = span.y.wrapping_sub(first_row);
+            let (Some(cs), Some(ds)) = (
+                self.color.span_mut(local, span.x0, span.x1),
+                self.depth.span_mut(local, span.x0, span.x1),
+            ) else {
+                continue;
+            };
+            fragments = fragments.wrapping_add(cs.len() as u32);
+            let start = plane.at(span.x0, span.y);
+            written =
+                written.wrapping_add(D::test_span(ds, cs, start, step, test, colors_for(span)));
+        }
+        stats.fragments = stats.fragments.saturating_add(fragments);
+        stats.written = stats.written.saturating_add(written);
+    }
+}
+
 impl<C, D, Q> RasterTarget for ColorDepth<'_, '_, C, D, Q>
 where
     C: PixelColor + From<Rgb888>,
@@ -133,62 +169,25 @@ where
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), Self::Error> {
-        let (plane, step, test, first_row) =
-            (&depth.0, depth.0.step_x(), self.test, self.first_row);
-        let (mut fragments, mut written) = (0u32, 0u32);
         match paint.solid() {
             Some(rgb) if Q::UNIFORM => {
                 // One conversion per triangle.
                 let c = self.quantize.quantize(rgb, 0, 0);
-                for span in spans {
-                    let local = span.y.wrapping_sub(first_row);
-                    let (Some(cs), Some(ds)) = (
-                        self.color.span_mut(local, span.x0, span.x1),
-                        self.depth.span_mut(local, span.x0, span.x1),
-                    ) else {
-                        continue;
-                    };
-                    fragments = fragments.wrapping_add(cs.len() as u32);
-                    written = written.wrapping_add(D::test_span(
-                        ds,
-                        cs,
-                        plane.at(span.x0, span.y),
-                        step,
-                        test,
-                        || c,
-                    ));
-                }
+                self.depth_tested_spans(spans, depth, stats, |_| move || c);
             }
             _ => {
                 let q = self.quantize;
-                for span in spans {
-                    let local = span.y.wrapping_sub(first_row);
-                    let (Some(cs), Some(ds)) = (
-                        self.color.span_mut(local, span.x0, span.x1),
-                        self.depth.span_mut(local, span.x0, span.x1),
-                    ) else {
-                        continue;
-                    };
-                    fragments = fragments.wrapping_add(cs.len() as u32);
+                self.depth_tested_spans(spans, depth, stats, |span| {
                     let mut cursor = paint.cursor(span.x0, span.y);
                     let (mut x, y) = (span.x0, span.y);
-                    written = written.wrapping_add(D::test_span(
-                        ds,
-                        cs,
-                        plane.at(span.x0, span.y),
-                        step,
-                        test,
-                        || {
-                            let c = q.quantize(cursor.next().unwrap_or_default(), x, y);
-                            x = x.wrapping_add(1);
-                            c
-                        },
-                    ));
-                }
+                    move || {
+                        let c = q.quantize(cursor.next().unwrap_or_default(), x, y);
+                        x = x.wrapping_add(1);
+                        c
+                    }
+                });
             }
         }
-        stats.fragments = stats.fragments.saturating_add(fragments);
-        stats.written = stats.written.saturating_add(written);
         Ok(())
     }
 }
