@@ -218,3 +218,43 @@ fn constructors_refuse_nonsense() {
     let (o, d) = orthonormality(&v);
     assert!(o < 1e-4 && d < 1e-4);
 }
+
+/// Orthographic projection: a cube seen face-on shows exactly its front face at its true size
+/// (the back face, as large, hides behind it), where a perspective view would magnify it.
+#[test]
+fn orthographic_projection_draws_true_size() {
+    use fixed3d::camera::LookAt;
+    use fixed3d::pipeline::Frame;
+    use fixed3d::projection::{Projection, Viewport};
+    let viewport = Viewport::new(64, 64).unwrap();
+    let view = LookAt::new(Vec3::from_int(0, 0, 5), Vec3::ZERO, Vec3::Y)
+        .view()
+        .unwrap();
+    let s = |v: f64| Scalar::from_num(v);
+    let draw = |projection: Projection| {
+        let objects = [Object::new(
+            &CUBE,
+            Mat4::IDENTITY,
+            Rgb888::new(255, 255, 255),
+        )];
+        let scene = Scene::new(&objects, Lighting::<0>::new(LightColor::WHITE));
+        let mut cache = vec![ScreenVertex::DEFAULT; 8];
+        let prepared = Frame::new(&view, &projection, viewport)
+            .prepare(&scene, &mut cache, Unlit)
+            .unwrap();
+        let mut canvas = common::HitCanvas::new(64, 64);
+        prepared.draw(&mut Direct::new(&mut canvas)).unwrap();
+        canvas
+    };
+    // A 4-unit tall view of 64 pixels: the 2-unit face is 32 x 32 pixels, centred.
+    let ortho = draw(Projection::orthographic(s(4.0), s(1.0), s(1.0), s(10.0)).unwrap());
+    for y in 0..64 {
+        for x in 0..64 {
+            let inside = (16..48).contains(&x) && (16..48).contains(&y);
+            assert_eq!(ortho.at(x, y), u32::from(inside), "pixel ({x}, {y})");
+        }
+    }
+    let persp =
+        draw(Projection::perspective(Angle::from_degrees(44), s(1.0), s(1.0), s(10.0)).unwrap());
+    assert!(persp.hits.iter().sum::<u32>() > 1024);
+}
