@@ -88,21 +88,33 @@ impl Mat4 {
     /// Rotation about +X by `a` (right-handed: +Y turns towards +Z).
     #[must_use]
     pub const fn rotation_x(a: Angle) -> Self {
-        let (s, c) = sin_cos_q16(a);
-        Mat4::from_bits([[ONE, 0, 0, 0], [0, c, -s, 0], [0, s, c, 0], [0, 0, 0, ONE]])
+        Mat4::rotation_x_sc(sin_cos_q16(a))
     }
 
     /// Rotation about +Y by `a` (right-handed: +Z turns towards +X).
     #[must_use]
     pub const fn rotation_y(a: Angle) -> Self {
-        let (s, c) = sin_cos_q16(a);
-        Mat4::from_bits([[c, 0, s, 0], [0, ONE, 0, 0], [-s, 0, c, 0], [0, 0, 0, ONE]])
+        Mat4::rotation_y_sc(sin_cos_q16(a))
     }
 
     /// Rotation about +Z by `a` (right-handed: +X turns towards +Y).
     #[must_use]
     pub const fn rotation_z(a: Angle) -> Self {
-        let (s, c) = sin_cos_q16(a);
+        Mat4::rotation_z_sc(sin_cos_q16(a))
+    }
+
+    /// Rotation about +X from its Q16.16 sine and cosine.
+    pub(crate) const fn rotation_x_sc((s, c): (i32, i32)) -> Self {
+        Mat4::from_bits([[ONE, 0, 0, 0], [0, c, -s, 0], [0, s, c, 0], [0, 0, 0, ONE]])
+    }
+
+    /// Rotation about +Y from its Q16.16 sine and cosine.
+    pub(crate) const fn rotation_y_sc((s, c): (i32, i32)) -> Self {
+        Mat4::from_bits([[c, 0, s, 0], [0, ONE, 0, 0], [-s, 0, c, 0], [0, 0, 0, ONE]])
+    }
+
+    /// Rotation about +Z from its Q16.16 sine and cosine.
+    pub(crate) const fn rotation_z_sc((s, c): (i32, i32)) -> Self {
         Mat4::from_bits([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, ONE, 0], [0, 0, 0, ONE]])
     }
 
@@ -144,18 +156,36 @@ impl Mat4 {
         [row(r0), row(r1), row(r2), row(r3)]
     }
 
-    /// The upper-left 3x3 block's cofactor matrix (`det · M⁻ᵀ`), raw Q16.16 rows: it carries
-    /// normals from model to world space, for any scale, with no division.
+    /// The upper-left 3x3 block's cofactor matrix (`det · M⁻ᵀ`) times a power of two: it
+    /// carries normals from model to world space, for any scale, with no division. Only
+    /// directions matter (normals are normalised after), so the exact cofactors are shifted
+    /// together until the largest lies in [2²⁹, 2³⁰): a model scaled by 8000 neither saturates
+    /// (cofactors grow with the scale squared) nor does one scaled by 1/1024 lose its normals
+    /// to rounding (case T33).
     pub(crate) fn normal_matrix(&self) -> [[i32; 3]; 3] {
         let r = |i: usize| [self.m[i][0], self.m[i][1], self.m[i][2]];
-        let q = |w: [i64; 3]| {
-            w.map(|v| shr_round(v, 16).clamp(i32::MIN as i64, i32::MAX as i64) as i32)
-        };
-        [
-            q(cross_wide(r(1), r(2))),
-            q(cross_wide(r(2), r(0))),
-            q(cross_wide(r(0), r(1))),
-        ]
+        let c = [
+            cross_wide(r(1), r(2)),
+            cross_wide(r(2), r(0)),
+            cross_wide(r(0), r(1)),
+        ];
+        let max = c
+            .iter()
+            .flatten()
+            .map(|v| v.unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        let bits = 64 - max.leading_zeros();
+        c.map(|row| {
+            row.map(|v| {
+                let v = if bits > 30 {
+                    shr_round(v, bits - 30)
+                } else {
+                    v << (30 - bits)
+                };
+                v.clamp(-(1 << 30), 1 << 30) as i32
+            })
+        })
     }
 
     /// The transpose.
@@ -178,6 +208,41 @@ const fn sin_cos_q16(a: Angle) -> (i32, i32) {
         shr_round(a.sin_bits() as i64, 14) as i32,
         shr_round(a.cos_bits() as i64, 14) as i32,
     )
+}
+
+/// The product `a · b · c` of three matrices in 64-bit integers, with a binary exponent:
+/// returns `(m, f)` with `a · b · c ≈ m / 2^f`. `b · c` is exact (Q32.32, saturating only
+/// beyond ±2³¹), then shifted so that its largest entry has at most 30 bits before the product
+/// with `a`, which is then exact: every entry of `m` carries at least 29 significant bits
+/// relative to the largest. No 128-bit arithmetic (it would cost a long library call per
+/// product on Cortex-M0).
+pub(crate) fn product3(a: &Mat4, b: &Mat4, c: &Mat4) -> ([[i64; 4]; 4], i32) {
+    let mut bc = [[0i64; 4]; 4];
+    for (row, brow) in bc.iter_mut().zip(b.m.iter()) {
+        for (j, cell) in row.iter_mut().enumerate() {
+            *cell = brow.iter().zip(c.m.iter()).fold(0i64, |acc, (x, crow)| {
+                acc.saturating_add(*x as i64 * crow.get(j).copied().unwrap_or(0) as i64)
+            });
+        }
+    }
+    let max = bc
+        .iter()
+        .flatten()
+        .map(|v| v.unsigned_abs())
+        .max()
+        .unwrap_or(0);
+    let shift = (64 - max.leading_zeros()).saturating_sub(30);
+    let bc = bc.map(|row| row.map(|v| shr_round(v, shift)));
+    let mut abc = [[0i64; 4]; 4];
+    for (row, arow) in abc.iter_mut().zip(a.m.iter()) {
+        for (j, cell) in row.iter_mut().enumerate() {
+            // |a| < 2³¹ and |bc| ≤ 2³⁰: each product below 2⁶¹, four below 2⁶³.
+            *cell = arow.iter().zip(bc.iter()).fold(0i64, |acc, (x, bcrow)| {
+                acc.wrapping_add(*x as i64 * bcrow.get(j).copied().unwrap_or(0))
+            });
+        }
+    }
+    (abc, 48 - shift as i32)
 }
 
 impl Mul for Mat4 {
@@ -229,9 +294,17 @@ mod tests {
     fn normal_matrix_of_scaled_rotation() {
         let m = Mat4::rotation_z(Angle::from_degrees(90)) * Mat4::scaling(Vec3::from_int(2, 1, 1));
         let n = m.normal_matrix();
-        // det * M^-T for diag(2,1,1) rotated: rows scaled by (1, 2, 2).
-        assert_eq!(n[0], [0, -2 << 16, 0]);
-        assert_eq!(n[1], [1 << 16, 0, 0]);
-        assert_eq!(n[2], [0, 0, 2 << 16]);
+        // det * M^-T for diag(2,1,1) rotated: rows scaled by (1, 2, 2), then by 2^28.
+        assert_eq!(n[0], [0, -2 << 28, 0]);
+        assert_eq!(n[1], [1 << 28, 0, 0]);
+        assert_eq!(n[2], [0, 0, 2 << 28]);
+        // Any uniform scale gives the same directions.
+        for s in [Scalar::from_bits(64), Scalar::from_num(8000)] {
+            let big = Mat4::rotation_z(Angle::from_degrees(90)) * Mat4::scaling(Vec3::new(s, s, s));
+            let n = big.normal_matrix();
+            let k = n[2][2];
+            assert!((1 << 29..1 << 30).contains(&k), "{k}");
+            assert_eq!(n, [[0, -k, 0], [k, 0, 0], [0, 0, k]]);
+        }
     }
 }

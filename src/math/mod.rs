@@ -7,16 +7,19 @@
 
 mod angle;
 mod matrix;
+mod methods;
 mod scalar;
 mod sqrt;
 mod vector;
 
 pub use angle::Angle;
+pub(crate) use matrix::product3;
 pub use matrix::Mat4;
+pub use methods::{Normalize, Trig};
 pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
 pub(crate) use scalar::{div_round, shr_round, DEPTH_ONE, UNIT_ONE};
 
 pub(crate) use sqrt::isqrt_u64;
-pub(crate) use vector::{dot_unit, normalize, normalize_fast};
+pub(crate) use vector::{dot_unit, normalize};

@@ -3,7 +3,7 @@
 use core::ops::{Add, Neg, Sub};
 
 use super::scalar::{shr_round, Scalar, UNIT_ONE};
-use super::sqrt::{isqrt_u64, rsqrt_q45};
+use super::sqrt::isqrt_u64;
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
 ///
@@ -185,31 +185,6 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
     }))
 }
 
-/// Unit vector (Q2.30) of a non-zero integer vector of any scale, like [`normalize`] but
-/// without division or square-root loop (a table and two Newton steps): relative error below
-/// 2·10⁻⁶, for per-face and per-vertex lighting. `None` for zero.
-pub(crate) fn normalize_fast(v: [i64; 3]) -> Option<[i32; 3]> {
-    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
-    if max == 0 {
-        return None;
-    }
-    // Largest component to [2¹⁴, 2¹⁵): the sum of squares lies in [2²⁸, 3·2³⁰).
-    let bits = 64 - max.leading_zeros() as i32;
-    let shift = bits - 15;
-    let c = v.map(|x| {
-        if shift > 0 {
-            x >> shift
-        } else {
-            x << (-shift) as u32
-        }
-    });
-    let s = c.iter().map(|x| (x * x) as u64).sum::<u64>();
-    let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
-    let y = rsqrt_q45(m) as i64; // 2⁴⁵ / sqrt(m)
-                                 // c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
-    Some(c.map(|x| ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32))
-}
-
 /// Dot product of two Q2.30 unit vectors, Q2.30.
 pub(crate) fn dot_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
     let s: i64 = a
@@ -271,7 +246,7 @@ mod tests {
                 ((x >> 32) as i16) as i64,
             ]
             .map(|c| c << scale);
-            match (normalize(v), normalize_fast(v)) {
+            match (normalize(v), crate::math::Normalize::Newton.unit(v)) {
                 (Some(a), Some(b)) => {
                     for (p, q) in a.iter().zip(b) {
                         assert!((p - q).abs() <= 4 << 10, "{v:?}: {a:?} {b:?}");

@@ -13,7 +13,7 @@ use core::fmt;
 
 use embedded_graphics::pixelcolor::Rgb888;
 
-use crate::math::{Angle, Mat4, Vec3};
+use crate::math::{Angle, Mat4, Trig, Vec3};
 
 pub use normals::vertex_normals;
 pub use shapes::{
@@ -87,6 +87,8 @@ pub struct Mesh<'a> {
     triangles: &'a [Triangle],
     normals: Option<&'a [Vec3]>,
     edges: Option<&'a [Edge]>,
+    /// The largest coordinate magnitude of any position (raw Q16.16).
+    extent: u32,
 }
 
 impl<'a> Mesh<'a> {
@@ -96,6 +98,7 @@ impl<'a> Mesh<'a> {
         triangles: &[],
         normals: None,
         edges: None,
+        extent: 0,
     };
 
     /// A mesh of `positions` and `triangles`; every index must be below `positions.len()`.
@@ -109,11 +112,25 @@ impl<'a> Mesh<'a> {
             }
             i += 1;
         }
+        let mut extent = 0u32;
+        let mut k = 0;
+        while k < n {
+            let c = positions[k].to_bits();
+            let mut j = 0;
+            while j < 3 {
+                if c[j].unsigned_abs() > extent {
+                    extent = c[j].unsigned_abs();
+                }
+                j += 1;
+            }
+            k += 1;
+        }
         Ok(Mesh {
             positions,
             triangles,
             normals: None,
             edges: None,
+            extent,
         })
     }
 
@@ -145,6 +162,13 @@ impl<'a> Mesh<'a> {
             edges: Some(edges),
             ..self
         })
+    }
+
+    /// The largest magnitude of any coordinate of any position, raw Q16.16 (the vertex stage
+    /// sizes its arithmetic by it).
+    #[must_use]
+    pub const fn extent(&self) -> u32 {
+        self.extent
     }
 
     /// The vertex positions.
@@ -262,10 +286,24 @@ impl Transform {
     /// The model matrix.
     #[must_use]
     pub fn matrix(&self) -> Mat4 {
+        self.matrix_by(Trig::Polynomial)
+    }
+
+    /// The model matrix, its sines and cosines computed by `trig` (a precision knob: see
+    /// [`Trig`] and `docs/accuracy.md`).
+    ///
+    /// ```
+    /// use fixed3d::math::{Angle, Trig};
+    /// use fixed3d::mesh::Transform;
+    /// let t = Transform::new().rotated_y(Angle::from_degrees(90));
+    /// assert_eq!(t.matrix_by(Trig::Polynomial), t.matrix());
+    /// ```
+    #[must_use]
+    pub fn matrix_by(&self, trig: Trig) -> Mat4 {
         Mat4::translation(self.translation)
-            * Mat4::rotation_z(self.rotation_z)
-            * Mat4::rotation_x(self.rotation_x)
-            * Mat4::rotation_y(self.rotation_y)
+            * Mat4::rotation_z_sc(trig.sin_cos_q16(self.rotation_z))
+            * Mat4::rotation_x_sc(trig.sin_cos_q16(self.rotation_x))
+            * Mat4::rotation_y_sc(trig.sin_cos_q16(self.rotation_y))
             * Mat4::scaling(self.scale)
     }
 }

@@ -1,12 +1,14 @@
 //! Drawing a prepared frame: triangles into a [`RasterTarget`], edges into any `DrawTarget`.
 
+use core::cell::Cell;
+
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::Pixel;
 
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
 use super::vertex::{project, ScreenMap};
-use super::{bump, Cull, Prepared, ScreenVertex, Stats};
+use super::{bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::math::Mat4;
 use crate::mesh::{Object, Triangle};
 use crate::raster::{line_pixels, triangle_spans, PixelRect, Plane, ScreenPoint};
@@ -32,11 +34,24 @@ fn facing_kept(cull: Cull, area: i64) -> bool {
 struct ObjectSetup<'o> {
     object: &'o Object<'o>,
     vertices: &'o [ScreenVertex],
-    clip_from_model: Mat4,
+    frame: &'o Frame,
+    /// Computed when the first triangle of the object needs clipping (most objects need none).
+    clip_from_model: Cell<Option<Mat4>>,
     normal_matrix: [[i32; 3]; 3],
 }
 
 impl ObjectSetup<'_> {
+    fn clip_from_model(&self) -> Mat4 {
+        if let Some(m) = self.clip_from_model.get() {
+            return m;
+        }
+        let m = self
+            .frame
+            .clip_from_model_within(&self.object.model, self.object.mesh.extent());
+        self.clip_from_model.set(Some(m));
+        m
+    }
+
     fn clip_vertex(&self, index: u16) -> ClipVertex {
         let p = self
             .object
@@ -51,7 +66,7 @@ impl ObjectSetup<'_> {
             .map(|v| v.rgb)
             .unwrap_or_default();
         ClipVertex {
-            c: self.clip_from_model.transform_wide(p.to_bits()),
+            c: self.clip_from_model().transform_wide(p.to_bits()),
             rgb: rgb.map(|c| (c as i32) << 8),
         }
     }
@@ -108,7 +123,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             ObjectSetup {
                 object,
                 vertices,
-                clip_from_model: self.frame.clip_from_model(&object.model),
+                frame: &self.frame,
+                clip_from_model: Cell::new(None),
                 normal_matrix: object.model.normal_matrix(),
             }
         })
@@ -120,7 +136,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
         let mut stats = Stats::default();
         let clip = target.clip();
-        let map = ScreenMap::new(&self.frame.viewport);
+        let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
         for setup in self.objects() {
             for tri in setup.object.mesh.triangles() {
                 bump(&mut stats.primitives);
@@ -199,15 +215,18 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         if !rows_overlap(&p, &clip) {
             return Ok(());
         }
+        let z = v.map(|v| v.1);
         let face = FaceInputs {
             base: setup.object.color,
             model: tri.map(|i| setup.model(i)),
             normal_matrix: &setup.normal_matrix,
+            normalize: self.frame.precision.normalize(),
             vertex_rgb: v.map(|v| v.2),
             screen: p,
+            depth: z,
+            inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
         };
-        let z = v.map(|v| v.1);
         let lighting = &self.scene.lighting;
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
@@ -237,7 +256,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     {
         let mut stats = Stats::default();
         let clip = PixelRect::from_rectangle(&target.bounding_box());
-        let map = ScreenMap::new(&self.frame.viewport);
+        let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
         for setup in self.objects() {
             let color = D::Color::from(setup.object.color);
             let mut segment = |i: u16, j: u16, stats: &mut Stats| -> Result<(), D::Error> {

@@ -17,8 +17,10 @@
 
 mod clip;
 mod draw;
+mod precision;
 mod vertex;
 
+pub use precision::{MatrixFormat, Precision};
 pub use vertex::ScreenVertex;
 
 use core::fmt;
@@ -120,17 +122,25 @@ pub struct Frame {
     projection: Mat4,
     viewport: Viewport,
     cull: Cull,
+    precision: Precision,
+    /// `−m[2][2]` of a perspective projection in Q1.30: `1/w` is proportional to this minus
+    /// the depth (see [`PerspectiveGouraud`](crate::shade::PerspectiveGouraud)).
+    inverse_w_offset: Option<i64>,
 }
 
 impl Frame {
     /// A frame seen through `view` and `projection`, drawn into `viewport`.
     #[must_use]
     pub fn new(view: &Mat4, projection: &Projection, viewport: Viewport) -> Self {
+        let m = projection.matrix().to_bits();
+        let a = m.get(2).and_then(|row| row.get(2)).copied().unwrap_or(0) as i64;
         Frame {
             view: *view,
             projection: *projection.matrix(),
             viewport,
             cull: Cull::Back,
+            precision: Precision::DEFAULT,
+            inverse_w_offset: projection.is_perspective().then_some(-a << 14),
         }
     }
 
@@ -138,6 +148,18 @@ impl Frame {
     #[must_use]
     pub fn with_cull(self, cull: Cull) -> Self {
         Frame { cull, ..self }
+    }
+
+    /// With other precision knobs (the default is [`Precision::DEFAULT`]).
+    #[must_use]
+    pub fn with_precision(self, precision: Precision) -> Self {
+        Frame { precision, ..self }
+    }
+
+    /// The precision knobs.
+    #[must_use]
+    pub fn precision(&self) -> Precision {
+        self.precision
     }
 
     /// The viewport.
@@ -154,10 +176,25 @@ impl Frame {
 
     /// Clip from model: `projection · (view · model)`. The view and model matrices are
     /// composed first, so an object and a camera far from the origin (translations that cancel)
-    /// keep their precision instead of saturating the projection's entries (case T35).
+    /// keep their precision instead of saturating the projection's entries (case T35). The
+    /// product is computed with 29 significant bits and rounded once, to the [`Precision`]'s
+    /// [`MatrixFormat`]: by default Q16.16, or scaled up by a power of two where the clip
+    /// coordinates would be small, which changes no projected position (clip coordinates are
+    /// homogeneous) but keeps tiny models and near cameras precise.
+    ///
+    /// This is the matrix for points within ±2 (what the format's scaling assumes); the vertex
+    /// stage sizes it by each mesh's [`extent`](crate::mesh::Mesh::extent).
     #[must_use]
     pub fn clip_from_model(&self, model: &Mat4) -> Mat4 {
-        self.projection * (self.view * *model)
+        self.clip_from_model_within(model, 2 << 16)
+    }
+
+    /// [`clip_from_model`](Self::clip_from_model) for points whose coordinates are at most
+    /// `extent` (raw Q16.16) in magnitude.
+    #[must_use]
+    pub fn clip_from_model_within(&self, model: &Mat4, extent: u32) -> Mat4 {
+        self.precision
+            .product(&self.projection, &self.view, model, extent)
     }
 
     /// Runs the vertex stage for every object of `scene` into `cache` (one entry per vertex,
@@ -175,11 +212,15 @@ impl Frame {
                 capacity: cache.len(),
             });
         }
-        let map = ScreenMap::new(&self.viewport);
+        let map = ScreenMap::new(&self.viewport, &self.precision);
         let mut slots = cache.iter_mut();
         for object in scene.objects {
-            let clip_from_model = self.clip_from_model(&object.model);
-            let normal_matrix = object.model.normal_matrix();
+            let clip_from_model = self.clip_from_model_within(&object.model, object.mesh.extent());
+            let normal_matrix = if S::PER_VERTEX {
+                object.model.normal_matrix()
+            } else {
+                Default::default()
+            };
             let normals = if S::PER_VERTEX {
                 object.mesh.normals()
             } else {
@@ -198,7 +239,7 @@ impl Frame {
                     Some(n) => {
                         let lit = crate::shade::lambert(
                             object.color,
-                            vertex_normal(n.to_bits(), &normal_matrix),
+                            vertex_normal(n.to_bits(), &normal_matrix, self.precision.normalize()),
                             &scene.lighting,
                         );
                         use embedded_graphics::pixelcolor::RgbColor;

@@ -8,6 +8,8 @@
 
 use crate::math::{div_round, shr_round, DEPTH_ONE};
 use crate::projection::Viewport;
+
+use super::Precision;
 use crate::raster::ScreenPoint;
 
 /// One transformed vertex in the per-frame cache: snapped screen position, depth, lit colour
@@ -65,14 +67,17 @@ const GUARD: i64 = (1 << 14) - 16;
 pub(crate) struct ScreenMap {
     half_w: i64,
     half_h: i64,
+    /// Vertices snap to multiples of `1 << snap` sub-pixels from the centre.
+    snap: u32,
 }
 
 impl ScreenMap {
-    pub(crate) fn new(v: &Viewport) -> Self {
+    pub(crate) fn new(v: &Viewport, precision: &Precision) -> Self {
         // width/2 · 16 = width · 8
         ScreenMap {
             half_w: v.width() as i64 * 8,
             half_h: v.height() as i64 * 8,
+            snap: precision.snap_shift(),
         }
     }
 }
@@ -144,8 +149,18 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
         return None;
     }
     let lim = 1i64 << 15;
-    let sx = (m.half_w + div_round(x * m.half_w, w)).clamp(-lim, lim);
-    let sy = (m.half_h - div_round(y * m.half_h, w)).clamp(-lim, lim);
+    let (sx, sy) = if m.snap == 0 {
+        (div_round(x * m.half_w, w), div_round(y * m.half_h, w))
+    } else {
+        // One rounding to the coarser grid (no double rounding through sixteenths).
+        let (g, wg) = (m.snap, w << m.snap);
+        (
+            div_round(x * m.half_w, wg) << g,
+            div_round(y * m.half_h, wg) << g,
+        )
+    };
+    let sx = (m.half_w + sx).clamp(-lim, lim);
+    let sy = (m.half_h - sy).clamp(-lim, lim);
     let sz = div_round(z << 30, w).clamp(0, DEPTH_ONE as i64);
     Some((ScreenPoint::new(sx as i32, sy as i32), sz as i32))
 }

@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 #[cfg(test)]
 use crate::math::normalize;
-use crate::math::{dot_unit, normalize_fast, UNIT_ONE};
+use crate::math::{dot_unit, Normalize, UNIT_ONE};
 use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
@@ -46,7 +46,7 @@ fn shrink(v: [i64; 3]) -> [i64; 3] {
     }
 }
 
-/// `m · v` for a Q16.16 matrix and a vector below 2³⁰.
+/// `m · v` for a normal matrix (entries within ±2³⁰) and a vector below 2³⁰.
 fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
     m.map(|r| {
         (r[0] as i64 * v[0])
@@ -58,7 +58,11 @@ fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
 /// Unit world-space face normal (Q2.30) of a model-space triangle, counter-clockwise front; `None`
 /// for a zero-area triangle. Edges of any length: the cross product is exact in i64 after the
 /// edges are shifted below 2³⁰ (case T33).
-pub(crate) fn face_normal(p: [[i32; 3]; 3], normal_matrix: &[[i32; 3]; 3]) -> Option<[i32; 3]> {
+pub(crate) fn face_normal(
+    p: [[i32; 3]; 3],
+    normal_matrix: &[[i32; 3]; 3],
+    method: Normalize,
+) -> Option<[i32; 3]> {
     let [a, b, c] = p.map(|v| v.map(i64::from));
     let e1 = shrink([b[0] - a[0], b[1] - a[1], b[2] - a[2]]);
     let e2 = shrink([c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
@@ -67,14 +71,18 @@ pub(crate) fn face_normal(p: [[i32; 3]; 3], normal_matrix: &[[i32; 3]; 3]) -> Op
         e1[2] * e2[0] - e1[0] * e2[2],
         e1[0] * e2[1] - e1[1] * e2[0],
     ];
-    normalize_fast(apply(normal_matrix, shrink(n)))
+    method.unit(apply(normal_matrix, shrink(n)))
 }
 
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
 /// zero normal (lit by ambient only, case T34).
-pub(crate) fn vertex_normal(n: [i32; 3], normal_matrix: &[[i32; 3]; 3]) -> Option<[i32; 3]> {
+pub(crate) fn vertex_normal(
+    n: [i32; 3],
+    normal_matrix: &[[i32; 3]; 3],
+    method: Normalize,
+) -> Option<[i32; 3]> {
     let v = shrink(n.map(i64::from));
-    let w = normalize_fast(apply(normal_matrix, v))?;
+    let w = method.unit(apply(normal_matrix, v))?;
     debug_assert!(w.iter().all(|c| c.abs() <= UNIT_ONE));
     Some(w)
 }
@@ -98,7 +106,7 @@ mod tests {
         for scale in [1e-4f64, 1e-3, 0.01, 0.1, 1.0, 10.0, 100.0, 1000.0] {
             let raw = [[0.0, 0.0, 0.0], [1.0, 0.2, -0.3], [0.3, 1.1, 0.4]]
                 .map(|p| p.map(|c: f64| (c * scale * 65536.0).round() as i32));
-            let n = face_normal(raw, &IDENTITY).expect("non-degenerate");
+            let n = face_normal(raw, &IDENTITY, Normalize::Newton).expect("non-degenerate");
             let p = raw.map(|v| v.map(|c| c as f64));
             let e1 = [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]];
             let e2 = [p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]];
@@ -113,15 +121,20 @@ mod tests {
             assert!(cos > 1f64.to_radians().cos(), "scale {scale}: cos {cos}");
         }
         // A zero-area triangle has no normal (ambient only), never a division.
-        assert!(face_normal([[5, 5, 5]; 3], &IDENTITY).is_none());
-        assert!(face_normal([[0, 0, 0], [1 << 16, 0, 0], [2 << 16, 0, 0]], &IDENTITY).is_none());
+        assert!(face_normal([[5, 5, 5]; 3], &IDENTITY, Normalize::Newton).is_none());
+        assert!(face_normal(
+            [[0, 0, 0], [1 << 16, 0, 0], [2 << 16, 0, 0]],
+            &IDENTITY,
+            Normalize::Newton
+        )
+        .is_none());
         // Extreme coordinates do not overflow.
         let big = [
             [i32::MIN, i32::MIN, 0],
             [i32::MAX, i32::MIN, 0],
             [i32::MIN, i32::MAX, 7],
         ];
-        assert!(face_normal(big, &IDENTITY).is_some());
+        assert!(face_normal(big, &IDENTITY, Normalize::Newton).is_some());
     }
 
     /// T34: Lambert with random unit vectors, zero normals and back-facing normals: intensity in

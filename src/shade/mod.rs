@@ -10,10 +10,13 @@ mod lambert;
 mod paint;
 
 pub(crate) use lambert::{face_normal, lambert, vertex_normal};
-pub use paint::{Paint, SmoothCursor, SmoothPaint, SolidPaint};
+pub use paint::{
+    Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
+};
 
 use embedded_graphics::pixelcolor::Rgb888;
 
+use crate::math::Normalize;
 use crate::raster::ScreenPoint;
 use crate::scene::Lighting;
 
@@ -30,10 +33,17 @@ pub struct FaceInputs<'a> {
     pub(crate) model: [[i32; 3]; 3],
     /// World-from-model normal matrix (cofactor, raw Q16.16).
     pub(crate) normal_matrix: &'a [[i32; 3]; 3],
+    /// How normals are normalised.
+    pub(crate) normalize: Normalize,
     /// Per-vertex lit colours (Gouraud).
     pub(crate) vertex_rgb: [[i32; 3]; 3],
     /// Snapped screen positions.
     pub(crate) screen: [ScreenPoint; 3],
+    /// Depths (Q1.30).
+    pub(crate) depth: [i32; 3],
+    /// For perspective projections, the value `1/w` is proportional to after subtracting the
+    /// depth (Q1.30).
+    pub(crate) inverse_w_offset: Option<i64>,
     /// Doubled signed screen area.
     pub(crate) area2: i64,
 }
@@ -63,9 +73,20 @@ pub struct Flat;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Gouraud;
 
+/// [`Gouraud`] with perspective-correct interpolation: each colour is weighted by `1/w` as
+/// the f64 reference does, at the price of three divisions per pixel (`docs/accuracy.md`
+/// measures both). Under an orthographic projection it draws what [`Gouraud`] draws.
+///
+/// `1/w` is not stored: for a perspective projection the depth `d = z/w` is `−a + b/w` (`a`,
+/// `b` from the projection's third row), so `1/w ∝ −a − d` is recovered from the depth every
+/// vertex already has.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct PerspectiveGouraud;
+
 impl sealed::Sealed for Unlit {}
 impl sealed::Sealed for Flat {}
 impl sealed::Sealed for Gouraud {}
+impl sealed::Sealed for PerspectiveGouraud {}
 
 impl Shading for Unlit {
     type Paint = SolidPaint;
@@ -79,7 +100,7 @@ impl Shading for Flat {
     type Paint = SolidPaint;
     const PER_VERTEX: bool = false;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
-        let n = face_normal(face.model, face.normal_matrix);
+        let n = face_normal(face.model, face.normal_matrix, face.normalize);
         SolidPaint(lambert(face.base, n, lighting))
     }
 }
@@ -89,5 +110,17 @@ impl Shading for Gouraud {
     const PER_VERTEX: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> SmoothPaint {
         SmoothPaint::new(&face.screen, face.vertex_rgb, face.area2)
+    }
+}
+
+impl Shading for PerspectiveGouraud {
+    type Paint = PerspectivePaint;
+    const PER_VERTEX: bool = true;
+    fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> PerspectivePaint {
+        let q = match face.inverse_w_offset {
+            Some(offset) => face.depth.map(|d| offset.saturating_sub(d as i64)),
+            None => [1; 3],
+        };
+        PerspectivePaint::new(&face.screen, face.vertex_rgb, q, face.area2)
     }
 }

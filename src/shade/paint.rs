@@ -99,6 +99,96 @@ impl Paint for SmoothPaint {
     }
 }
 
+/// Vertex colours interpolated perspective-correctly: each channel is `Σλᵢcᵢqᵢ / Σλᵢqᵢ` with
+/// screen-space weights `λᵢ` and `qᵢ ∝ 1/wᵢ`, one division per channel and pixel, clamped to
+/// the range of the vertex values like [`SmoothPaint`].
+#[derive(Clone, Copy, Debug)]
+pub struct PerspectivePaint {
+    /// `cₖ·q` per channel, then `q`.
+    planes: [Plane; 4],
+    lo: [i64; 3],
+    hi: [i64; 3],
+}
+
+/// Weights `q` are scaled so that the largest of a triangle's is this: numerators `c·q` with
+/// `c < 2¹⁶` stay below 2⁴⁴, and the denominator plane (`q·2¹⁶`) too.
+const Q_BITS: u32 = 28;
+
+impl PerspectivePaint {
+    /// From vertex colours (channels `0..=255 << RGB_FRAC`) and weights `q` proportional to
+    /// `1/w` (positive; any common scale).
+    pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], q: [i64; 3], area2: i64) -> Self {
+        let max = q.iter().copied().max().unwrap_or(1).max(1);
+        let shift = (64 - max.leading_zeros()) as i32 - Q_BITS as i32;
+        let q = q.map(|v| {
+            let v = if shift > 0 {
+                v >> shift
+            } else {
+                v << (-shift) as u32
+            };
+            v.max(1)
+        });
+        let channel = |k: usize| rgb.map(|c| c.get(k).copied().unwrap_or(0) as i64);
+        let num = |k: usize| {
+            let c = channel(k);
+            [0, 1, 2].map(|i| c.get(i).copied().unwrap_or(0) * q.get(i).copied().unwrap_or(0))
+        };
+        let den = q.map(|v| v << 16);
+        let planes = [
+            Plane::new(p, num(0), area2),
+            Plane::new(p, num(1), area2),
+            Plane::new(p, num(2), area2),
+            Plane::new(p, den, area2),
+        ];
+        let lo = [0, 1, 2].map(|k| channel(k).into_iter().min().unwrap_or(0));
+        let hi = [0, 1, 2].map(|k| channel(k).into_iter().max().unwrap_or(0));
+        PerspectivePaint { planes, lo, hi }
+    }
+}
+
+/// The running colour of a [`PerspectivePaint`] along a span.
+#[derive(Clone, Copy, Debug)]
+pub struct PerspectiveCursor {
+    acc: [i64; 4],
+    step: [i64; 4],
+    lo: [i64; 3],
+    hi: [i64; 3],
+}
+
+impl Iterator for PerspectiveCursor {
+    type Item = Rgb888;
+    #[inline]
+    fn next(&mut self) -> Option<Rgb888> {
+        let den = self.acc[3].max(1);
+        let ch = |k: usize| {
+            // c·q / (q·2¹⁶) · 2¹⁶ = c with RGB_FRAC fraction bits.
+            let c = crate::math::div_round(self.acc[k].max(0) << 16, den);
+            let c = c.clamp(self.lo[k], self.hi[k]);
+            ((c + (1 << (RGB_FRAC - 1))) >> RGB_FRAC).clamp(0, 255) as u8
+        };
+        let c = Rgb888::new(ch(0), ch(1), ch(2));
+        for k in 0..4 {
+            self.acc[k] = self.acc[k].wrapping_add(self.step[k]);
+        }
+        Some(c)
+    }
+}
+
+impl Paint for PerspectivePaint {
+    type Cursor = PerspectiveCursor;
+    fn solid(&self) -> Option<Rgb888> {
+        None
+    }
+    fn cursor(&self, x: i32, y: i32) -> PerspectiveCursor {
+        PerspectiveCursor {
+            acc: self.planes.map(|p| p.at(x, y)),
+            step: self.planes.map(|p| p.step_x()),
+            lo: self.lo,
+            hi: self.hi,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,0 +1,220 @@
+//! The approximation methods behind two precision knobs: how sines and cosines are computed when
+//! a matrix is built from an angle ([`Trig`]), and how lighting normalises normals
+//! ([`Normalize`]). Each is a plain value: the default is what the crate uses everywhere, the
+//! others exist so that their error and cost can be measured (`docs/accuracy.md`) and chosen.
+
+use super::angle::Angle;
+use super::scalar::{shr_round, UNIT_ONE};
+use super::sqrt::rsqrt_q45;
+use super::vector::normalize;
+use super::Unit;
+
+/// How [`Angle`]s become sines and cosines (for [`Transform::matrix_by`](crate::mesh::Transform::matrix_by)).
+///
+/// | method | max error | cost |
+/// |---|---|---|
+/// | [`Polynomial`](Trig::Polynomial) | 6·10⁻⁹ | 5 multiply-adds in i64 |
+/// | [`Table`](Trig::Table) | 3.1·10⁻³ | one load (514 bytes of flash) |
+/// | `Micromath` (feature `micromath`) | about 10⁻³ | f32 polynomial; float code on the target |
+///
+/// ```
+/// use fixed3d::math::{Angle, Trig};
+/// let (s, c) = Trig::Table.sin_cos(Angle::from_degrees(30));
+/// assert!((s.to_num::<f64>() - 0.5).abs() < 4e-3);
+/// assert!((c.to_num::<f64>() - 0.75f64.sqrt()).abs() < 4e-3);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Trig {
+    /// The crate's integer polynomial (the default): bit-identical on every target.
+    #[default]
+    Polynomial,
+    /// A 257-entry quarter-wave table of Q1.15 values, nearest entry, no interpolation: the
+    /// kind of table small fixed-point renderers use.
+    Table,
+    /// micromath's f32 approximations (feature `micromath`).
+    #[cfg(feature = "micromath")]
+    Micromath,
+}
+
+/// Entries of the quarter-wave table: `sin(π/2 · i/256)` in Q1.15, from the polynomial.
+const TABLE_STEPS: u32 = 256;
+const SINE_TABLE: [u16; TABLE_STEPS as usize + 1] = {
+    let mut t = [0u16; TABLE_STEPS as usize + 1];
+    let mut i = 0;
+    while i <= TABLE_STEPS {
+        // An angle of i/256 of a quarter turn is i · 2²² in binary-angle units.
+        let s = Angle::from_bits(i << 22).sin_bits() as i64;
+        t[i as usize] = shr_round(s, 15) as u16;
+        i += 1;
+    }
+    t
+};
+
+fn table_sine(a: Angle) -> i32 {
+    let bits = a.to_bits();
+    let quadrant = bits >> 30;
+    // Nearest entry: 2²² binary-angle units per step.
+    let step = (((bits & ((1 << 30) - 1)) + (1 << 21)) >> 22) as usize;
+    let at = |i: usize| SINE_TABLE.get(i).copied().unwrap_or(0) as i32;
+    let n = TABLE_STEPS as usize;
+    let v = match quadrant {
+        0 => at(step),
+        1 => at(n.saturating_sub(step)),
+        2 => -at(step),
+        _ => -at(n.saturating_sub(step)),
+    };
+    v << 15
+}
+
+impl Trig {
+    /// Sine and cosine of `a` as [`Unit`]s (Q2.30), each within [−1, 1].
+    #[must_use]
+    pub fn sin_cos(self, a: Angle) -> (Unit, Unit) {
+        let quarter = Angle::from_bits(1 << 30);
+        let (s, c) = match self {
+            Trig::Polynomial => (a.sin_bits(), a.cos_bits()),
+            Trig::Table => (table_sine(a), table_sine(a + quarter)),
+            #[cfg(feature = "micromath")]
+            Trig::Micromath => {
+                // The binary angle as a signed fraction of half a turn, in radians.
+                let r = a.to_bits() as i32 as f32 * (core::f32::consts::PI / 2_147_483_648.0);
+                let (s, c) = micromath::F32(r).sin_cos();
+                let q =
+                    |v: micromath::F32| ((v.0 * UNIT_ONE as f32) as i32).clamp(-UNIT_ONE, UNIT_ONE);
+                (q(s), q(c))
+            }
+        };
+        (Unit::from_bits(s), Unit::from_bits(c))
+    }
+
+    /// Sine and cosine rounded to Q16.16, for matrices.
+    pub(crate) fn sin_cos_q16(self, a: Angle) -> (i32, i32) {
+        let (s, c) = self.sin_cos(a);
+        let q = |v: Unit| shr_round(v.to_bits() as i64, 14) as i32;
+        (q(s), q(c))
+    }
+}
+
+/// How lighting turns a normal into a unit vector (per face for flat shading, per vertex for
+/// Gouraud); set with [`Precision::with_normalize`](crate::pipeline::Precision::with_normalize).
+///
+/// | method | max relative error | cost |
+/// |---|---|---|
+/// | [`Newton`](Normalize::Newton) | 2·10⁻⁶ | table seed, two Newton steps, no division |
+/// | [`Exact`](Normalize::Exact) | 2⁻³⁰ (correctly rounded) | a 32-step integer square root, 3 divisions |
+/// | `Micromath` (feature `micromath`) | 3.4·10⁻² (measured) | micromath's f32 `invsqrt`: a bit trick, no Newton step |
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Normalize {
+    /// Reciprocal square root from a 48-entry table and two Newton steps (the default).
+    #[default]
+    Newton,
+    /// Integer square root and a rounded division per component.
+    Exact,
+    /// micromath's f32 `invsqrt` (feature `micromath`).
+    #[cfg(feature = "micromath")]
+    Micromath,
+}
+
+impl Normalize {
+    /// Unit vector (Q2.30) of a non-zero integer vector of any scale; `None` for zero.
+    pub(crate) fn unit(self, v: [i64; 3]) -> Option<[i32; 3]> {
+        match self {
+            Normalize::Newton => normalize_newton(v),
+            Normalize::Exact => normalize(v),
+            #[cfg(feature = "micromath")]
+            Normalize::Micromath => {
+                let c = shrink_to_15_bits(v)?;
+                let s = c.iter().map(|x| (x * x) as f32).sum::<f32>();
+                let k = micromath::F32(s).invsqrt().0 * UNIT_ONE as f32;
+                Some(c.map(|x| ((x as f32 * k) as i32).clamp(-UNIT_ONE, UNIT_ONE)))
+            }
+        }
+    }
+}
+
+/// The vector shifted so that its largest component lies in [2¹⁴, 2¹⁵); `None` for zero.
+fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
+    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+    if max == 0 {
+        return None;
+    }
+    let shift = 64 - max.leading_zeros() as i32 - 15;
+    Some(v.map(|x| {
+        if shift > 0 {
+            x >> shift
+        } else {
+            x << (-shift) as u32
+        }
+    }))
+}
+
+/// [`Normalize::Newton`]: relative error below 2·10⁻⁶, no division and no loop.
+fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
+    let c = shrink_to_15_bits(v)?;
+    // The sum of squares lies in [2²⁸, 3·2³⁰).
+    let s = c.iter().map(|x| (x * x) as u64).sum::<u64>();
+    let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
+    let y = rsqrt_q45(m) as i64; // 2⁴⁵ / sqrt(m)
+                                 // c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
+    Some(c.map(|x| ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    extern crate std;
+
+    fn worst_trig(method: Trig) -> f64 {
+        let mut worst = 0f64;
+        for i in 0..(1u32 << 16) {
+            let a = Angle::from_bits(i.wrapping_mul(65_537));
+            let t = a.to_bits() as f64 / 4_294_967_296.0 * core::f64::consts::TAU;
+            let (s, c) = method.sin_cos(a);
+            worst = worst
+                .max((s.to_num::<f64>() - t.sin()).abs())
+                .max((c.to_num::<f64>() - t.cos()).abs());
+        }
+        worst
+    }
+
+    /// M9 for every trig method over the whole circle.
+    #[test]
+    fn m9_trig_methods() {
+        assert!(worst_trig(Trig::Polynomial) < 6e-9);
+        let table = worst_trig(Trig::Table);
+        assert!(table < 3.2e-3 && table > 1e-3, "table {table}");
+        #[cfg(feature = "micromath")]
+        assert!(worst_trig(Trig::Micromath) < 2e-3);
+    }
+
+    /// M9 for every normalisation method, over many scales.
+    #[test]
+    fn m9_normalize_methods() {
+        let methods = [
+            (Normalize::Newton, 2e-6),
+            (Normalize::Exact, 3e-9),
+            #[cfg(feature = "micromath")]
+            (Normalize::Micromath, 3.5e-2),
+        ];
+        for (method, bound) in methods {
+            let mut worst = 0f64;
+            for i in 1..2000i64 {
+                let v = [i * 7919 % 1013 - 506, i * 104_729 % 2017 - 1008, i - 1000];
+                for shift in [0u32, 9, 20, 40] {
+                    let v = v.map(|c| c << shift);
+                    let Some(u) = method.unit(v) else { continue };
+                    let len = v.iter().map(|c| (*c as f64).powi(2)).sum::<f64>().sqrt();
+                    for (got, c) in u.iter().zip(v) {
+                        let e = (*got as f64 / UNIT_ONE as f64 - c as f64 / len).abs();
+                        worst = worst.max(e);
+                    }
+                }
+            }
+            assert!(worst < bound, "{method:?}: {worst}");
+        }
+        assert_eq!(Normalize::Exact.unit([0; 3]), None);
+        assert_eq!(Normalize::Newton.unit([0; 3]), None);
+    }
+}
