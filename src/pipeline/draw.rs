@@ -135,7 +135,6 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// drawn, or the target's first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
         let mut stats = Stats::default();
-        let clip = target.clip();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
         for setup in self.objects() {
             for tri in setup.object.mesh.triangles() {
@@ -164,7 +163,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                         (b.point(), b.z, rgb[1]),
                         (c.point(), c.z, rgb[2]),
                     ];
-                    self.fill_face(target, clip, &setup, tri, v, &mut stats)?;
+                    self.fill_face(target, &setup, tri, v, self.frame.cull, &mut stats)?;
                     continue;
                 }
                 bump(&mut stats.clipped);
@@ -174,13 +173,26 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     bump(&mut stats.degenerate);
                     continue;
                 };
+                // The polygon faces one way as a whole: a sliver of its fan that snapping turned
+                // over is culled with the rest (it would cover pixels outside the polygon).
+                let area = fan_area(&projected);
+                if area == 0 {
+                    bump(&mut stats.degenerate);
+                    continue;
+                }
+                if !facing_kept(self.frame.cull, area) {
+                    bump(&mut stats.culled);
+                    continue;
+                }
+                let cull = if area < 0 { Cull::Back } else { Cull::Front };
                 // A convex polygon: a fan from its first vertex.
                 let Some((first, rest)) = projected.split_first() else {
                     continue;
                 };
                 for pair in rest.windows(2) {
                     if let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) {
-                        self.fill_face(target, clip, &setup, tri, [*first, *v1, *v2], &mut stats)?;
+                        let v = [*first, *v1, *v2];
+                        self.fill_face(target, &setup, tri, v, cull, &mut stats)?;
                     }
                 }
             }
@@ -188,26 +200,27 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         Ok(stats)
     }
 
-    /// Culls, shades and fills one screen triangle of `tri` (the whole triangle, or a piece of
-    /// it after clipping): vertices are (snapped position, depth, colour).
+    /// Culls (by `cull`), shades and fills one screen triangle of `tri` (the whole triangle, or
+    /// a piece of it after clipping): vertices are (snapped position, depth, colour).
     // Not inlined: one call per triangle costs little and keeps the stage measurable.
     #[inline(never)]
     fn fill_face<T: RasterTarget>(
         &self,
         target: &mut T,
-        clip: PixelRect,
         setup: &ObjectSetup<'_>,
         tri: &Triangle,
         v: [(ScreenPoint, i32, [i32; 3]); 3],
+        cull: Cull,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
+        let clip = target.clip();
         let p = v.map(|v| v.0);
         let area = area2(&p);
         if area == 0 {
             bump(&mut stats.degenerate);
             return Ok(());
         }
-        if !facing_kept(self.frame.cull, area) {
+        if !facing_kept(cull, area) {
             bump(&mut stats.culled);
             return Ok(());
         }
@@ -358,9 +371,11 @@ fn project_polygon(poly: &Polygon, map: &ScreenMap) -> Option<Projected> {
 
 /// Doubled signed screen area of a clipped polygon (0 if it is empty).
 fn polygon_area(poly: &Polygon, map: &ScreenMap) -> i64 {
-    let Some(p) = project_polygon(poly, map) else {
-        return 0;
-    };
+    project_polygon(poly, map).map_or(0, |p| fan_area(&p))
+}
+
+/// Doubled signed area of a projected polygon (the sum over its fan).
+fn fan_area(p: &Projected) -> i64 {
     let Some((first, rest)) = p.split_first() else {
         return 0;
     };
