@@ -287,6 +287,12 @@ fn fail() -> ! {
 /// `FRAMES` frames clears (not counted), draws (counted) and hashes; measures the stack of one
 /// more frame; prints one line and exits.
 pub fn run(preset: &str, mut op: impl FnMut(Op) -> u32) -> ! {
+    run_each(&[preset], |_, o| op(o))
+}
+
+/// Like [`run`] for several configurations of one binary: one line per name, each measured
+/// like a preset of its own (`op` is told which).
+pub fn run_each(names: &[&str], mut op: impl FnMut(&str, Op) -> u32) -> ! {
     let meter = match Meter::calibrate() {
         Ok(m) => m,
         Err(CalError::NotInstructionClocked(d)) => {
@@ -303,38 +309,41 @@ pub fn run(preset: &str, mut op: impl FnMut(Op) -> u32) -> ! {
             fail();
         }
     }
-    let (mut sum, mut min, mut max, mut chain) = (0u64, u32::MAX, 0u32, 0u32);
-    for f in 0..FRAMES {
+    for name in names {
+        let mut op = |o: Op| op(name, o);
+        let (mut sum, mut min, mut max, mut chain) = (0u64, u32::MAX, 0u32, 0u32);
+        for f in 0..FRAMES {
+            op(Op::Clear);
+            let (_, n) = meter.count(|| frame(&mut op, f));
+            chain = chain.rotate_left(5) ^ op(Op::Hash);
+            sum += n as u64;
+            min = min.min(n);
+            max = max.max(n);
+        }
         op(Op::Clear);
-        let (_, n) = meter.count(|| frame(&mut op, f));
-        chain = chain.rotate_left(5) ^ op(Op::Hash);
-        sum += n as u64;
-        min = min.min(n);
-        max = max.max(n);
-    }
-    op(Op::Clear);
-    let sp = stack::sp();
-    stack::paint(sp);
-    frame(&mut op, 0);
-    let Some(stack_bytes) = stack::used(sp) else {
+        let sp = stack::sp();
+        stack::paint(sp);
+        frame(&mut op, 0);
+        let Some(stack_bytes) = stack::used(sp) else {
+            hprintln!(
+                "error: a frame used more than {} bytes of stack",
+                stack::WINDOW
+            );
+            fail()
+        };
         hprintln!(
-            "error: a frame used more than {} bytes of stack",
-            stack::WINDOW
+            "preset={} target={} board={} instructions_per_frame={} min={} max={} frames={} hash=0x{:08x} stack={}",
+            name,
+            TARGET,
+            board::NAME,
+            sum / FRAMES.max(1) as u64,
+            min,
+            max,
+            FRAMES,
+            chain,
+            stack_bytes
         );
-        fail()
-    };
-    hprintln!(
-        "preset={} target={} board={} instructions_per_frame={} min={} max={} frames={} hash=0x{:08x} stack={}",
-        preset,
-        TARGET,
-        board::NAME,
-        sum / FRAMES.max(1) as u64,
-        min,
-        max,
-        FRAMES,
-        chain,
-        stack_bytes
-    );
+    }
     debug::exit(debug::EXIT_SUCCESS);
     fail()
 }

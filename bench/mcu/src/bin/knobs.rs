@@ -1,0 +1,114 @@
+//! Preset `knobs`: the reference torus of `full` once per configuration of the accuracy report
+//! (`docs/accuracy.md`), one line each, so that every precision knob has its Cortex-M cost.
+//! The names are the report's; `examples/accuracy.rs --mcu` runs this preset and reads them.
+#![no_std]
+#![no_main]
+
+use cortex_m_rt::entry;
+use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use fixed3d::math::{Angle, Normalize, Trig};
+use fixed3d::mesh::{Mesh, Object, Transform};
+use fixed3d::pipeline::{MatrixFormat, Precision, ScreenVertex};
+use fixed3d::scene::Scene;
+use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Shading};
+use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
+use mcu_bench::scenes::*;
+use mcu_bench::{storage, torus_storage, Op};
+use panic_semihosting as _;
+
+const KNOBS: [&str; 12] = [
+    "default",
+    "subpixel-2",
+    "subpixel-0",
+    "matrix-q16.16",
+    "matrix-q24.8",
+    "depth-u32",
+    "trig-table",
+    "trig-micromath",
+    "normalize-exact",
+    "normalize-micromath",
+    "gouraud-affine",
+    "gouraud-perspective",
+];
+
+const N: usize = (W * H) as usize;
+
+#[entry]
+fn main() -> ! {
+    let (cache, pos, nor, tri) = torus_storage!();
+    let (fb, d16, d32) = storage!(
+        FB: [Rgb565; N] = [Rgb565::BLACK; N],
+        D16: [u16; N] = [0; N],
+        D32: [u32; N] = [0; N],
+    );
+    let mesh = torus_mesh(pos, nor, tri);
+    mcu_bench::run_each(&KNOBS, |knob, op| match op {
+        Op::Clear => {
+            fb.fill(Rgb565::BLACK);
+            d16.fill(u16::MAX);
+            d32.fill(u32::MAX);
+            0
+        }
+        Op::Draw(f) => draw(knob, &mesh, f, cache, fb, d16, d32).is_some() as u32,
+        Op::Hash => frame_hash(fb),
+    })
+}
+
+/// The `full` frame with the knob `knob` moved.
+fn draw(
+    knob: &str,
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    fb: &mut [Rgb565],
+    d16: &mut [u16],
+    d32: &mut [u32],
+) -> Option<()> {
+    let p = Precision::DEFAULT;
+    let precision = match knob {
+        "subpixel-2" => p.with_subpixel_bits(2),
+        "subpixel-0" => p.with_subpixel_bits(0),
+        "matrix-q16.16" => p.with_matrix(MatrixFormat::Fixed(16)),
+        "matrix-q24.8" => p.with_matrix(MatrixFormat::Fixed(8)),
+        "normalize-exact" => p.with_normalize(Normalize::Exact),
+        "normalize-micromath" => p.with_normalize(Normalize::Micromath),
+        _ => p,
+    };
+    let trig = match knob {
+        "trig-table" => Trig::Table,
+        "trig-micromath" => Trig::Micromath,
+        _ => Trig::Polynomial,
+    };
+    let turn = Angle::from_degrees(30).wrapping_add(Angle::from_degrees(f as i32));
+    let model = Transform::new().rotated_y(turn).matrix_by(trig)
+        * Transform::new()
+            .rotated_x(Angle::from_degrees(20))
+            .matrix_by(trig);
+    let objects = [Object::new(mesh, model, ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    let frame = frame(W, H)?.with_precision(precision);
+    match knob {
+        "depth-u32" => draw_into(frame, &scene, Flat, cache, fb, d32),
+        "gouraud-affine" => draw_into(frame, &scene, Gouraud, cache, fb, d16),
+        "gouraud-perspective" => draw_into(frame, &scene, PerspectiveGouraud, cache, fb, d16),
+        _ => draw_into(frame, &scene, Flat, cache, fb, d16),
+    }
+}
+
+fn draw_into<S: Shading, D: DepthFormat>(
+    frame: fixed3d::pipeline::Frame,
+    scene: &Scene<'_, 1>,
+    shading: S,
+    cache: &mut [ScreenVertex],
+    fb: &mut [Rgb565],
+    depth: &mut [D],
+) -> Option<()> {
+    let p = frame.prepare(scene, cache, shading).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(fb, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
+        .ok()
+        .map(|_| ())
+}
