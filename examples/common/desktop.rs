@@ -184,7 +184,8 @@ impl Model {
         )
     }
 
-    fn owned(
+    /// A model over owned storage (indices must be valid for `positions`).
+    pub fn owned(
         name: &str,
         positions: Vec<Vec3>,
         normals: Vec<Vec3>,

@@ -115,6 +115,34 @@ impl Camera {
     }
 }
 
+/// A clip-space polygon (any attributes carried after the four coordinates) clipped against
+/// the near plane (z > 0) and the far plane (z ≤ w), attributes interpolated linearly in clip
+/// space (which is what makes them perspective-correct on screen).
+pub fn clip_near_far<const N: usize>(poly: &[[f64; N]]) -> Vec<[f64; N]> {
+    let mut out: Vec<[f64; N]> = poly.to_vec();
+    let planes: [fn(&[f64; N]) -> f64; 2] = [|c| c[2], |c| c[3] - c[2]];
+    for (k, dist) in planes.iter().enumerate() {
+        let input = std::mem::take(&mut out);
+        for i in 0..input.len() {
+            let (a, b) = (input[i], input[(i + 1) % input.len()]);
+            let (da, db) = (dist(&a), dist(&b));
+            let inside = |d: f64| if k == 0 { d > 0.0 } else { d >= 0.0 };
+            if inside(da) {
+                out.push(a);
+            }
+            if inside(da) != inside(db) {
+                let t = da / (da - db);
+                let mut v = [0.0; N];
+                for j in 0..N {
+                    v[j] = a[j] + t * (b[j] - a[j]);
+                }
+                out.push(v);
+            }
+        }
+    }
+    out
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Cover {
     Full,

@@ -1,10 +1,12 @@
 //! Shading: what colour each pixel of a triangle gets.
 //!
-//! Three shading types, chosen as a type parameter so that a program links only what it uses:
+//! Four shading types, chosen as a type parameter so that a program links only what it uses:
 //! [`Unlit`] (the object's colour as is), [`Flat`] (Lambert once per triangle, from its face
-//! normal) and [`Gouraud`] (Lambert once per vertex, from the mesh's normals, then colours
+//! normal), [`Gouraud`] (Lambert once per vertex, from the mesh's normals, then colours
 //! interpolated across the triangle: affine in screen space, every pixel a convex combination
-//! of the vertex colours).
+//! of the vertex colours) and [`PerspectiveGouraud`] (the same, interpolated
+//! perspective-correctly at three divisions per pixel; `docs/accuracy.md` measures the
+//! difference).
 
 mod lambert;
 mod paint;
