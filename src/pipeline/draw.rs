@@ -30,6 +30,20 @@ fn facing_kept(cull: Cull, area: i64) -> bool {
     }
 }
 
+/// True when a primitive of this signed area is drawn; otherwise counts it as degenerate (zero
+/// area) or culled.
+fn kept(cull: Cull, area: i64, stats: &mut Stats) -> bool {
+    if area == 0 {
+        bump(&mut stats.degenerate);
+        false
+    } else if !facing_kept(cull, area) {
+        bump(&mut stats.culled);
+        false
+    } else {
+        true
+    }
+}
+
 /// Per-object constants for drawing.
 struct ObjectSetup<'o> {
     object: &'o Object<'o>,
@@ -176,12 +190,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 // The polygon faces one way as a whole: a sliver of its fan that snapping turned
                 // over is culled with the rest (it would cover pixels outside the polygon).
                 let area = fan_area(&projected);
-                if area == 0 {
-                    bump(&mut stats.degenerate);
-                    continue;
-                }
-                if !facing_kept(self.frame.cull, area) {
-                    bump(&mut stats.culled);
+                if !kept(self.frame.cull, area, &mut stats) {
                     continue;
                 }
                 let cull = if area < 0 { Cull::Back } else { Cull::Front };
@@ -216,12 +225,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let clip = target.clip();
         let p = v.map(|v| v.0);
         let area = area2(&p);
-        if area == 0 {
-            bump(&mut stats.degenerate);
-            return Ok(());
-        }
-        if !facing_kept(cull, area) {
-            bump(&mut stats.culled);
+        if !kept(cull, area, stats) {
             return Ok(());
         }
         // Culling comes first so that every band of a frame counts the same culled triangles.
@@ -337,12 +341,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     );
                     polygon_area(&poly, &map)
                 };
-                if area == 0 {
-                    bump(&mut stats.degenerate);
-                    continue;
-                }
-                if !facing_kept(self.frame.cull, area) {
-                    bump(&mut stats.culled);
+                if !kept(self.frame.cull, area, &mut stats) {
                     continue;
                 }
                 segment(tri[0], tri[1], &mut stats)?;

@@ -13,7 +13,7 @@ use fixed3d::pipeline::{Frame, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, Gouraud, Unlit};
-use fixed3d::target::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
+use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer};
 
 /// Frames per preset (the hash chains over them).
 pub const FRAMES: u32 = 4;
@@ -183,14 +183,14 @@ pub fn three_lights() -> Lighting<3> {
     l
 }
 
-/// Draws `scene` through `frame` into a 320x240 framebuffer with a u16 depth buffer.
-fn depth_frame<const N: usize, S: fixed3d::shade::Shading>(
+/// Draws `scene` through `frame` into a 320x240 framebuffer with a depth buffer.
+pub fn depth_frame<const N: usize, S: fixed3d::shade::Shading, D: DepthFormat>(
     frame: Frame,
     scene: &Scene<'_, N>,
     shading: S,
     cache: &mut [ScreenVertex],
     color: &mut [Rgb565],
-    depth: &mut [u16],
+    depth: &mut [D],
 ) -> Option<()> {
     let p = frame.prepare(scene, cache, shading).ok()?;
     let (mut c, mut d) = (

@@ -10,8 +10,7 @@ use fixed3d::math::{Angle, Normalize, Trig};
 use fixed3d::mesh::{Mesh, Object, Transform};
 use fixed3d::pipeline::{MatrixFormat, Precision, ScreenVertex};
 use fixed3d::scene::Scene;
-use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Shading};
-use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
+use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud};
 use mcu_bench::scenes::*;
 use mcu_bench::{storage, torus_storage, Op};
 use panic_semihosting as _;
@@ -88,27 +87,9 @@ fn draw(
     let scene = Scene::new(&objects, sun());
     let frame = frame(W, H)?.with_precision(precision);
     match knob {
-        "depth-u32" => draw_into(frame, &scene, Flat, cache, fb, d32),
-        "gouraud-affine" => draw_into(frame, &scene, Gouraud, cache, fb, d16),
-        "gouraud-perspective" => draw_into(frame, &scene, PerspectiveGouraud, cache, fb, d16),
-        _ => draw_into(frame, &scene, Flat, cache, fb, d16),
+        "depth-u32" => depth_frame(frame, &scene, Flat, cache, fb, d32),
+        "gouraud-affine" => depth_frame(frame, &scene, Gouraud, cache, fb, d16),
+        "gouraud-perspective" => depth_frame(frame, &scene, PerspectiveGouraud, cache, fb, d16),
+        _ => depth_frame(frame, &scene, Flat, cache, fb, d16),
     }
-}
-
-fn draw_into<S: Shading, D: DepthFormat>(
-    frame: fixed3d::pipeline::Frame,
-    scene: &Scene<'_, 1>,
-    shading: S,
-    cache: &mut [ScreenVertex],
-    fb: &mut [Rgb565],
-    depth: &mut [D],
-) -> Option<()> {
-    let p = frame.prepare(scene, cache, shading).ok()?;
-    let (mut c, mut d) = (
-        FrameBuffer::new(fb, W, H).ok()?,
-        DepthBuffer::new(depth, W, H).ok()?,
-    );
-    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
-        .ok()
-        .map(|_| ())
 }
