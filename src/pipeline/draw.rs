@@ -117,7 +117,11 @@ fn fill<T: RasterTarget, P: Paint>(
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
     let plane = if T::DEPTH {
-        DepthPlane(Plane::new(&p, z.map(|z| (z as i64) << 14), area))
+        let z = z.map(|z| (z as i64) << 14);
+        DepthPlane {
+            plane: Plane::new(&p, z, area),
+            max: z.into_iter().max().unwrap_or(i64::MAX),
+        }
     } else {
         DepthPlane::default()
     };

@@ -20,6 +20,32 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
     /// Depth-tests one span: `start` and `step` are the interpolator's values at the first
     /// pixel and from pixel to pixel. `next_color` is called once per pixel, in order; its
     /// colour is stored where the fragment passes. Returns how many passed.
+    /// For a triangle whose vertex depths are at most `max` (Q1.44), the per-pixel step of
+    /// [`test_span_unclamped`](Self::test_span_unclamped) if every pixel it covers can skip
+    /// the clamp, from the interpolator's step.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn unclamped_step(max: i64, step: i64) -> Option<i32> {
+        let _ = (max, step);
+        None
+    }
+
+    /// [`test_span`](Self::test_span) for a span of a triangle [`unclamped_step`]
+    /// (Self::unclamped_step) accepted, with the step it returned.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn test_span_unclamped<C: Copy>(
+        depths: &mut [Self],
+        colors: &mut [C],
+        start: i64,
+        step: i32,
+        test: DepthTest,
+        next_color: impl FnMut() -> C,
+    ) -> u32 {
+        // Formats without a fast path never hand out a step; this only keeps the contract.
+        Self::test_span(depths, colors, start, (step as i64) << 13, test, next_color)
+    }
+
     #[doc(hidden)]
     #[inline(always)]
     fn test_span<C: Copy>(
@@ -82,7 +108,7 @@ impl DepthFormat for u16 {
         start: i64,
         step: i64,
         test: DepthTest,
-        mut next_color: impl FnMut() -> C,
+        next_color: impl FnMut() -> C,
     ) -> u32 {
         let n = depths.len().min(colors.len());
         let a = start.saturating_add(1 << 27) >> 13;
@@ -93,9 +119,32 @@ impl DepthFormat for u16 {
             // Ends outside [0, 65536): clamp pixel by pixel.
             return clamped_span(depths, colors, start, step, test, next_color);
         }
-        let (mut acc, st) = (a as i32, st as i32);
+        Self::test_span_unclamped(depths, colors, start, st as i32, test, next_color)
+    }
+
+    /// Pixel centres inside a triangle have depths between its vertices', and the plane errs
+    /// by at most 2¹⁷ units there (see `Plane`), the 32-bit step by less than 2²³ over a span:
+    /// with every vertex at most 2⁴⁴ − 2²⁸, every value of the loop lies in [0, 2³¹).
+    #[inline(always)]
+    fn unclamped_step(max: i64, step: i64) -> Option<i32> {
+        let st = step.saturating_add(1 << 12) >> 13;
+        (max <= (1 << 44) - (1 << 28))
+            .then(|| i32::try_from(st).ok())
+            .flatten()
+    }
+
+    #[inline(always)]
+    fn test_span_unclamped<C: Copy>(
+        depths: &mut [u16],
+        colors: &mut [C],
+        start: i64,
+        st: i32,
+        test: DepthTest,
+        mut next_color: impl FnMut() -> C,
+    ) -> u32 {
+        let mut acc = (start.saturating_add(1 << 27) >> 13) as i32;
         let mut written = 0;
-        // Every value lies between the two ends, within [0, 2³¹): no overflow, no clamp.
+        // Every value lies in [0, 2³¹): no overflow, no clamp.
         if test == DepthTest::Less {
             for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
                 let z = (acc >> 15) as u16;

@@ -13,9 +13,13 @@ use crate::pipeline::Stats;
 use crate::raster::{PixelRect, Plane, Span, TriangleSpans};
 use crate::shade::Paint;
 
-/// Depth across one triangle: the plane through its snapped vertices (opaque).
+/// Depth across one triangle: the plane through its snapped vertices and the largest of their
+/// depths (opaque).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct DepthPlane(pub(crate) Plane);
+pub struct DepthPlane {
+    pub(crate) plane: Plane,
+    pub(crate) max: i64,
+}
 
 /// Something the triangle filler can write spans into: [`ColorDepth`] or [`Direct`].
 pub trait RasterTarget {
@@ -126,7 +130,9 @@ where
         mut colors_for: impl FnMut(Span) -> G,
     ) {
         let (plane, step, test, first_row) =
-            (&depth.0, depth.0.step_x(), self.test, self.first_row);
+            (&depth.plane, depth.plane.step_x(), self.test, self.first_row);
+        // Decided once per triangle: spans whose depths need no clamping.
+        let unclamped = D::unclamped_step(depth.max, step);
         let (mut fragments, mut written) = (0u32, 0u32);
         for span in spans {
             let local = span.y.wrapping_sub(first_row);
@@ -138,8 +144,12 @@ where
             };
             fragments = fragments.wrapping_add(cs.len() as u32);
             let start = plane.at(span.x0, span.y);
-            written =
-                written.wrapping_add(D::test_span(ds, cs, start, step, test, colors_for(span)));
+            let colors = colors_for(span);
+            let n = match unclamped {
+                Some(step) => D::test_span_unclamped(ds, cs, start, step, test, colors),
+                None => D::test_span(ds, cs, start, step, test, colors),
+            };
+            written = written.wrapping_add(n);
         }
         stats.fragments = stats.fragments.saturating_add(fragments);
         stats.written = stats.written.saturating_add(written);
