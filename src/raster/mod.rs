@@ -167,8 +167,15 @@ impl RationalStepper {
     pub(crate) fn new(n0: i64, den: i64, step: i64, ceil: bool) -> Self {
         // Callers pass den ≥ 1; the guard keeps a wrong call from dividing by zero.
         let den = den.max(1);
-        // One 64-bit division (quotient and remainder together), then the floor/ceil fix-up.
-        let (mut q, mut r) = (n0 / den, n0 % den);
+        // One division (quotient and remainder together; 32-bit on 32-bit cores when the
+        // operands fit, which is most triangles on screen), then the floor/ceil fix-up.
+        let (mut q, mut r) = match (i32::try_from(n0), i32::try_from(den)) {
+            // 32-bit cores only: there a 64-bit division is a long library routine.
+            (Ok(n), Ok(d)) if cfg!(target_pointer_width = "32") => {
+                (n.wrapping_div(d) as i64, n.wrapping_rem(d) as i64)
+            }
+            _ => (n0 / den, n0 % den),
+        };
         if r < 0 {
             q -= 1;
             r += den;

@@ -129,8 +129,12 @@ where
         stats: &mut Stats,
         mut colors_for: impl FnMut(Span) -> G,
     ) {
-        let (plane, step, test, first_row) =
-            (&depth.plane, depth.plane.step_x(), self.test, self.first_row);
+        let (plane, step, test, first_row) = (
+            &depth.plane,
+            depth.plane.step_x(),
+            self.test,
+            self.first_row,
+        );
         // Decided once per triangle: spans whose depths need no clamping.
         let unclamped = D::unclamped_step(depth.max, step);
         let (mut fragments, mut written) = (0u32, 0u32);
