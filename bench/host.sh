@@ -75,6 +75,21 @@ $timing
 | best C fixed-point MCU library | about 3.6 M | 3.61 M | 8.94 M |
 | a Rust float software renderer | 7.96 M | 7.78 M | 32.1 M |
 | floor: depth-test and write each covered pixel once | about 0.4 M | | |
+
+## Where the rest goes, and what would take it
+
+- **Per span (half the x86-64 count):** about 7,500 rows a frame each pay the edge steppers,
+  two bounds-checked row slices, the depth plane at the span's first pixel (two 64-bit
+  products: library calls on Cortex-M0) and the loop set-up; the pixels themselves cost about
+  9 instructions each. Stepping the span's first depth along the left edge in 32 bits, and one
+  row slice for both buffers, would take most of it.
+- **Per triangle (about a third):** three or four edge steppers and the depth plane (two
+  divisions of 62-bit numerators: long library routines on Cortex-M0), the face normal and its
+  normalisation (about thirty 64-bit products), Lambert. One reciprocal of the doubled area
+  per triangle for both gradients, and normals precomputed per face in flash, are the next
+  steps.
+- **Per vertex (a tenth):** the transform (twelve 32x32→64 products) and the projection (the
+  depth's 64-bit division); on Cortex-M0, x and y take a 32-bit division when they fit.
 DOC
     echo "wrote docs/performance.md"
 fi
