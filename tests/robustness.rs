@@ -10,12 +10,12 @@ use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use embedded_graphics::Pixel;
 use fixed3d::camera::LookAt;
-use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
+use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Vec3};
 use fixed3d::mesh::{Mesh, MeshError, Object, CUBE};
-use fixed3d::pipeline::{Cull, Frame, PrepareError, ScreenVertex};
+use fixed3d::pipeline::{Cull, Frame, MatrixFormat, Precision, PrepareError, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{LightColor, Lighting, Scene};
-use fixed3d::shade::{Flat, Gouraud, Unlit};
+use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Unlit};
 use fixed3d::target::{BufferError, ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use proptest::prelude::*;
 
@@ -211,12 +211,16 @@ proptest! {
         far_factor in prop::sample::select(vec![1.01f32, 10.0, 1e4]),
         cull in prop::sample::select(vec![Cull::Back, Cull::Front, Cull::None]),
         w in 1u32..48, h in 1u32..40, band in 1u32..9,
+        subpixel in 0u32..5, matrix_bits in prop::sample::select(vec![0u32, 8, 16]),
+        exact in any::<bool>(), scale_bits in prop::sample::select(vec![64i32, 1 << 16, 100 << 16]),
     ) {
         let n = positions.len() as u16;
         let tris: Vec<[u16; 3]> = raw_tris.iter().map(|&(a, b, c)| [a % n, b % n, c % n]).collect();
         let normals: Vec<Vec3> = positions.iter().map(|p| *p - Vec3::from_int(0, 1, 0)).collect();
         let mesh = Mesh::new(&positions, &tris).unwrap().with_normals(&normals).unwrap();
-        let objects = [Object::new(&mesh, Mat4::IDENTITY, Rgb888::new(200, 120, 40))];
+        let scale = Scalar::from_bits(scale_bits);
+        let model = Mat4::scaling(Vec3::new(scale, scale, scale));
+        let objects = [Object::new(&mesh, model, Rgb888::new(200, 120, 40))];
         let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(0.2)));
         lighting.push(fixed3d::scene::DirectionalLight::new(Vec3::from_int(-1, 1, 1), LightColor::WHITE)).unwrap();
         let scene = Scene::new(&objects, lighting);
@@ -224,10 +228,18 @@ proptest! {
         let viewport = Viewport::new(w, h).unwrap();
         let far = Scalar::from_num((near * far_factor).min(30000.0));
         let Ok(proj) = Projection::perspective(Angle::from_degrees(70), viewport.aspect(), Scalar::from_num(near), far) else { return Ok(()) };
-        let frame = Frame::new(&view, &proj, viewport).with_cull(cull);
+        // Every precision knob (docs/accuracy.md) goes through the same checks.
+        let precision = Precision::DEFAULT
+            .with_subpixel_bits(subpixel)
+            .with_normalize(if exact { Normalize::Exact } else { Normalize::Newton });
+        let precision = match matrix_bits {
+            0 => precision,
+            b => precision.with_matrix(MatrixFormat::Fixed(b)),
+        };
+        let frame = Frame::new(&view, &proj, viewport).with_cull(cull).with_precision(precision);
         let mut cache = vec![ScreenVertex::DEFAULT; positions.len()];
 
-        let render_full = |cache: &mut [ScreenVertex], gouraud: bool| {
+        let render_full = |cache: &mut [ScreenVertex], gouraud: u8| {
             let len = (w * h) as usize;
             let mut c = vec![CANARY; len + 32];
             let mut d = vec![0u16; len + 32];
@@ -237,17 +249,17 @@ proptest! {
                 color.fill(Rgb565::BLACK);
                 depth.clear();
                 let mut t = ColorDepth::new(&mut color, &mut depth).unwrap();
-                if gouraud {
-                    frame.prepare(&scene, cache, Gouraud).unwrap().draw(&mut t).unwrap();
-                } else {
-                    frame.prepare(&scene, cache, Flat).unwrap().draw(&mut t).unwrap();
-                }
+                match gouraud {
+                    0 => frame.prepare(&scene, cache, Flat).unwrap().draw(&mut t).unwrap(),
+                    1 => frame.prepare(&scene, cache, Gouraud).unwrap().draw(&mut t).unwrap(),
+                    _ => frame.prepare(&scene, cache, PerspectiveGouraud).unwrap().draw(&mut t).unwrap(),
+                };
             }
             assert!(c[..16].iter().chain(&c[16 + len..]).all(|&p| p == CANARY));
             assert!(d[..16].iter().chain(&d[16 + len..]).all(|&p| p == 0));
             c[16..16 + len].to_vec()
         };
-        for gouraud in [false, true] {
+        for gouraud in [0u8, 1, 2] {
             let full = render_full(&mut cache, gouraud);
             prop_assert_eq!(&full, &render_full(&mut cache, gouraud));
             // The same frame in bands of `band` rows.
@@ -266,7 +278,7 @@ proptest! {
                 banded.extend_from_slice(&c);
                 y0 += rows;
             }
-            if !gouraud {
+            if gouraud == 0 {
                 prop_assert_eq!(&full, &banded);
             }
             // Wireframe straight into a framebuffer with canaries.
