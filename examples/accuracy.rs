@@ -32,7 +32,7 @@ use std::process::{Command, ExitCode};
 
 use accuracy::{configs, ideal, measure, render, scenes, Config, Ideal, Metrics, Shade};
 
-const MODELS: &str = "../shared/models";
+const MODELS: &str = "models";
 const TIMED_FRAMES: usize = 7;
 
 fn main() -> ExitCode {

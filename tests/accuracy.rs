@@ -14,7 +14,7 @@ mod reference;
 use accuracy::{configs, ideal, measure, render, scenes, Config, Metrics, SceneDef, Shade};
 
 fn reduced_scenes() -> Vec<SceneDef> {
-    let models = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/models");
+    let models = concat!(env!("CARGO_MANIFEST_DIR"), "/models");
     let dir = std::path::Path::new(models).is_dir().then_some(models);
     scenes(dir, true)
         .into_iter()

@@ -254,10 +254,10 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
     let mut out = vec![base.clone()];
     if let Some(dir) = models {
         for (name, what) in [
-            ("teapot", "Utah teapot (shared models)"),
-            ("suzanne", "Blender's Suzanne (shared models)"),
-            ("spot", "Keenan Crane's Spot (shared models)"),
-            ("beetle", "Alec Jacobson's beetle (shared models)"),
+            ("teapot", "Utah teapot (models/)"),
+            ("suzanne", "Blender's Suzanne (models/)"),
+            ("spot", "Keenan Crane's Spot (models/)"),
+            ("beetle", "Alec Jacobson's beetle (models/)"),
         ] {
             let Ok(model) = Model::load_obj(&format!("{dir}/{name}.obj")) else {
                 continue;
