@@ -243,8 +243,9 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
         self.grid.get(x, y)
     }
 
+    /// The depths of `range` (indices from a framebuffer of the same size).
     #[inline]
-    pub(crate) fn span_mut(&mut self, y: i32, x0: i32, x1: i32) -> Option<&mut [D]> {
-        self.grid.span_mut(y, x0, x1)
+    pub(crate) fn cells_mut(&mut self, range: core::ops::Range<usize>) -> Option<&mut [D]> {
+        self.grid.cells_mut(range)
     }
 }

@@ -65,10 +65,16 @@ impl<'a, C: PixelColor> FrameBuffer<'a, C> {
         self.grid.fill(color);
     }
 
-    /// Pixels `x0..x1` of row `y`.
+    /// The indices of pixels `x0..x1` of row `y` (the same in a depth buffer of this size).
     #[inline]
-    pub(crate) fn span_mut(&mut self, y: i32, x0: i32, x1: i32) -> Option<&mut [C]> {
-        self.grid.span_mut(y, x0, x1)
+    pub(crate) fn span_range(&self, y: i32, x0: i32, x1: i32) -> Option<core::ops::Range<usize>> {
+        self.grid.span_range(y, x0, x1)
+    }
+
+    /// The pixels of `range`.
+    #[inline]
+    pub(crate) fn cells_mut(&mut self, range: core::ops::Range<usize>) -> Option<&mut [C]> {
+        self.grid.cells_mut(range)
     }
 
     /// Row `y` as a mutable slice.

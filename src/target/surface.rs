@@ -140,9 +140,13 @@ where
         let (mut fragments, mut written) = (0u32, 0u32);
         for span in spans {
             let local = span.y.wrapping_sub(first_row);
+            // The buffers have the same size: one range serves both.
+            let Some(range) = self.color.span_range(local, span.x0, span.x1) else {
+                continue;
+            };
             let (Some(cs), Some(ds)) = (
-                self.color.span_mut(local, span.x0, span.x1),
-                self.depth.span_mut(local, span.x0, span.x1),
+                self.color.cells_mut(range.clone()),
+                self.depth.cells_mut(range),
             ) else {
                 continue;
             };
