@@ -233,7 +233,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             return Ok(());
         }
         // Culling comes first so that every band of a frame counts the same culled triangles.
-        if !rows_overlap(&p, &clip) {
+        // A band skips shading the triangles of other bands; a whole frame has none to skip.
+        let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
+        if band && !rows_overlap(&p, &clip) {
             return Ok(());
         }
         let z = v.map(|v| v.1);
