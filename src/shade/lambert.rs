@@ -48,10 +48,11 @@ fn shrink(v: [i64; 3]) -> [i64; 3] {
 
 /// `m · v` for a normal matrix (entries within ±2³⁰) and a vector below 2³⁰.
 fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
+    // Each product is below 2⁶⁰ and three sum below 2⁶²: nothing to saturate.
     m.map(|r| {
         (r[0] as i64 * v[0])
-            .saturating_add(r[1] as i64 * v[1])
-            .saturating_add(r[2] as i64 * v[2])
+            .wrapping_add(r[1] as i64 * v[1])
+            .wrapping_add(r[2] as i64 * v[2])
     })
 }
 
