@@ -128,16 +128,17 @@ pub(crate) fn inside(k: u32, d: i64) -> bool {
     }
 }
 
-/// The planes a clip-space vertex is outside of.
+/// The planes a clip-space vertex is outside of: [`distance`] and [`inside`] for each plane,
+/// written out (once per vertex, the vertex stage's hot path).
 pub(crate) fn outcode(c: [i64; 4], m: &ScreenMap) -> u8 {
-    let r = reduce(c);
-    (0..PLANES).fold(0u8, |code, k| {
-        if inside(k, distance(k, &r, m)) {
-            code
-        } else {
-            code | (1 << k)
-        }
-    })
+    let [x, y, z, w] = reduce(c);
+    let (g, xh, yh) = (GUARD * w, x * m.half_w, y * m.half_h);
+    (z <= 0) as u8
+        | ((w - z < 0) as u8) << 1
+        | ((g + xh < 0) as u8) << 2
+        | ((g - xh < 0) as u8) << 3
+        | ((g - yh < 0) as u8) << 4
+        | ((g + yh < 0) as u8) << 5
 }
 
 /// Perspective divide and viewport: snapped sub-pixel x, y (round to nearest, ties away from
@@ -163,4 +164,37 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
     let sy = (m.half_h - sy).clamp(-lim, lim);
     let sz = div_round(z << 30, w).clamp(0, DEPTH_ONE as i64);
     Some((ScreenPoint::new(sx as i32, sy as i32), sz as i32))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The written-out outcode is the one `distance` and `inside` define, plane by plane.
+    #[test]
+    fn outcode_matches_the_plane_definitions() {
+        let map = ScreenMap::new(
+            &Viewport::new(320, 240).unwrap_or_else(|_| unreachable!()),
+            &Precision::DEFAULT,
+        );
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..100_000 {
+            let mut c = [0i64; 4];
+            for v in &mut c {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                *v = (x as i64) >> (x % 60);
+            }
+            let r = reduce(c);
+            let expected = (0..PLANES).fold(0u8, |code, k| {
+                if inside(k, distance(k, &r, &map)) {
+                    code
+                } else {
+                    code | (1 << k)
+                }
+            });
+            assert_eq!(outcode(c, &map), expected, "{c:?}");
+        }
+    }
 }
