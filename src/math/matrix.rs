@@ -4,7 +4,7 @@
 use core::ops::Mul;
 
 use super::angle::Angle;
-use super::scalar::{shr_round, Scalar};
+use super::scalar::{mul_wide, shr_round, Scalar};
 use super::vector::{cross_wide, saturate, Vec3};
 
 /// A 4x4 matrix of [`Scalar`] (Q16.16) entries.
@@ -144,11 +144,11 @@ impl Mat4 {
     /// (half up): within 2⁻¹⁶ of a unit of the exact value. Every component is below 2⁴⁸.
     #[inline]
     pub(crate) fn transform_wide(&self, p: [i32; 3]) -> [i64; 4] {
-        let [x, y, z] = p.map(i64::from);
+        let [x, y, z] = p;
         let row = |r: &[i32; 4]| {
-            let s = ((r[0] as i64 * x) >> 1)
-                + ((r[1] as i64 * y) >> 1)
-                + ((r[2] as i64 * z) >> 1)
+            let s = (mul_wide(r[0], x) >> 1)
+                + (mul_wide(r[1], y) >> 1)
+                + (mul_wide(r[2], z) >> 1)
                 + ((r[3] as i64) << 15);
             (s + (1 << 14)) >> 15
         };

@@ -66,6 +66,13 @@ const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
     Some(if n >= 0 { q } else { -q })
 }
 
+/// `a · b` exactly, from 32-bit factors: the form compilers turn into one widening multiply
+/// (SMULL) on Cortex-M3/M4 instead of a full 64-bit product.
+#[inline(always)]
+pub(crate) const fn mul_wide(a: i32, b: i32) -> i64 {
+    a as i64 * b as i64
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

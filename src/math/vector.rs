@@ -2,7 +2,7 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use super::scalar::{shr_round, Scalar, UNIT_ONE};
+use super::scalar::{mul_wide, shr_round, Scalar, UNIT_ONE};
 use super::sqrt::isqrt_u64;
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
@@ -141,12 +141,11 @@ pub(crate) fn saturate(v: i64) -> Scalar {
 
 /// Exact cross product of raw vectors whose components fit in i32 (each term < 2⁶³).
 pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
-    let [a0, a1, a2] = a.map(i64::from);
-    let [b0, b1, b2] = b.map(i64::from);
+    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     [
-        (a1 * b2).saturating_sub(a2 * b1),
-        (a2 * b0).saturating_sub(a0 * b2),
-        (a0 * b1).saturating_sub(a1 * b0),
+        mul_wide(a1, b2).saturating_sub(mul_wide(a2, b1)),
+        mul_wide(a2, b0).saturating_sub(mul_wide(a0, b2)),
+        mul_wide(a0, b1).saturating_sub(mul_wide(a1, b0)),
     ]
 }
 
@@ -187,11 +186,7 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
 
 /// Dot product of two Q2.30 unit vectors, Q2.30.
 pub(crate) fn dot_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
-    let s: i64 = a
-        .iter()
-        .zip(b.iter())
-        .map(|(x, y)| *x as i64 * *y as i64)
-        .sum();
+    let s: i64 = a.iter().zip(b.iter()).map(|(x, y)| mul_wide(*x, *y)).sum();
     shr_round(s, 30).clamp(-(2 * UNIT_ONE as i64), 2 * UNIT_ONE as i64 - 1) as i32
 }
 

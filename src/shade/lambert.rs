@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 #[cfg(test)]
 use crate::math::normalize;
-use crate::math::{dot_unit, Normalize, UNIT_ONE};
+use crate::math::{dot_unit, mul_wide, Normalize, UNIT_ONE};
 use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
@@ -17,15 +17,16 @@ pub(crate) fn lambert<const N: usize>(
     let mut sum = lighting.ambient().channels();
     if let Some(n) = n {
         for light in lighting.lights() {
-            let d = dot_unit(n, light.direction).max(0) as i64;
+            let d = dot_unit(n, light.direction).max(0);
             for (s, c) in sum.iter_mut().zip(light.color.iter()) {
-                // Q16.16 · Q2.30 → Q16.16
-                *s = s.saturating_add((c * d) >> 30);
+                // Q16.16 · Q2.30 → Q16.16 (the channel is a Scalar's bits: it fits i32).
+                *s = s.saturating_add(mul_wide(*c as i32, d) >> 30);
             }
         }
     }
     let one = 1i64 << 16;
-    let ch = |b: u8, s: i64| ((b as i64 * s.clamp(0, one)) >> 16) as u8;
+    // 255 · 2¹⁶ fits 32 bits.
+    let ch = |b: u8, s: i64| ((b as i32 * s.clamp(0, one) as i32) >> 16) as u8;
     Rgb888::new(
         ch(base.r(), sum[0]),
         ch(base.g(), sum[1]),
@@ -49,10 +50,11 @@ fn shrink(v: [i64; 3]) -> [i64; 3] {
 /// `m · v` for a normal matrix (entries within ±2³⁰) and a vector below 2³⁰.
 fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
     // Each product is below 2⁶⁰ and three sum below 2⁶²: nothing to saturate.
+    let v = v.map(|c| c as i32);
     m.map(|r| {
-        (r[0] as i64 * v[0])
-            .wrapping_add(r[1] as i64 * v[1])
-            .wrapping_add(r[2] as i64 * v[2])
+        mul_wide(r[0], v[0])
+            .wrapping_add(mul_wide(r[1], v[1]))
+            .wrapping_add(mul_wide(r[2], v[2]))
     })
 }
 
@@ -67,10 +69,12 @@ pub(crate) fn face_normal(
     let [a, b, c] = p.map(|v| v.map(i64::from));
     let e1 = shrink([b[0] - a[0], b[1] - a[1], b[2] - a[2]]);
     let e2 = shrink([c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
+    // Both edges are below 2³⁰ after `shrink`: 32-bit factors.
+    let (e1, e2) = (e1.map(|c| c as i32), e2.map(|c| c as i32));
     let n = [
-        e1[1] * e2[2] - e1[2] * e2[1],
-        e1[2] * e2[0] - e1[0] * e2[2],
-        e1[0] * e2[1] - e1[1] * e2[0],
+        mul_wide(e1[1], e2[2]) - mul_wide(e1[2], e2[1]),
+        mul_wide(e1[2], e2[0]) - mul_wide(e1[0], e2[2]),
+        mul_wide(e1[0], e2[1]) - mul_wide(e1[1], e2[0]),
     ];
     method.unit(apply(normal_matrix, shrink(n)))
 }
