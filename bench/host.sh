@@ -81,7 +81,7 @@ $timing
 On Cortex-M0 (11.9 M), measured by taking one stage out at a time: flat shading (face normal,
 normalisation, Lambert: about thirty 64-bit products per triangle, each a library call) costs
 3.0 M, and the depth plane's two 64-bit divisions per triangle 1.1 M; on the Cortex-M4 flat
-shading costs 1.0 M of 5.2 M.
+shading costs about 1.0 M of 5.1 M.
 
 - **Per span (half the x86-64 count):** about 7,500 rows a frame each pay the edge steppers,
   two bounds-checked row slices, the depth plane at the span's first pixel (two 64-bit
