@@ -78,23 +78,18 @@ $timing
 
 ## Where the rest goes, and what would take it
 
-On Cortex-M0 (11.9 M), measured by taking one stage out at a time: flat shading (face normal,
-normalisation, Lambert: about thirty 64-bit products per triangle, each a library call) costs
-3.0 M, and the depth plane's two 64-bit divisions per triangle 1.1 M; on the Cortex-M4 flat
-shading costs about 1.0 M of 5.1 M.
-
-- **Per span (half the x86-64 count):** about 7,500 rows a frame each pay the edge steppers,
-  two bounds-checked row slices, the depth plane at the span's first pixel (two 64-bit
-  products: library calls on Cortex-M0) and the loop set-up; the pixels themselves cost about
-  9 instructions each. Stepping the span's first depth along the left edge in 32 bits, and one
-  row slice for both buffers, would take most of it.
-- **Per triangle (about a third):** three or four edge steppers and the depth plane (two
-  divisions of 62-bit numerators: long library routines on Cortex-M0), the face normal and its
-  normalisation (about thirty 64-bit products), Lambert. One reciprocal of the doubled area
-  per triangle for both gradients, and normals precomputed per face in flash, are the next
-  steps.
-- **Per vertex (a tenth):** the transform (twelve 32x32→64 products) and the projection (the
-  depth's 64-bit division); on Cortex-M0, x and y take a 32-bit division when they fit.
+- **Spans and pixels** (the largest row above): every row of a triangle pays its edge
+  steppers, a bounds-checked row range, the depth plane at the span's first pixel (two 64-bit
+  products, library calls on Cortex-M0) and the loop's set-up, then a few instructions per
+  pixel. Stepping the span's first depth along the left edge in 32 bits would take most of
+  the per-row part.
+- **Per triangle** (set-up and flat shading): three or four edge steppers, the depth plane
+  (two divisions of 62-bit numerators: long library routines on Cortex-M0), the face normal,
+  its normalisation and Lambert (about thirty 64-bit products). One reciprocal of the doubled
+  area for both gradients, and face normals precomputed in flash, are the next steps; both
+  change rounding, so `docs/accuracy.md` has to show they lose nothing.
+- **Per vertex**: the transform (twelve 32x32→64 products) and the projection (the depth's
+  64-bit division; on Cortex-M0, x and y take a 32-bit division when they fit).
 DOC
     echo "wrote docs/performance.md"
 fi

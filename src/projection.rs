@@ -187,6 +187,17 @@ impl Projection {
     pub const fn is_perspective(&self) -> bool {
         self.perspective
     }
+
+    /// For a perspective projection, `−a` in Q1.30 (`a` the third row's depth entry): the depth
+    /// after projection is `d = z/w = −a + b/w`, so `1/w` is proportional to this minus `d`.
+    /// `None` for an orthographic projection, whose `w` is 1 everywhere.
+    pub(crate) const fn inverse_w_offset(&self) -> Option<i64> {
+        if self.perspective {
+            Some(-(self.matrix.to_bits()[2][2] as i64) << 14)
+        } else {
+            None
+        }
+    }
 }
 
 /// The pixel size of the image: clip space `[-1, 1]²` maps to `[0, width] × [0, height]` with

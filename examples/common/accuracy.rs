@@ -22,7 +22,7 @@ use std::time::Instant;
 
 use crate::desktop::Model;
 use crate::exact::model_triangle;
-use crate::reference::{clip_near_far, Camera, V3};
+use crate::reference::{apply4, clip_near_far, cross, dot, mul4, norm, sub, Camera, V3};
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Trig, Vec3};
@@ -434,24 +434,14 @@ impl SceneDef {
     }
 }
 
-fn mul4(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> [[f64; 4]; 4] {
-    let mut m = [[0.0; 4]; 4];
-    for i in 0..4 {
-        for j in 0..4 {
-            m[i][j] = (0..4).map(|k| a[i][k] * b[k][j]).sum();
-        }
-    }
-    m
-}
-
-fn apply4(m: &[[f64; 4]; 4], p: V3) -> [f64; 4] {
-    let v = [p[0], p[1], p[2], 1.0];
-    [0, 1, 2, 3].map(|i| (0..4).map(|k| m[i][k] * v[k]).sum())
-}
-
+/// Lambert's intensity for a normal of any length (ambient only for a zero normal).
 fn lambert(n: V3) -> f64 {
-    let l = crate::reference::norm(LIGHT.0);
-    (AMBIENT + LIGHT.1 * crate::reference::dot(n, l).max(0.0)).clamp(0.0, 1.0)
+    let len = dot(n, n).sqrt();
+    if len == 0.0 {
+        return AMBIENT;
+    }
+    let n = n.map(|c| c / len);
+    (AMBIENT + LIGHT.1 * dot(n, norm(LIGHT.0)).max(0.0)).clamp(0.0, 1.0)
 }
 
 /// What the ideal renderer knows about one pixel centre.
@@ -564,13 +554,7 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
         .map(|n| {
             let n = f3(*n);
             let wn = [0, 1, 2].map(|i| (0..3).map(|k| rot[i][k] * n[k]).sum::<f64>());
-            let len = crate::reference::dot(wn, wn).sqrt();
-            let s = if len > 0.0 {
-                lambert(wn.map(|c| c / len))
-            } else {
-                AMBIENT
-            };
-            BASE.map(|b| b as f64 * s)
+            BASE.map(|b| b as f64 * lambert(wn))
         })
         .collect();
     let clip: Vec<[f64; 4]> = positions.iter().map(|p| apply4(&m, *p)).collect();
@@ -602,16 +586,7 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
                 let c = apply4(&model, positions[i]);
                 [c[0], c[1], c[2]]
             });
-            let n = crate::reference::cross(
-                crate::reference::sub(p[1], p[0]),
-                crate::reference::sub(p[2], p[0]),
-            );
-            let len = crate::reference::dot(n, n).sqrt();
-            let s = if len > 0.0 {
-                lambert(n.map(|c| c / len))
-            } else {
-                AMBIENT
-            };
+            let s = lambert(cross(sub(p[1], p[0]), sub(p[2], p[0])));
             BASE.map(|b| (b as f64 * s).floor())
         };
         // Clip-space vertices carrying their colours, clipped, projected.

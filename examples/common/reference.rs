@@ -27,6 +27,23 @@ pub fn norm(a: V3) -> V3 {
     [a[0] / l, a[1] / l, a[2] / l]
 }
 
+/// `a · b` for 4x4 matrices.
+pub fn mul4(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> [[f64; 4]; 4] {
+    let mut m = [[0.0; 4]; 4];
+    for i in 0..4 {
+        for j in 0..4 {
+            m[i][j] = (0..4).map(|k| a[i][k] * b[k][j]).sum();
+        }
+    }
+    m
+}
+
+/// `m · (p, 1)`.
+pub fn apply4(m: &[[f64; 4]; 4], p: V3) -> [f64; 4] {
+    let v = [p[0], p[1], p[2], 1.0];
+    [0, 1, 2, 3].map(|i| (0..4).map(|k| m[i][k] * v[k]).sum())
+}
+
 /// Clip-from-world in f64: perspective (z to [0, 1]) times look-at.
 #[derive(Clone, Copy, Debug)]
 pub struct Camera {
@@ -64,26 +81,15 @@ impl Camera {
             [0.0, 0.0, far / (near - far), near * far / (near - far)],
             [0.0, 0.0, -1.0, 0.0],
         ];
-        let mut m = [[0.0; 4]; 4];
-        for i in 0..4 {
-            for j in 0..4 {
-                m[i][j] = (0..4).map(|k| proj[i][k] * view[k][j]).sum();
-            }
-        }
         Camera {
-            m,
+            m: mul4(&proj, &view),
             width: w as f64,
             height: h as f64,
         }
     }
 
     pub fn clip(&self, p: V3) -> [f64; 4] {
-        let v = [p[0], p[1], p[2], 1.0];
-        let mut out = [0.0; 4];
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = (0..4).map(|k| self.m[i][k] * v[k]).sum();
-        }
-        out
+        apply4(&self.m, p)
     }
 
     /// Screen position (pixels, y down) and depth z/w of a clip-space point with w > 0.

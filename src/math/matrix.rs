@@ -4,7 +4,7 @@
 use core::ops::Mul;
 
 use super::angle::Angle;
-use super::scalar::{mul_wide, shr_round, Scalar};
+use super::scalar::{magnitude_bits, mul_wide, shr_round, Scalar};
 use super::vector::{cross_wide, saturate, Vec3};
 
 /// A 4x4 matrix of [`Scalar`] (Q16.16) entries.
@@ -169,13 +169,7 @@ impl Mat4 {
             cross_wide(r(2), r(0)),
             cross_wide(r(0), r(1)),
         ];
-        let max = c
-            .iter()
-            .flatten()
-            .map(|v| v.unsigned_abs())
-            .max()
-            .unwrap_or(0);
-        let bits = 64 - max.leading_zeros();
+        let bits = magnitude_bits(c.as_flattened());
         c.map(|row| {
             row.map(|v| {
                 let v = if bits > 30 {
@@ -225,13 +219,7 @@ pub(crate) fn product3(a: &Mat4, b: &Mat4, c: &Mat4) -> ([[i64; 4]; 4], i32) {
             });
         }
     }
-    let max = bc
-        .iter()
-        .flatten()
-        .map(|v| v.unsigned_abs())
-        .max()
-        .unwrap_or(0);
-    let shift = (64 - max.leading_zeros()).saturating_sub(30);
+    let shift = magnitude_bits(bc.as_flattened()).saturating_sub(30);
     let bc = bc.map(|row| row.map(|v| shr_round(v, shift)));
     let mut abc = [[0i64; 4]; 4];
     for (row, arow) in abc.iter_mut().zip(a.m.iter()) {

@@ -4,7 +4,7 @@
 //! others exist so that their error and cost can be measured (`docs/accuracy.md`) and chosen.
 
 use super::angle::Angle;
-use super::scalar::{shr_round, UNIT_ONE};
+use super::scalar::{magnitude_bits, shr_round, UNIT_ONE};
 use super::sqrt::rsqrt_q45;
 use super::vector::normalize;
 use super::Unit;
@@ -136,11 +136,11 @@ impl Normalize {
 
 /// The vector shifted so that its largest component lies in [2¹⁴, 2¹⁵); `None` for zero.
 fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
-    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
-    if max == 0 {
+    let bits = magnitude_bits(&v);
+    if bits == 0 {
         return None;
     }
-    let shift = 64 - max.leading_zeros() as i32 - 15;
+    let shift = bits as i32 - 15;
     Some(v.map(|x| {
         if shift > 0 {
             x >> shift
@@ -156,8 +156,8 @@ fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
     // The sum of squares lies in [2²⁸, 3·2³⁰).
     let s = c.iter().map(|x| (x * x) as u64).sum::<u64>();
     let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
-    let y = rsqrt_q45(m) as i64; // 2⁴⁵ / sqrt(m)
-                                 // c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
+    // y = 2⁴⁵ / sqrt(m); c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
+    let y = rsqrt_q45(m) as i64;
     Some(c.map(|x| ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32))
 }
 

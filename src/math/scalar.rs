@@ -56,6 +56,13 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
     }
 }
 
+/// Significant bits of the largest magnitude among `values` (0 when all are zero): the shift
+/// that renormalises a vector or matrix of any scale is taken from it.
+pub(crate) fn magnitude_bits(values: &[i64]) -> u32 {
+    let max = values.iter().map(|v| v.unsigned_abs()).max().unwrap_or(0);
+    64 - max.leading_zeros()
+}
+
 /// [`div_round`] by a 32-bit division, when `|n| + d/2` and `d > 0` fit 32 bits.
 const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
     let a = n.unsigned_abs().saturating_add((d / 2) as u64);

@@ -2,7 +2,7 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use super::scalar::{mul_wide, shr_round, Scalar, UNIT_ONE};
+use super::scalar::{magnitude_bits, mul_wide, shr_round, Scalar, UNIT_ONE};
 use super::sqrt::isqrt_u64;
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
@@ -153,12 +153,11 @@ pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
 /// first shifted so that the largest has its top bit at 2³⁰ (the leading-zero renormalisation
 /// of case T33), then divided by the integer square root of the sum of squares. `None` for zero.
 pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
-    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
-    if max == 0 {
+    let bits = magnitude_bits(&v) as i32;
+    if bits == 0 {
         return None;
     }
-    let lz = max.leading_zeros() as i32; // max has 64 - lz significant bits
-    let shift = 64 - lz - 31; // bring max to [2^30, 2^31)
+    let shift = bits - 31; // bring the largest to [2^30, 2^31)
     let scaled = v.map(|c| {
         if shift > 0 {
             // Rounding shift, away from zero.

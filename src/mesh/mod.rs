@@ -76,6 +76,7 @@ impl core::error::Error for MeshError {}
 ///     Err(_) => panic!("bad mesh"),
 /// };
 /// assert_eq!(MESH.triangles().len(), 1);
+/// assert_eq!(MESH.extent(), 1 << 16); // the largest coordinate, 1.0, in raw Q16.16
 /// assert_eq!(
 ///     Mesh::new(&POSITIONS, &[[0, 1, 3]]).unwrap_err(),
 ///     MeshError::TriangleIndexOutOfRange { triangle: 0 }

@@ -9,7 +9,7 @@
 use heapless::Vec;
 
 use super::vertex::{distance, inside, reduce, reduce_pair, ScreenMap, PLANES};
-use crate::math::{div_round, shr_round};
+use crate::math::{div_round, magnitude_bits, shr_round};
 
 /// A vertex during clipping: raw Q16.16 clip coordinates and a colour (Gouraud), channels
 /// `0..=255 << 8`.
@@ -32,8 +32,7 @@ fn intersect(a: &ClipVertex, b: &ClipVertex, k: u32, m: &ScreenMap) -> ClipVerte
     let (rl, rh, shift) = reduce_pair(lo.c, hi.c);
     let (mut dl, mut dh) = (distance(k, &rl, m), distance(k, &rh, m));
     // Distances below 2³¹ so that dl·2³⁰ fits.
-    let dmax = dl.unsigned_abs().max(dh.unsigned_abs());
-    let ds = (64 - dmax.leading_zeros()).saturating_sub(31);
+    let ds = magnitude_bits(&[dl, dh]).saturating_sub(31);
     dl = shr_round(dl, ds);
     dh = shr_round(dh, ds);
     let den = dl - dh;

@@ -123,8 +123,8 @@ pub struct Frame {
     viewport: Viewport,
     cull: Cull,
     precision: Precision,
-    /// `−m[2][2]` of a perspective projection in Q1.30: `1/w` is proportional to this minus
-    /// the depth (see [`PerspectiveGouraud`](crate::shade::PerspectiveGouraud)).
+    /// See [`PerspectiveGouraud`](crate::shade::PerspectiveGouraud): `1/w` is proportional to
+    /// this minus the depth (perspective projections only).
     inverse_w_offset: Option<i64>,
 }
 
@@ -132,15 +132,13 @@ impl Frame {
     /// A frame seen through `view` and `projection`, drawn into `viewport`.
     #[must_use]
     pub fn new(view: &Mat4, projection: &Projection, viewport: Viewport) -> Self {
-        let m = projection.matrix().to_bits();
-        let a = m.get(2).and_then(|row| row.get(2)).copied().unwrap_or(0) as i64;
         Frame {
             view: *view,
             projection: *projection.matrix(),
             viewport,
             cull: Cull::Back,
             precision: Precision::DEFAULT,
-            inverse_w_offset: projection.is_perspective().then_some(-a << 14),
+            inverse_w_offset: projection.inverse_w_offset(),
         }
     }
 

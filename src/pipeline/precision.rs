@@ -1,6 +1,6 @@
 //! The precision knobs of a frame.
 
-use crate::math::{product3, shr_round, Mat4, Normalize, SUBPIXEL_BITS};
+use crate::math::{magnitude_bits, product3, shr_round, Mat4, Normalize, SUBPIXEL_BITS};
 
 /// How precisely a [`Frame`](super::Frame) computes: the knobs whose error and cost
 /// `docs/accuracy.md` measures. [`Precision::DEFAULT`] is what every frame uses unless told
@@ -131,13 +131,8 @@ impl Precision {
         let keep = match self.matrix {
             MatrixFormat::Fixed(bits) => bits as i32,
             MatrixFormat::Normalized => {
-                let max = m
-                    .iter()
-                    .flatten()
-                    .map(|v| v.unsigned_abs())
-                    .max()
-                    .unwrap_or(0);
-                let bits = 64 - max.leading_zeros() as i32 - frac; // of the largest entry, at Q.0
+                // Integer bits of the largest entry.
+                let bits = magnitude_bits(m.as_flattened()) as i32 - frac;
                 let extent_bits = 32 - extent.max(1).leading_zeros() as i32;
                 // Clip coordinates (entry · coordinate / 2¹⁶) of about 2¹⁹ units: what Q16.16
                 // gives a unit-scale scene, whose coordinates then fit 32 bits (fast divisions

@@ -6,10 +6,9 @@
 //! ratio that matters and keeps every product below 2⁶². In practice (coordinates below 32768)
 //! nothing is shifted.
 
-use crate::math::{div_round, shr_round, DEPTH_ONE};
-use crate::projection::Viewport;
-
 use super::Precision;
+use crate::math::{div_round, magnitude_bits, shr_round, DEPTH_ONE};
+use crate::projection::Viewport;
 use crate::raster::ScreenPoint;
 
 /// One transformed vertex in the per-frame cache: snapped screen position, depth, lit colour
@@ -84,8 +83,7 @@ impl ScreenMap {
 
 /// Shift that brings the largest magnitude below 2³¹.
 fn reduce_shift(c: &[i64; 4]) -> u32 {
-    let max = c.iter().map(|v| v.unsigned_abs()).max().unwrap_or(0);
-    (64 - max.leading_zeros()).saturating_sub(31)
+    magnitude_bits(c).saturating_sub(31)
 }
 
 #[inline]

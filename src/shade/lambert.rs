@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 #[cfg(test)]
 use crate::math::normalize;
-use crate::math::{dot_unit, mul_wide, Normalize, UNIT_ONE};
+use crate::math::{cross_wide, dot_unit, magnitude_bits, mul_wide, Normalize, UNIT_ONE};
 use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
@@ -37,8 +37,7 @@ pub(crate) fn lambert<const N: usize>(
 /// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough
 /// headroom for one more product with Q16.16 before normalising.
 fn shrink(v: [i64; 3]) -> [i64; 3] {
-    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
-    let bits = 64 - max.leading_zeros();
+    let bits = magnitude_bits(&v);
     if bits > 30 {
         let s = bits - 30;
         v.map(|c| c >> s)
@@ -69,13 +68,8 @@ pub(crate) fn face_normal(
     let [a, b, c] = p.map(|v| v.map(i64::from));
     let e1 = shrink([b[0] - a[0], b[1] - a[1], b[2] - a[2]]);
     let e2 = shrink([c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
-    // Both edges are below 2³⁰ after `shrink`: 32-bit factors.
-    let (e1, e2) = (e1.map(|c| c as i32), e2.map(|c| c as i32));
-    let n = [
-        mul_wide(e1[1], e2[2]) - mul_wide(e1[2], e2[1]),
-        mul_wide(e1[2], e2[0]) - mul_wide(e1[0], e2[2]),
-        mul_wide(e1[0], e2[1]) - mul_wide(e1[1], e2[0]),
-    ];
+    // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
+    let n = cross_wide(e1.map(|c| c as i32), e2.map(|c| c as i32));
     method.unit(apply(normal_matrix, shrink(n)))
 }
 

@@ -4,6 +4,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 #[cfg(test)]
 use embedded_graphics::pixelcolor::RgbColor;
 
+use crate::math::{div_round, magnitude_bits};
 use crate::raster::{Plane, ScreenPoint};
 
 /// A source of colours along a span, started at its first pixel.
@@ -118,8 +119,7 @@ impl PerspectivePaint {
     /// From vertex colours (channels `0..=255 << RGB_FRAC`) and weights `q` proportional to
     /// `1/w` (positive; any common scale).
     pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], q: [i64; 3], area2: i64) -> Self {
-        let max = q.iter().copied().max().unwrap_or(1).max(1);
-        let shift = (64 - max.leading_zeros()) as i32 - Q_BITS as i32;
+        let shift = magnitude_bits(&q.map(|v| v.max(1))) as i32 - Q_BITS as i32;
         let q = q.map(|v| {
             let v = if shift > 0 {
                 v >> shift
@@ -130,8 +130,11 @@ impl PerspectivePaint {
         });
         let channel = |k: usize| rgb.map(|c| c.get(k).copied().unwrap_or(0) as i64);
         let num = |k: usize| {
-            let c = channel(k);
-            [0, 1, 2].map(|i| c.get(i).copied().unwrap_or(0) * q.get(i).copied().unwrap_or(0))
+            let mut n = channel(k);
+            for (c, q) in n.iter_mut().zip(q) {
+                *c *= q;
+            }
+            n
         };
         let den = q.map(|v| v << 16);
         let planes = [
@@ -162,7 +165,7 @@ impl Iterator for PerspectiveCursor {
         let den = self.acc[3].max(1);
         let ch = |k: usize| {
             // c·q / (q·2¹⁶) · 2¹⁶ = c with RGB_FRAC fraction bits.
-            let c = crate::math::div_round(self.acc[k].max(0) << 16, den);
+            let c = div_round(self.acc[k].max(0) << 16, den);
             let c = c.clamp(self.lo[k], self.hi[k]);
             ((c + (1 << (RGB_FRAC - 1))) >> RGB_FRAC).clamp(0, 255) as u8
         };

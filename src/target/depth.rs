@@ -17,9 +17,6 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
     #[doc(hidden)]
     fn from_interpolated(acc: i64) -> Self;
 
-    /// Depth-tests one span: `start` and `step` are the interpolator's values at the first
-    /// pixel and from pixel to pixel. `next_color` is called once per pixel, in order; its
-    /// colour is stored where the fragment passes. Returns how many passed.
     /// For a triangle whose vertex depths are at most `max` (Q1.44), the per-pixel step of
     /// [`test_span_unclamped`](Self::test_span_unclamped) if every pixel it covers can skip
     /// the clamp, from the interpolator's step.
@@ -30,8 +27,8 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         None
     }
 
-    /// [`test_span`](Self::test_span) for a span of a triangle [`unclamped_step`]
-    /// (Self::unclamped_step) accepted, with the step it returned.
+    /// [`test_span`](Self::test_span) for a span of a triangle that
+    /// [`unclamped_step`](Self::unclamped_step) accepted, with the step it returned.
     #[doc(hidden)]
     #[inline(always)]
     fn test_span_unclamped<C: Copy>(
@@ -46,6 +43,9 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         Self::test_span(depths, colors, start, (step as i64) << 13, test, next_color)
     }
 
+    /// Depth-tests one span: `start` and `step` are the interpolator's values at the first
+    /// pixel and from pixel to pixel. `next_color` is called once per pixel, in order; its
+    /// colour is stored where the fragment passes. Returns how many passed.
     #[doc(hidden)]
     #[inline(always)]
     fn test_span<C: Copy>(
