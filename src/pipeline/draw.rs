@@ -170,6 +170,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     continue;
                 }
                 if a.outcode | b.outcode | c.outcode == 0 {
+                    // Culled before anything else is gathered: half the triangles of a closed
+                    // mesh end here.
+                    let area = area2(&[a.point(), b.point(), c.point()]);
+                    if !kept(self.frame.cull, area, &mut stats) {
+                        continue;
+                    }
                     // Vertex colours matter only to per-vertex shading.
                     let rgb = if S::PER_VERTEX {
                         [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8))
@@ -181,7 +187,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                         (b.point(), b.z, rgb[1]),
                         (c.point(), c.z, rgb[2]),
                     ];
-                    self.fill_face(target, &setup, tri, v, self.frame.cull, &mut stats)?;
+                    self.fill_face(target, &setup, tri, v, area, &mut stats)?;
                     continue;
                 }
                 bump(&mut stats.clipped);
@@ -197,7 +203,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 if !kept(self.frame.cull, area, &mut stats) {
                     continue;
                 }
-                let cull = if area < 0 { Cull::Back } else { Cull::Front };
+                let facing = if area < 0 { Cull::Back } else { Cull::Front };
                 // A convex polygon: a fan from its first vertex.
                 let Some((first, rest)) = projected.split_first() else {
                     continue;
@@ -205,7 +211,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 for pair in rest.windows(2) {
                     if let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) {
                         let v = [*first, *v1, *v2];
-                        self.fill_face(target, &setup, tri, v, cull, &mut stats)?;
+                        let area = area2(&[v[0].0, v[1].0, v[2].0]);
+                        if kept(facing, area, &mut stats) {
+                            self.fill_face(target, &setup, tri, v, area, &mut stats)?;
+                        }
                     }
                 }
             }
@@ -213,8 +222,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         Ok(stats)
     }
 
-    /// Culls (by `cull`), shades and fills one screen triangle of `tri` (the whole triangle, or
-    /// a piece of it after clipping): vertices are (snapped position, depth, colour).
+    /// Shades and fills one screen triangle of `tri` (the whole triangle, or a piece of it after
+    /// clipping), which culling kept: vertices are (snapped position, depth, colour), `area`
+    /// its doubled signed area.
     // Not inlined: one call per triangle costs little and keeps the stage measurable.
     #[inline(never)]
     fn fill_face<T: RasterTarget>(
@@ -223,16 +233,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         setup: &ObjectSetup<'_>,
         tri: &Triangle,
         v: [(ScreenPoint, i32, [i32; 3]); 3],
-        cull: Cull,
+        area: i64,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         let clip = target.clip();
         let p = v.map(|v| v.0);
-        let area = area2(&p);
-        if !kept(cull, area, stats) {
-            return Ok(());
-        }
-        // Culling comes first so that every band of a frame counts the same culled triangles.
+        // Culling came first so that every band of a frame counts the same culled triangles.
         // A band skips shading the triangles of other bands; a whole frame has none to skip.
         let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
         if band && !rows_overlap(&p, &clip) {

@@ -3,7 +3,7 @@
 
 use embedded_graphics::prelude::Point;
 
-use super::{ceil_div, floor_div, PixelRect, RationalStepper, ScreenPoint};
+use super::{ceil_div, floor_div, FloorStepper, PixelRect, ScreenPoint};
 use crate::math::SUBPIXEL_SCALE;
 
 const S: i64 = SUBPIXEL_SCALE as i64;
@@ -12,7 +12,7 @@ const HALF: i64 = S / 2;
 /// The pixels of one line, clipped to a rectangle: see [`line_pixels`].
 #[derive(Clone, Debug)]
 pub struct LinePixels {
-    minor: RationalStepper,
+    minor: FloorStepper,
     major: i32,
     major_end: i32,
     swapped: bool,
@@ -35,7 +35,7 @@ pub struct LinePixels {
 #[must_use]
 pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixels {
     let empty = LinePixels {
-        minor: RationalStepper::new(0, 1, 0, false),
+        minor: FloorStepper::new(0, 1, 0),
         major: 0,
         major_end: 0,
         swapped: false,
@@ -98,7 +98,7 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
         return empty;
     }
     LinePixels {
-        minor: RationalStepper::new(c + i0 * step, den, step, false),
+        minor: FloorStepper::new(c + i0 * step, den, step),
         major: i0 as i32,
         major_end: i1 as i32,
         swapped,

@@ -151,7 +151,7 @@ pub(crate) const fn floor_div(n: i64, d: i64) -> i64 {
 /// integers `k`, exactly, with an i32 quotient and remainder (Bresenham's error term). Used for
 /// triangle edges (ceil) and lines (floor).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct RationalStepper {
+pub(crate) struct RationalStepper<const CEIL: bool> {
     /// The current value.
     pub value: i32,
     /// `value·D − N` for ceil (in `[0, D)`), `N − value·D` for floor (in `[0, D)`).
@@ -159,12 +159,16 @@ pub(crate) struct RationalStepper {
     den: i32,
     step_q: i32,
     step_r: i32,
-    ceil: bool,
 }
 
-impl RationalStepper {
+/// Steps `ceil(N(k) / D)` (triangle edges).
+pub(crate) type CeilStepper = RationalStepper<true>;
+/// Steps `floor(N(k) / D)` (lines).
+pub(crate) type FloorStepper = RationalStepper<false>;
+
+impl<const CEIL: bool> RationalStepper<CEIL> {
     /// Starts at `n0 / den` (den > 0, den < 2³¹; the quotient and `step / den` must fit i32).
-    pub(crate) fn new(n0: i64, den: i64, step: i64, ceil: bool) -> Self {
+    pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
         // Callers pass den ≥ 1; the guard keeps a wrong call from dividing by zero.
         let den = den.max(1);
         // One division (quotient and remainder together; 32-bit on 32-bit cores when the
@@ -181,7 +185,7 @@ impl RationalStepper {
             r += den;
         }
         // Now n0 = q·den + r with 0 ≤ r < den.
-        let (value, rem) = if ceil && r != 0 {
+        let (value, rem) = if CEIL && r != 0 {
             (q + 1, den - r)
         } else {
             (q, r)
@@ -203,15 +207,28 @@ impl RationalStepper {
             den: den32,
             step_q: sq,
             step_r: sr,
-            ceil,
         }
+    }
+
+    /// The whole part of the step: [`step`](Self::step) adds it, or it plus one.
+    pub(crate) fn step_quotient(&self) -> i32 {
+        self.step_q
+    }
+
+    /// Advances `k` by one; true when the value moved by one more than
+    /// [`step_quotient`](Self::step_quotient).
+    #[inline(always)]
+    pub(crate) fn step_carry(&mut self) -> bool {
+        let before = self.value;
+        self.step();
+        self.value.wrapping_sub(before) != self.step_q
     }
 
     /// Advances `k` by one.
     #[inline(always)]
     pub(crate) fn step(&mut self) {
         self.value = self.value.wrapping_add(self.step_q);
-        if self.ceil {
+        if CEIL {
             self.rem = self.rem.wrapping_sub(self.step_r);
             if self.rem < 0 {
                 self.rem = self.rem.wrapping_add(self.den);

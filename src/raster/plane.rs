@@ -56,6 +56,14 @@ impl Plane {
             .wrapping_add(self.gy.wrapping_mul(dy))
     }
 
+    /// The exact changes of [`at`](Self::at) from one pixel to the next along a row and down a
+    /// column (modulo 2⁶⁴, like `at` itself): walking by them reproduces `at` bit for bit.
+    #[inline]
+    pub(crate) fn pixel_steps(&self) -> (i64, i64) {
+        let s = SUBPIXEL_SCALE as i64;
+        (self.gx.wrapping_mul(s), self.gy.wrapping_mul(s))
+    }
+
     /// The change from one pixel to the next along a row. Saturated: a gradient too steep to
     /// represent belongs to a triangle no row of which is two pixels wide.
     #[inline]

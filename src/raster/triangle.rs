@@ -10,7 +10,7 @@
 //! exclusive: the top-left rule, exactly. The crossings are rationals stepped from row to row
 //! with an integer quotient and remainder, so no precision is lost however long the edge.
 
-use super::{ceil_div, PixelRect, RationalStepper, ScreenPoint};
+use super::{ceil_div, CeilStepper, PixelRect, Plane, ScreenPoint};
 use crate::math::SUBPIXEL_SCALE;
 
 const S: i64 = SUBPIXEL_SCALE as i64;
@@ -33,9 +33,10 @@ pub struct TriangleSpans {
     v: [ScreenPoint; 3],
     y: i32,
     y_end: i32,
+    /// The row where the short edge switches to the lower one (`i32::MIN` once switched).
     y_split: i32,
-    long: RationalStepper,
-    short: RationalStepper,
+    left: CeilStepper,
+    right: CeilStepper,
     long_is_left: bool,
     x_min: i32,
     x_max: i32,
@@ -64,8 +65,8 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
         y: 0,
         y_end: 0,
         y_split: 0,
-        long: RationalStepper::new(0, 1, 0, true),
-        short: RationalStepper::new(0, 1, 0, true),
+        left: CeilStepper::new(0, 1, 0),
+        right: CeilStepper::new(0, 1, 0),
         long_is_left: true,
         x_min: 0,
         x_max: 0,
@@ -93,18 +94,23 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
     // then the left one.
     let long_is_left = cross > 0;
     let long = edge(a, c, y_start);
-    let short = if y_start < y_split {
-        edge(a, b, y_start)
+    let (short, y_split) = if y_start < y_split {
+        (edge(a, b, y_start), y_split as i32)
     } else {
-        edge(b, c, y_start)
+        (edge(b, c, y_start), i32::MIN)
+    };
+    let (left, right) = if long_is_left {
+        (long, short)
+    } else {
+        (short, long)
     };
     TriangleSpans {
         v: [a, b, c],
         y: y_start as i32,
         y_end: y_end as i32,
-        y_split: y_split as i32,
-        long,
-        short,
+        y_split,
+        left,
+        right,
         long_is_left,
         x_min: clip.x0,
         x_max: clip.x1,
@@ -114,11 +120,11 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
 /// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row
 /// `py`. With coordinates within ±2²⁴ the numerator stays below 2⁵⁴ and the denominator below
 /// 2²⁹.
-fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> RationalStepper {
+fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
     let dx = q.x as i64 - p.x as i64;
     let dy = (q.y as i64 - p.y as i64).max(1);
     let n0 = (p.x as i64 - HALF) * dy + dx * (S * py + HALF - p.y as i64);
-    RationalStepper::new(n0, S * dy, S * dx, true)
+    CeilStepper::new(n0, S * dy, S * dx)
 }
 
 fn sort_by_y(v: [ScreenPoint; 3]) -> [ScreenPoint; 3] {
@@ -136,6 +142,59 @@ fn sort_by_y(v: [ScreenPoint; 3]) -> [ScreenPoint; 3] {
 }
 
 impl TriangleSpans {
+    /// Switches the short edge to the lower one at the middle vertex's row; true if the left
+    /// edge changed.
+    #[inline(always)]
+    fn switch_at_split(&mut self) -> bool {
+        if self.y != self.y_split {
+            return false;
+        }
+        let [_, b, c] = self.v;
+        let lower = edge(b, c, self.y as i64);
+        // The split row is never reached again.
+        self.y_split = i32::MIN;
+        if self.long_is_left {
+            self.right = lower;
+            false
+        } else {
+            self.left = lower;
+            true
+        }
+    }
+
+    /// Calls `f` with every span left and the value of `plane` at its first pixel (bit for bit
+    /// [`Plane::at`]). The value is walked down the left edge: per row one addition of one of
+    /// the two steps the edge can take, instead of two 64-bit products.
+    #[inline(always)]
+    pub(crate) fn for_each_on(mut self, plane: &Plane, mut f: impl FnMut(Span, i64)) {
+        let (gx, gy) = plane.pixel_steps();
+        // The plane at the left edge's pixel, and its change to the next row's: down one row
+        // and right by the edge's step, or by one pixel more.
+        let left_walk = |s: &TriangleSpans| {
+            let small = gy.wrapping_add(gx.wrapping_mul(s.left.step_quotient() as i64));
+            (plane.at(s.left.value, s.y), small, small.wrapping_add(gx))
+        };
+        let (mut at_left, mut small, mut big) = left_walk(&self);
+        while self.y < self.y_end {
+            if self.switch_at_split() {
+                (at_left, small, big) = left_walk(&self);
+            }
+            let (l, r) = (self.left.value, self.right.value);
+            let (x0, x1) = (l.max(self.x_min), r.min(self.x_max));
+            if x0 < x1 {
+                let start = if x0 == l {
+                    at_left
+                } else {
+                    at_left.wrapping_add(gx.wrapping_mul(x0.wrapping_sub(l) as i64))
+                };
+                f(Span { y: self.y, x0, x1 }, start);
+            }
+            at_left = at_left.wrapping_add(if self.left.step_carry() { big } else { small });
+            self.right.step();
+            self.y += 1;
+        }
+    }
+
     /// Rows still to visit: the work left is proportional to this (it never exceeds the clip
     /// rectangle's height).
     #[must_use]
@@ -150,20 +209,11 @@ impl Iterator for TriangleSpans {
     #[inline]
     fn next(&mut self) -> Option<Span> {
         while self.y < self.y_end {
-            if self.y == self.y_split {
-                let [_, b, c] = self.v;
-                self.short = edge(b, c, self.y as i64);
-                // Switch once: the split row is never reached again.
-                self.y_split = i32::MIN;
-            }
-            let (l, r) = if self.long_is_left {
-                (self.long.value, self.short.value)
-            } else {
-                (self.short.value, self.long.value)
-            };
+            self.switch_at_split();
+            let (l, r) = (self.left.value, self.right.value);
             let y = self.y;
-            self.long.step();
-            self.short.step();
+            self.left.step();
+            self.right.step();
             self.y += 1;
             let x0 = l.max(self.x_min);
             let x1 = r.min(self.x_max);
@@ -172,5 +222,46 @@ impl Iterator for TriangleSpans {
             }
         }
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::vec::Vec;
+
+    /// `for_each_on` visits the spans the iterator yields, with the plane at each first pixel
+    /// exactly as `Plane::at` computes it: triangles of every shape, partly off every side of
+    /// the clip rectangle, steep and flat gradients.
+    #[test]
+    fn walked_plane_equals_plane_at_every_span() {
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = |range: i32| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % (2 * range as u64 + 1)) as i32 - range
+        };
+        let clip = PixelRect::new(3, 5, 60, 44);
+        let mut spans_seen = 0;
+        for _ in 0..20_000 {
+            let scale = [40, 400, 1200, 16_000][next(1).unsigned_abs() as usize];
+            let p = [(); 3].map(|_| ScreenPoint::new(500 + next(scale), 400 + next(scale)));
+            let area = (p[1].x as i64 - p[0].x as i64) * (p[2].y as i64 - p[0].y as i64)
+                - (p[2].x as i64 - p[0].x as i64) * (p[1].y as i64 - p[0].y as i64);
+            if area == 0 {
+                continue;
+            }
+            let z = [(); 3].map(|_| (next(1 << 30) as i64) << 14);
+            let plane = Plane::new(&p, z, area);
+            let expected: Vec<(Span, i64)> = triangle_spans(p, clip)
+                .map(|s| (s, plane.at(s.x0, s.y)))
+                .collect();
+            let mut walked = Vec::new();
+            triangle_spans(p, clip).for_each_on(&plane, |s, v| walked.push((s, v)));
+            assert_eq!(walked, expected, "{p:?}");
+            spans_seen += walked.len();
+        }
+        assert!(spans_seen > 100_000, "{spans_seen}");
     }
 }

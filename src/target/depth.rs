@@ -142,9 +142,9 @@ impl DepthFormat for u16 {
         test: DepthTest,
         mut next_color: impl FnMut() -> C,
     ) -> u32 {
-        let mut acc = (start.saturating_add(1 << 27) >> 13) as i32;
+        // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
+        let mut acc = (start.wrapping_add(1 << 27) >> 13) as i32;
         let mut written = 0;
-        // Every value lies in [0, 2³¹): no overflow, no clamp.
         if test == DepthTest::Less {
             for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
                 let z = (acc >> 15) as u16;
@@ -243,9 +243,9 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
         self.grid.get(x, y)
     }
 
-    /// The depths of `range` (indices from a framebuffer of the same size).
+    /// Every depth, row-major (`width · height` of them).
     #[inline]
-    pub(crate) fn cells_mut(&mut self, range: core::ops::Range<usize>) -> Option<&mut [D]> {
-        self.grid.cells_mut(range)
+    pub(crate) fn cells_all_mut(&mut self) -> &mut [D] {
+        self.grid.cells_all_mut()
     }
 }

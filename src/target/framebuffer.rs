@@ -65,16 +65,10 @@ impl<'a, C: PixelColor> FrameBuffer<'a, C> {
         self.grid.fill(color);
     }
 
-    /// The indices of pixels `x0..x1` of row `y` (the same in a depth buffer of this size).
+    /// Every pixel, row-major (`width · height` of them).
     #[inline]
-    pub(crate) fn span_range(&self, y: i32, x0: i32, x1: i32) -> Option<core::ops::Range<usize>> {
-        self.grid.span_range(y, x0, x1)
-    }
-
-    /// The pixels of `range`.
-    #[inline]
-    pub(crate) fn cells_mut(&mut self, range: core::ops::Range<usize>) -> Option<&mut [C]> {
-        self.grid.cells_mut(range)
+    pub(crate) fn cells_all_mut(&mut self) -> &mut [C] {
+        self.grid.cells_all_mut()
     }
 
     /// Row `y` as a mutable slice.

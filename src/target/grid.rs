@@ -1,7 +1,6 @@
 //! The storage under both buffers: a `width × height` grid over a caller-supplied slice.
 
 use core::fmt;
-use core::ops::Range;
 
 /// Why a buffer could not be wrapped.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -74,6 +73,11 @@ impl<'a, T: Copy> Grid<'a, T> {
         self.cells
     }
 
+    /// Every cell, row-major: exactly `width · height` of them.
+    pub(crate) fn cells_all_mut(&mut self) -> &mut [T] {
+        self.cells
+    }
+
     pub(crate) fn fill(&mut self, value: T) {
         self.cells.fill(value);
     }
@@ -92,29 +96,6 @@ impl<'a, T: Copy> Grid<'a, T> {
 
     pub(crate) fn get_mut(&mut self, x: i32, y: i32) -> Option<&mut T> {
         self.index(x, y).and_then(|i| self.cells.get_mut(i))
-    }
-
-    /// The indices of cells `x0..x1` of row `y` (`None` unless the whole range lies in the
-    /// grid): the same for every grid of this size.
-    #[inline]
-    pub(crate) fn span_range(&self, y: i32, x0: i32, x1: i32) -> Option<Range<usize>> {
-        let (y, x0, x1) = (
-            u32::try_from(y).ok()?,
-            u32::try_from(x0).ok()?,
-            u32::try_from(x1).ok()?,
-        );
-        if y >= self.height || x1 > self.width || x0 > x1 {
-            return None;
-        }
-        // y < height and x1 ≤ width: the range lies within width · height ≤ len.
-        let base = y as usize * self.width as usize;
-        Some(base + x0 as usize..base + x1 as usize)
-    }
-
-    /// The cells of `range` (from [`span_range`](Self::span_range)).
-    #[inline]
-    pub(crate) fn cells_mut(&mut self, range: Range<usize>) -> Option<&mut [T]> {
-        self.cells.get_mut(range)
     }
 
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [T]> {

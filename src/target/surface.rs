@@ -127,38 +127,47 @@ where
         spans: TriangleSpans,
         depth: &DepthPlane,
         stats: &mut Stats,
-        mut colors_for: impl FnMut(Span) -> G,
+        colors_for: impl FnMut(Span) -> G,
     ) {
-        let (plane, step, test, first_row) = (
-            &depth.plane,
-            depth.plane.step_x(),
-            self.test,
-            self.first_row,
-        );
+        let (plane, step, test) = (&depth.plane, depth.plane.step_x(), self.test);
         // Decided once per triangle: spans whose depths need no clamping.
-        let unclamped = D::unclamped_step(depth.max, step);
+        match D::unclamped_step(depth.max, step) {
+            Some(step) => self.each_span(spans, plane, stats, colors_for, |ds, cs, start, g| {
+                D::test_span_unclamped(ds, cs, start, step, test, g)
+            }),
+            None => self.each_span(spans, plane, stats, colors_for, |ds, cs, start, g| {
+                D::test_span(ds, cs, start, step, test, g)
+            }),
+        }
+    }
+
+    /// Runs `test_span(depths, colours, depth at the first pixel, colour source)` on every
+    /// span of a triangle, and counts the fragments and the writes into `stats`.
+    #[inline(always)]
+    fn each_span<G: FnMut() -> C>(
+        &mut self,
+        spans: TriangleSpans,
+        plane: &Plane,
+        stats: &mut Stats,
+        mut colors_for: impl FnMut(Span) -> G,
+        mut test_span: impl FnMut(&mut [D], &mut [C], i64, G) -> u32,
+    ) {
+        let (first_row, width) = (self.first_row, self.color.width() as usize);
+        let (colors, depths) = (self.color.cells_all_mut(), self.depth.cells_all_mut());
         let (mut fragments, mut written) = (0u32, 0u32);
-        for span in spans {
-            let local = span.y.wrapping_sub(first_row);
-            // The buffers have the same size: one range serves both.
-            let Some(range) = self.color.span_range(local, span.x0, span.x1) else {
-                continue;
-            };
-            let (Some(cs), Some(ds)) = (
-                self.color.cells_mut(range.clone()),
-                self.depth.cells_mut(range),
-            ) else {
-                continue;
+        spans.for_each_on(plane, |span, start| {
+            // Spans lie in the clip rectangle, the buffers' extent (same size, exactly
+            // width · height cells): the span's cells are x0..x1 of its row in both.
+            let row = (span.y.wrapping_sub(first_row) as u32 as usize).wrapping_mul(width);
+            let (x0, x1) = (span.x0 as u32 as usize, span.x1 as u32 as usize);
+            let range = row.wrapping_add(x0)..row.wrapping_add(x1);
+            let (Some(cs), Some(ds)) = (colors.get_mut(range.clone()), depths.get_mut(range))
+            else {
+                return;
             };
             fragments = fragments.wrapping_add(cs.len() as u32);
-            let start = plane.at(span.x0, span.y);
-            let colors = colors_for(span);
-            let n = match unclamped {
-                Some(step) => D::test_span_unclamped(ds, cs, start, step, test, colors),
-                None => D::test_span(ds, cs, start, step, test, colors),
-            };
-            written = written.wrapping_add(n);
-        }
+            written = written.wrapping_add(test_span(ds, cs, start, colors_for(span)));
+        });
         stats.fragments = stats.fragments.saturating_add(fragments);
         stats.written = stats.written.saturating_add(written);
     }
