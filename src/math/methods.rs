@@ -4,7 +4,7 @@
 //! others exist so that their error and cost can be measured (`docs/accuracy.md`) and chosen.
 
 use super::angle::Angle;
-use super::scalar::{magnitude_bits, shr_round, UNIT_ONE};
+use super::scalar::{magnitude_bits, map3, shr_round, UNIT_ONE};
 use super::sqrt::rsqrt_q45;
 use super::vector::normalize;
 use super::Unit;
@@ -141,7 +141,7 @@ fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
         return None;
     }
     let shift = bits as i32 - 15;
-    Some(v.map(|x| {
+    Some(map3(v, |x| {
         if shift > 0 {
             x >> shift
         } else {
@@ -158,7 +158,9 @@ fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
     let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
     // y = 2⁴⁵ / sqrt(m); c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
     let y = rsqrt_q45(m) as i64;
-    Some(c.map(|x| ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32))
+    Some(map3(c, |x| {
+        ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
+    }))
 }
 
 #[cfg(test)]

@@ -19,7 +19,9 @@ pub use methods::{Normalize, Trig};
 pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
-pub(crate) use scalar::{div_round, magnitude_bits, mul_wide, shr_round, DEPTH_ONE, UNIT_ONE};
+pub(crate) use scalar::{
+    div_round, magnitude_bits, map3, mul_wide, shr_round, DEPTH_ONE, UNIT_ONE,
+};
 
 pub(crate) use sqrt::isqrt_u64;
 pub(crate) use vector::{cross_wide, dot_unit, normalize};

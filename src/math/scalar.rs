@@ -73,6 +73,15 @@ const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
     Some(if n >= 0 { q } else { -q })
 }
 
+/// `[f(a), f(b), f(c)]`: `array::map` written out, which optimisers keep as three plain
+/// expressions at every optimisation level (at `opt-level = "s"` the library's `map` becomes a
+/// loop through a temporary, in the per-triangle hot path).
+#[inline(always)]
+pub(crate) fn map3<T, U>(v: [T; 3], mut f: impl FnMut(T) -> U) -> [U; 3] {
+    let [a, b, c] = v;
+    [f(a), f(b), f(c)]
+}
+
 /// `a · b` exactly, from 32-bit factors: the form compilers turn into one widening multiply
 /// (SMULL) on Cortex-M3/M4 instead of a full 64-bit product.
 #[inline(always)]

@@ -9,7 +9,7 @@ use embedded_graphics::Pixel;
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
 use super::vertex::{project, ScreenMap};
 use super::{bump, Cull, Frame, Prepared, ScreenVertex, Stats};
-use crate::math::Mat4;
+use crate::math::{map3, Mat4};
 use crate::mesh::{Object, Triangle};
 use crate::raster::{line_pixels, triangle_spans, PixelRect, Plane, ScreenPoint};
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
@@ -17,7 +17,7 @@ use crate::target::{DepthPlane, RasterTarget};
 
 /// Doubled signed area, y down: negative for front faces.
 fn area2(p: &[ScreenPoint; 3]) -> i64 {
-    let [a, b, c] = p.map(|q| (q.x as i64, q.y as i64));
+    let [a, b, c] = map3(*p, |q| (q.x as i64, q.y as i64));
     (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
 }
 
@@ -117,10 +117,10 @@ fn fill<T: RasterTarget, P: Paint>(
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
     let plane = if T::DEPTH {
-        let z = z.map(|z| (z as i64) << 14);
+        let z = map3(z, |z| (z as i64) << 14);
         DepthPlane {
             plane: Plane::new(&p, z, area),
-            max: z.into_iter().max().unwrap_or(i64::MAX),
+            max: z[0].max(z[1]).max(z[2]),
         }
     } else {
         DepthPlane::default()
@@ -237,20 +237,20 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         let clip = target.clip();
-        let p = v.map(|v| v.0);
+        let p = map3(v, |v| v.0);
         // Culling came first so that every band of a frame counts the same culled triangles.
         // A band skips shading the triangles of other bands; a whole frame has none to skip.
         let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
         if band && !rows_overlap(&p, &clip) {
             return Ok(());
         }
-        let z = v.map(|v| v.1);
+        let z = map3(v, |v| v.1);
         let face = FaceInputs {
             base: setup.object.color,
-            model: tri.map(|i| setup.model(i)),
+            model: map3(*tri, |i| setup.model(i)),
             normal_matrix: &setup.normal_matrix,
             normalize: self.frame.precision.normalize(),
-            vertex_rgb: v.map(|v| v.2),
+            vertex_rgb: map3(v, |v| v.2),
             screen: p,
             depth: z,
             inverse_w_offset: self.frame.inverse_w_offset,

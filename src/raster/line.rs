@@ -35,7 +35,7 @@ pub struct LinePixels {
 #[must_use]
 pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixels {
     let empty = LinePixels {
-        minor: FloorStepper::new(0, 1, 0),
+        minor: FloorStepper::ZERO,
         major: 0,
         major_end: 0,
         swapped: false,

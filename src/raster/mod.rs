@@ -167,6 +167,15 @@ pub(crate) type CeilStepper = RationalStepper<true>;
 pub(crate) type FloorStepper = RationalStepper<false>;
 
 impl<const CEIL: bool> RationalStepper<CEIL> {
+    /// The constant 0 (for iterators that yield nothing).
+    pub(crate) const ZERO: Self = RationalStepper {
+        value: 0,
+        rem: 0,
+        den: 1,
+        step_q: 0,
+        step_r: 0,
+    };
+
     /// Starts at `n0 / den` (den > 0, den < 2³¹; the quotient and `step / den` must fit i32).
     pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
         // Callers pass den ≥ 1; the guard keeps a wrong call from dividing by zero.

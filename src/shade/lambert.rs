@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 #[cfg(test)]
 use crate::math::normalize;
-use crate::math::{cross_wide, dot_unit, magnitude_bits, mul_wide, Normalize, UNIT_ONE};
+use crate::math::{cross_wide, dot_unit, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE};
 use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
@@ -40,7 +40,7 @@ fn shrink(v: [i64; 3]) -> [i64; 3] {
     let bits = magnitude_bits(&v);
     if bits > 30 {
         let s = bits - 30;
-        v.map(|c| c >> s)
+        map3(v, |c| c >> s)
     } else {
         v
     }
@@ -49,11 +49,11 @@ fn shrink(v: [i64; 3]) -> [i64; 3] {
 /// `m · v` for a normal matrix (entries within ±2³⁰) and a vector below 2³⁰.
 fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
     // Each product is below 2⁶⁰ and three sum below 2⁶²: nothing to saturate.
-    let v = v.map(|c| c as i32);
-    m.map(|r| {
-        mul_wide(r[0], v[0])
-            .wrapping_add(mul_wide(r[1], v[1]))
-            .wrapping_add(mul_wide(r[2], v[2]))
+    let [x, y, z] = map3(v, |c| c as i32);
+    map3(*m, |[r0, r1, r2]| {
+        mul_wide(r0, x)
+            .wrapping_add(mul_wide(r1, y))
+            .wrapping_add(mul_wide(r2, z))
     })
 }
 
@@ -65,11 +65,15 @@ pub(crate) fn face_normal(
     normal_matrix: &[[i32; 3]; 3],
     method: Normalize,
 ) -> Option<[i32; 3]> {
-    let [a, b, c] = p.map(|v| v.map(i64::from));
-    let e1 = shrink([b[0] - a[0], b[1] - a[1], b[2] - a[2]]);
-    let e2 = shrink([c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
+    let [a, b, c] = p;
+    let edge = |q: [i32; 3]| {
+        let [q0, q1, q2] = q;
+        let [a0, a1, a2] = a;
+        let d = |q: i32, a: i32| q as i64 - a as i64;
+        map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
+    };
     // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
-    let n = cross_wide(e1.map(|c| c as i32), e2.map(|c| c as i32));
+    let n = cross_wide(edge(b), edge(c));
     method.unit(apply(normal_matrix, shrink(n)))
 }
 
@@ -80,7 +84,7 @@ pub(crate) fn vertex_normal(
     normal_matrix: &[[i32; 3]; 3],
     method: Normalize,
 ) -> Option<[i32; 3]> {
-    let v = shrink(n.map(i64::from));
+    let v = shrink(map3(n, i64::from));
     let w = method.unit(apply(normal_matrix, v))?;
     debug_assert!(w.iter().all(|c| c.abs() <= UNIT_ONE));
     Some(w)
