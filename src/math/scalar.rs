@@ -48,6 +48,11 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
         if let Some(q) = div_round_u32(n, d) {
             return q;
         }
+        if HARDWARE_DIVIDE {
+            if let Some(q) = div_round_u64_u32(n, d) {
+                return q;
+            }
+        }
     }
     if n >= 0 {
         n.saturating_add(half) / d
@@ -61,6 +66,62 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
 pub(crate) fn magnitude_bits(values: &[i64]) -> u32 {
     let max = values.iter().map(|v| v.unsigned_abs()).max().unwrap_or(0);
     64 - max.leading_zeros()
+}
+
+/// True where a 32-bit hardware divide exists but no 64-bit one: Armv7-M and later, RISC-V
+/// with atomics (and so, on the targets Rust offers, the M extension). On stable Rust `cfg`
+/// cannot see the divide itself; these cores are told apart from Armv6-M (no divide at all)
+/// by their 32-bit compare-and-swap.
+const HARDWARE_DIVIDE: bool = cfg!(all(target_pointer_width = "32", target_has_atomic = "32"));
+
+/// `floor(n / d)` for `d > 0` and a quotient below 2³² (`n < d · 2³²`), by two 32-bit
+/// divisions of 16-bit digits (Knuth's algorithm D, as in Hacker's Delight's `divlu`): with a
+/// hardware 32-bit divide a few dozen instructions, where a 64-bit division is a library
+/// routine of a few hundred.
+const fn div_u64_u32(n: u64, d: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    // Normalise: the divisor's top bit set. n · 2^s < d · 2^s · 2³² ≤ 2⁶⁴: nothing is lost.
+    let s = d.leading_zeros();
+    let v = d << s;
+    let (vn1, vn0) = (v >> 16, v & 0xFFFF);
+    let un = n << s;
+    let (un32, un10) = ((un >> 32) as u32, un as u32);
+    let (un1, un0) = (un10 >> 16, un10 & 0xFFFF);
+    // Each digit: estimate from the top 32 bits by the top 16 of the divisor, then correct
+    // (at most twice). Every product and sum below stays within 32 bits.
+    let mut q1 = un32 / vn1;
+    let mut rhat = un32 - q1 * vn1;
+    while q1 >= B || q1 * vn0 > B * rhat + un1 {
+        q1 -= 1;
+        rhat += vn1;
+        if rhat >= B {
+            break;
+        }
+    }
+    let un21 = un32
+        .wrapping_mul(B)
+        .wrapping_add(un1)
+        .wrapping_sub(q1.wrapping_mul(v));
+    let mut q0 = un21 / vn1;
+    let mut rhat = un21 - q0 * vn1;
+    while q0 >= B || q0 * vn0 > B * rhat + un0 {
+        q0 -= 1;
+        rhat += vn1;
+        if rhat >= B {
+            break;
+        }
+    }
+    q1 * B + q0
+}
+
+/// [`div_round`] by [`div_u64_u32`], when `d` fits 32 bits and the quotient too.
+const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
+    let a = n.unsigned_abs().saturating_add((d / 2) as u64);
+    if d <= 0 || d > u32::MAX as i64 || (a >> 32) >= d as u64 {
+        return None;
+    }
+    let q = div_u64_u32(a, d as u32) as i64;
+    Some(if n >= 0 { q } else { -q })
 }
 
 /// [`div_round`] by a 32-bit division, when `|n| + d/2` and `d > 0` fit 32 bits.
@@ -111,6 +172,53 @@ mod tests {
             }
         }
         assert!(checked > 50_000);
+    }
+
+    /// The two-digit 64/32 division gives the 64-bit quotient wherever it applies: divisors
+    /// of every size (normalisation shifts 0 to 31), quotients up to 2³² − 1, and the digit
+    /// estimates that need their corrections.
+    #[test]
+    fn div_round_64_by_32_bit_path_is_exact() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut checked = 0;
+        for i in 0..400_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let d = ((x >> 32) as u32 >> (i % 32)).max(1) as i64;
+            let n = ((x as i64) >> (x % 40))
+                .wrapping_mul(d >> (i % 7))
+                .wrapping_add(x as i64 >> 40);
+            if let Some(q) = div_round_u64_u32(n, d) {
+                let (half, sign) = (d / 2, if n >= 0 { 1 } else { -1 });
+                let expected =
+                    sign * ((n.unsigned_abs() as i128 + half as i128) / d as i128) as i64;
+                assert_eq!(q, expected, "{n} / {d}");
+                checked += 1;
+            }
+        }
+        for (n, d) in [
+            (u64::MAX >> 1, u32::MAX),
+            ((1 << 32) - 1, 1),
+            (0, 7),
+            ((1 << 63) - 1, 1 << 31),
+        ] {
+            if let Some(q) = div_round_u64_u32(n as i64, d as i64) {
+                assert_eq!(q, ((n as i128 + (d / 2) as i128) / d as i128) as i64);
+            }
+        }
+        // Quotients of every size below 2³², remainders of every size below d.
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let d = ((x >> 32) as u32 >> (x % 32)).max(1);
+            let q = (x as u32) >> ((x >> 5) % 32);
+            let r = ((x >> 16) as u32) % d;
+            let n = q as u64 * d as u64 + r as u64;
+            assert_eq!(div_u64_u32(n, d), q, "{n} / {d}");
+        }
+        assert!(checked > 100_000, "{checked}");
     }
 
     #[test]
