@@ -74,6 +74,14 @@ pub(crate) fn magnitude_bits(values: &[i64]) -> u32 {
 /// by their 32-bit compare-and-swap.
 const HARDWARE_DIVIDE: bool = cfg!(all(target_pointer_width = "32", target_has_atomic = "32"));
 
+/// True where every division is a library routine (Armv6-M, RISC-V without atomics): there a
+/// few comparisons that spare a division pay for themselves; elsewhere they cost more than
+/// the divide instruction.
+pub(crate) const SOFTWARE_DIVIDE: bool = cfg!(all(
+    target_pointer_width = "32",
+    not(target_has_atomic = "32")
+));
+
 /// `floor(n / d)` for `d > 0` and a quotient below 2³² (`n < d · 2³²`), by two 32-bit
 /// divisions of 16-bit digits (Knuth's algorithm D, as in Hacker's Delight's `divlu`): with a
 /// hardware 32-bit divide a few dozen instructions, where a 64-bit division is a library

@@ -31,7 +31,7 @@ pub use triangle::{triangle_spans, Span, TriangleSpans};
 
 use embedded_graphics::primitives::Rectangle;
 
-use crate::math::SUBPIXEL_SCALE;
+use crate::math::{SOFTWARE_DIVIDE, SUBPIXEL_SCALE};
 
 /// The largest magnitude of a sub-pixel coordinate the rasterisers accept (2²⁴, a million
 /// pixels); anything further is rejected as a whole.
@@ -147,6 +147,73 @@ pub(crate) const fn floor_div(n: i64, d: i64) -> i64 {
     n.div_euclid(d)
 }
 
+/// `(floor(n / d), n mod d)` for `d > 0`, the remainder in `[0, d)`. Where a division is a
+/// library routine of a hundred instructions or more (no hardware divide), quotients of −1, 0
+/// and 1 (steep edges, and edges starting near their first row) are found by comparisons.
+/// Otherwise a 32-bit division where the operands fit and the core is 32-bit.
+#[inline]
+pub(crate) fn floor_divmod(n: i64, d: i64) -> (i64, i64) {
+    if SOFTWARE_DIVIDE {
+        if let Some(qr) = small_floor_divmod(n, d) {
+            return qr;
+        }
+    }
+    let (q, r) = match (i32::try_from(n), i32::try_from(d)) {
+        // 32-bit cores only: there a 64-bit division is a long library routine.
+        (Ok(n), Ok(d)) if cfg!(target_pointer_width = "32") => {
+            (n.wrapping_div(d) as i64, n.wrapping_rem(d) as i64)
+        }
+        _ => (n / d, n % d),
+    };
+    if r < 0 {
+        (q - 1, r + d)
+    } else {
+        (q, r)
+    }
+}
+
+/// [`floor_divmod`] for quotients −1, 0 and 1 (`d > 0`), by comparisons; `None` otherwise.
+#[inline(always)]
+fn small_floor_divmod(n: i64, d: i64) -> Option<(i64, i64)> {
+    if n >= 0 && n < d {
+        Some((0, n))
+    } else if n < 0 && n >= -d {
+        Some((-1, n + d))
+    } else if n >= d && n - d < d {
+        Some((1, n - d))
+    } else {
+        None
+    }
+}
+
+/// [`small_floor_divmod`] of 32-bit operands, for quotients −1 and 0.
+#[inline(always)]
+fn small_floor_divmod32(n: i32, d: i32) -> Option<(i32, i32)> {
+    if n >= 0 && n < d {
+        Some((0, n))
+    } else if n < 0 && n >= d.wrapping_neg() {
+        Some((-1, n.wrapping_add(d)))
+    } else {
+        None
+    }
+}
+
+/// [`floor_divmod`] of 32-bit operands (`d > 0`).
+#[inline]
+fn floor_divmod32(n: i32, d: i32) -> (i32, i32) {
+    if SOFTWARE_DIVIDE {
+        if let Some(qr) = small_floor_divmod32(n, d) {
+            return qr;
+        }
+    }
+    let (q, r) = (n.wrapping_div(d), n.wrapping_rem(d));
+    if r < 0 {
+        (q.wrapping_sub(1), r.wrapping_add(d))
+    } else {
+        (q, r)
+    }
+}
+
 /// Walks `ceil(N(k) / D)` or `floor(N(k) / D)` for `N(k) = N0 + k·step` over consecutive
 /// integers `k`, exactly, with an i32 quotient and remainder (Bresenham's error term). Used for
 /// triangle edges (ceil) and lines (floor).
@@ -180,19 +247,7 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
     pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
         // Callers pass den ≥ 1; the guard keeps a wrong call from dividing by zero.
         let den = den.max(1);
-        // One division (quotient and remainder together; 32-bit on 32-bit cores when the
-        // operands fit, which is most triangles on screen), then the floor/ceil fix-up.
-        let (mut q, mut r) = match (i32::try_from(n0), i32::try_from(den)) {
-            // 32-bit cores only: there a 64-bit division is a long library routine.
-            (Ok(n), Ok(d)) if cfg!(target_pointer_width = "32") => {
-                (n.wrapping_div(d) as i64, n.wrapping_rem(d) as i64)
-            }
-            _ => (n0 / den, n0 % den),
-        };
-        if r < 0 {
-            q -= 1;
-            r += den;
-        }
+        let (q, r) = floor_divmod(n0, den);
         // Now n0 = q·den + r with 0 ≤ r < den.
         let (value, rem) = if CEIL && r != 0 {
             (q + 1, den - r)
@@ -200,20 +255,15 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
             (q, r)
         };
         // For ceil the step subtracts from rem (rem = qD − N), for floor it adds. The step and
-        // the denominator fit i32 (see below): a 32-bit division.
-        let (step32, den32) = (step as i32, den as i32);
-        let (mut sq, mut sr) = (step32 / den32, step32 % den32);
-        if sr < 0 {
-            sq -= 1;
-            sr += den32;
-        }
+        // the denominator fit i32 (see below).
+        let (sq, sr) = floor_divmod32(step as i32, den as i32);
         // Callers keep coordinates within ±COORD_LIMIT (2²⁴ sub-pixels): the denominator is
         // below 2²⁹, remainders below it, quotients (pixel coordinates) below 2²¹ and steps below
         // 2²⁹, so every value fits i32 and the casts are exact.
         RationalStepper {
             value: value as i32,
             rem: rem as i32,
-            den: den32,
+            den: den as i32,
             step_q: sq,
             step_r: sr,
         }
@@ -248,6 +298,37 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
             if self.rem >= self.den {
                 self.rem = self.rem.wrapping_sub(self.den);
                 self.value = self.value.wrapping_add(1);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The division-free quotients (used where division is a library routine, so not on the
+    /// host) equal floor division wherever they answer, and answer for quotients −1, 0, 1.
+    #[test]
+    fn small_quotients_equal_floor_division() {
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let d = ((x >> 40) as i64 >> (x % 24)).max(1);
+            let n = ((x as i64) >> (x % 64)) % (4 * d + 1);
+            let expected = (n.div_euclid(d), n.rem_euclid(d));
+            match small_floor_divmod(n, d) {
+                Some(qr) => assert_eq!(qr, expected, "{n} / {d}"),
+                None => assert!(!(-1..=1).contains(&expected.0), "{n} / {d}"),
+            }
+            if let (Ok(n), Ok(d)) = (i32::try_from(n), i32::try_from(d)) {
+                let expected = (n.div_euclid(d), n.rem_euclid(d));
+                match small_floor_divmod32(n, d) {
+                    Some(qr) => assert_eq!(qr, expected, "{n} / {d}"),
+                    None => assert!(!(-1..=0).contains(&expected.0), "{n} / {d}"),
+                }
             }
         }
     }

@@ -11,7 +11,7 @@
 //! with an integer quotient and remainder, so no precision is lost however long the edge.
 
 use super::{ceil_div, CeilStepper, PixelRect, Plane, ScreenPoint};
-use crate::math::SUBPIXEL_SCALE;
+use crate::math::{SOFTWARE_DIVIDE, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -123,8 +123,18 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
 fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
     let dx = q.x as i64 - p.x as i64;
     let dy = (q.y as i64 - p.y as i64).max(1);
-    let n0 = (p.x as i64 - HALF) * dy + dx * (S * py + HALF - p.y as i64);
-    CeilStepper::new(n0, S * dy, S * dx)
+    // Without a hardware divide, the whole pixels of p.x − 8 come out by a shift:
+    // ceil(((16k + m)·dy + …) / 16dy) = k + ceil((m·dy + …) / 16dy), a small quotient for
+    // steep edges started at their top, found without dividing (see `floor_divmod`).
+    let x = p.x as i64 - HALF;
+    let (k, m) = if SOFTWARE_DIVIDE {
+        (x >> 4, x & (S - 1))
+    } else {
+        (0, x)
+    };
+    let mut e = CeilStepper::new(m * dy + dx * (S * py + HALF - p.y as i64), S * dy, S * dx);
+    e.value = e.value.wrapping_add(k as i32);
+    e
 }
 
 fn sort_by_y(v: [ScreenPoint; 3]) -> [ScreenPoint; 3] {

@@ -37,6 +37,11 @@ pub(crate) fn lambert<const N: usize>(
 /// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough
 /// headroom for one more product with Q16.16 before normalising.
 fn shrink(v: [i64; 3]) -> [i64; 3] {
+    // The common case, found by comparisons (counting bits is a library call on Cortex-M0).
+    const LIMIT: i64 = 1 << 30;
+    if v.iter().all(|c| -LIMIT < *c && *c < LIMIT) {
+        return v;
+    }
     let bits = magnitude_bits(&v);
     if bits > 30 {
         let s = bits - 30;
