@@ -101,8 +101,8 @@ fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
     let ymin = p.iter().map(|q| q.y).min().unwrap_or(0);
     let ymax = p.iter().map(|q| q.y).max().unwrap_or(0);
     // Row py is sampled at 16·py + 8; it can be covered only if ymin ≤ 16·py + 8 < ymax.
-    let first = crate::raster::ceil_div(ymin as i64 - 8, 16);
-    let end = crate::raster::ceil_div(ymax as i64 - 8, 16);
+    let first = crate::raster::first_centre_from(ymin as i64);
+    let end = crate::raster::first_centre_from(ymax as i64);
     first < clip.y1 as i64 && end > clip.y0 as i64
 }
 

@@ -3,7 +3,7 @@
 
 use embedded_graphics::prelude::Point;
 
-use super::{ceil_div, floor_div, FloorStepper, PixelRect, ScreenPoint};
+use super::{ceil_div, first_centre_from, floor_div, FloorStepper, PixelRect, ScreenPoint};
 use crate::math::SUBPIXEL_SCALE;
 
 const S: i64 = SUBPIXEL_SCALE as i64;
@@ -67,7 +67,7 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     let (dmaj, dmin) = (b.0 - a.0, b.1 - a.1);
     // Columns whose centre lies in [a, b) along the major axis (or (b, a] going backwards).
     let (mut i0, mut i1) = if dmaj > 0 {
-        (ceil_div(a.0 - HALF, S), ceil_div(b.0 - HALF, S))
+        (first_centre_from(a.0), first_centre_from(b.0))
     } else {
         (floor_div(b.0 - HALF, S) + 1, floor_div(a.0 - HALF, S) + 1)
     };

@@ -132,6 +132,13 @@ impl PixelRect {
     }
 }
 
+/// The first pixel whose centre lies at or right of (below) sub-pixel coordinate `v`:
+/// `ceil((v − 8) / 16)`, by a shift.
+#[inline]
+pub(crate) const fn first_centre_from(v: i64) -> i64 {
+    (v + (SUBPIXEL_SCALE as i64 / 2 - 1)) >> crate::math::SUBPIXEL_BITS
+}
+
 /// `ceil(n / d)` for `d > 0`.
 pub(crate) const fn ceil_div(n: i64, d: i64) -> i64 {
     let q = n.div_euclid(d);

@@ -10,7 +10,7 @@
 //! exclusive: the top-left rule, exactly. The crossings are rationals stepped from row to row
 //! with an integer quotient and remainder, so no precision is lost however long the edge.
 
-use super::{ceil_div, CeilStepper, PixelRect, Plane, ScreenPoint};
+use super::{first_centre_from, CeilStepper, PixelRect, Plane, ScreenPoint};
 use crate::math::{SOFTWARE_DIVIDE, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
@@ -60,7 +60,7 @@ pub struct TriangleSpans {
 /// ```
 #[must_use]
 pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
-    let empty = TriangleSpans {
+    let empty = || TriangleSpans {
         v,
         y: 0,
         y_end: 0,
@@ -72,7 +72,7 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
         x_max: 0,
     };
     if !v.iter().all(|p| p.in_range()) || clip.is_empty() {
-        return empty;
+        return empty();
     }
     let [a, b, c] = sort_by_y(v);
     let (ax, ay, bx, by, cx, cy) = (
@@ -81,15 +81,14 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
     // Twice the signed area; zero covers nothing (rule R4).
     let cross = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
     if cross == 0 {
-        return empty;
+        return empty();
     }
-    let first_row = |y: i64| ceil_div(y - HALF, S);
-    let y_start = first_row(ay).max(clip.y0 as i64);
-    let y_end = first_row(cy).min(clip.y1 as i64);
+    let y_start = first_centre_from(ay).max(clip.y0 as i64);
+    let y_end = first_centre_from(cy).min(clip.y1 as i64);
     if y_start >= y_end {
-        return empty;
+        return empty();
     }
-    let y_split = first_row(by).clamp(y_start, y_end);
+    let y_split = first_centre_from(by).clamp(y_start, y_end);
     // The middle vertex lies right of the long edge when cross > 0 (y down): the long edge is
     // then the left one.
     let long_is_left = cross > 0;
