@@ -30,7 +30,7 @@ use crate::projection::{Projection, Viewport};
 use crate::scene::Scene;
 use crate::shade::{vertex_normal, Shading};
 
-use vertex::{outcode, project, ScreenMap};
+use vertex::{outcode_and_project, ScreenMap};
 
 /// Which triangles back-face culling removes. Front faces are counter-clockwise when seen from
 /// outside (in world space); on screen (y down) that is a negative signed area.
@@ -227,12 +227,7 @@ impl Frame {
             for (i, p) in object.mesh.positions().iter().enumerate() {
                 let Some(slot) = slots.next() else { break };
                 let c = clip_from_model.transform_wide(p.to_bits());
-                let code = outcode(c, &map);
-                let (pt, z) = if code == 0 {
-                    project(c, &map).unwrap_or_default()
-                } else {
-                    Default::default()
-                };
+                let (code, pt, z) = outcode_and_project(c, &map);
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
                         let lit = crate::shade::lambert(

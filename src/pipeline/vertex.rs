@@ -126,11 +126,11 @@ pub(crate) fn inside(k: u32, d: i64) -> bool {
     }
 }
 
-/// The planes a clip-space vertex is outside of: [`distance`] and [`inside`] for each plane,
-/// written out (once per vertex, the vertex stage's hot path).
-pub(crate) fn outcode(c: [i64; 4], m: &ScreenMap) -> u8 {
-    let [x, y, z, w] = reduce(c);
-    let (g, xh, yh) = (GUARD * w, x * m.half_w, y * m.half_h);
+/// The planes a vertex is outside of, from reduced `z`, `w`, `x·half_w` and `y·half_h`:
+/// [`distance`] and [`inside`] for each plane, written out.
+#[inline(always)]
+fn outcode_reduced(z: i64, w: i64, xh: i64, yh: i64) -> u8 {
+    let g = GUARD * w;
     (z <= 0) as u8
         | ((w - z < 0) as u8) << 1
         | ((g + xh < 0) as u8) << 2
@@ -144,19 +144,36 @@ pub(crate) fn outcode(c: [i64; 4], m: &ScreenMap) -> u8 {
 /// `None` when w ≤ 0: the pipeline never divides by it.
 pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> {
     let [x, y, z, w] = reduce(c);
+    project_reduced(x * m.half_w, y * m.half_h, z, w, m)
+}
+
+/// The vertex stage's hot path: the planes a clip-space vertex is outside of (one bit each,
+/// in [`distance`]'s order) and, when there are none, its [`project`]ion (the reduction and the viewport products done once for both).
+#[inline]
+pub(crate) fn outcode_and_project(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoint, i32) {
+    let [x, y, z, w] = reduce(c);
+    let (xh, yh) = (x * m.half_w, y * m.half_h);
+    let code = outcode_reduced(z, w, xh, yh);
+    if code != 0 {
+        return (code, ScreenPoint::default(), 0);
+    }
+    let (p, depth) = project_reduced(xh, yh, z, w, m).unwrap_or_default();
+    (code, p, depth)
+}
+
+/// [`project`] of reduced coordinates, from `x·half_w`, `y·half_h`, `z` and `w`.
+#[inline(always)]
+fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(ScreenPoint, i32)> {
     if w <= 0 {
         return None;
     }
     let lim = 1i64 << 15;
     let (sx, sy) = if m.snap == 0 {
-        (div_round(x * m.half_w, w), div_round(y * m.half_h, w))
+        (div_round(xh, w), div_round(yh, w))
     } else {
         // One rounding to the coarser grid (no double rounding through sixteenths).
         let (g, wg) = (m.snap, w << m.snap);
-        (
-            div_round(x * m.half_w, wg) << g,
-            div_round(y * m.half_h, wg) << g,
-        )
+        (div_round(xh, wg) << g, div_round(yh, wg) << g)
     };
     let sx = (m.half_w + sx).clamp(-lim, lim);
     let sy = (m.half_h - sy).clamp(-lim, lim);
@@ -192,7 +209,7 @@ mod tests {
                     code | (1 << k)
                 }
             });
-            assert_eq!(outcode(c, &map), expected, "{c:?}");
+            assert_eq!(outcode_and_project(c, &map).0, expected, "{c:?}");
         }
     }
 }
