@@ -85,16 +85,6 @@ impl ObjectSetup<'_> {
             rgb: rgb.map(|c| (c as i32) << 8),
         }
     }
-
-    fn model(&self, index: u16) -> [i32; 3] {
-        self.object
-            .mesh
-            .positions()
-            .get(index as usize)
-            .copied()
-            .unwrap_or_default()
-            .to_bits()
-    }
 }
 
 /// Rows `[ceil((min−8)/16), ceil((max−8)/16))` of a triangle overlap the clip's rows.
@@ -248,12 +238,11 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let z = map3(v, |v| v.1);
         let face = FaceInputs {
             base: setup.object.color,
-            model: map3(*tri, |i| setup.model(i)),
+            positions: setup.object.mesh.positions(),
+            indices: tri,
             normal_matrix: &setup.normal_matrix,
             normalize: self.frame.precision.normalize(),
-            vertex_rgb: map3(v, |v| v.2),
-            screen: p,
-            depth: z,
+            vertices: &v,
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
         };

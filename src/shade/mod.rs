@@ -18,7 +18,8 @@ pub use paint::{
 
 use embedded_graphics::pixelcolor::Rgb888;
 
-use crate::math::Normalize;
+use crate::math::{map3, Normalize, Vec3};
+use crate::mesh::Triangle;
 use crate::raster::ScreenPoint;
 use crate::scene::Lighting;
 
@@ -26,28 +27,44 @@ mod sealed {
     pub trait Sealed {}
 }
 
-/// What a shading type needs to colour one triangle.
+/// What a shading type needs to colour one triangle (read where needed: flat shading reads the
+/// model-space positions, Gouraud the screen vertices).
 #[derive(Debug)]
 pub struct FaceInputs<'a> {
     /// The object's base colour.
     pub(crate) base: Rgb888,
-    /// Model-space positions of the three vertices (raw Q16.16).
-    pub(crate) model: [[i32; 3]; 3],
+    /// The mesh's model-space positions, and the triangle's indices into them.
+    pub(crate) positions: &'a [Vec3],
+    pub(crate) indices: &'a Triangle,
     /// World-from-model normal matrix (cofactor, raw Q16.16).
     pub(crate) normal_matrix: &'a [[i32; 3]; 3],
     /// How normals are normalised.
     pub(crate) normalize: Normalize,
-    /// Per-vertex lit colours (Gouraud).
-    pub(crate) vertex_rgb: [[i32; 3]; 3],
-    /// Snapped screen positions.
-    pub(crate) screen: [ScreenPoint; 3],
-    /// Depths (Q1.30).
-    pub(crate) depth: [i32; 3],
+    /// Per vertex: snapped screen position, depth (Q1.30) and lit colour (Gouraud).
+    pub(crate) vertices: &'a [(ScreenPoint, i32, [i32; 3]); 3],
     /// For perspective projections, the value `1/w` is proportional to after subtracting the
     /// depth (Q1.30).
     pub(crate) inverse_w_offset: Option<i64>,
     /// Doubled signed screen area.
     pub(crate) area2: i64,
+}
+
+impl FaceInputs<'_> {
+    /// Model-space positions of the three vertices (raw Q16.16).
+    fn model(&self) -> [[i32; 3]; 3] {
+        map3(*self.indices, |i| {
+            let p = self.positions.get(i as usize).copied();
+            p.unwrap_or_default().to_bits()
+        })
+    }
+
+    fn screen(&self) -> [ScreenPoint; 3] {
+        map3(*self.vertices, |v| v.0)
+    }
+
+    fn vertex_rgb(&self) -> [[i32; 3]; 3] {
+        map3(*self.vertices, |v| v.2)
+    }
 }
 
 /// A way of shading triangles: [`Unlit`], [`Flat`] or [`Gouraud`].
@@ -102,7 +119,7 @@ impl Shading for Flat {
     type Paint = SolidPaint;
     const PER_VERTEX: bool = false;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
-        let n = face_normal(face.model, face.normal_matrix, face.normalize);
+        let n = face_normal(face.model(), face.normal_matrix, face.normalize);
         SolidPaint(lambert(face.base, n, lighting))
     }
 }
@@ -111,7 +128,7 @@ impl Shading for Gouraud {
     type Paint = SmoothPaint;
     const PER_VERTEX: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> SmoothPaint {
-        SmoothPaint::new(&face.screen, face.vertex_rgb, face.area2)
+        SmoothPaint::new(&face.screen(), face.vertex_rgb(), face.area2)
     }
 }
 
@@ -120,9 +137,9 @@ impl Shading for PerspectiveGouraud {
     const PER_VERTEX: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> PerspectivePaint {
         let q = match face.inverse_w_offset {
-            Some(offset) => face.depth.map(|d| offset.saturating_sub(d as i64)),
+            Some(offset) => map3(*face.vertices, |v| offset.saturating_sub(v.1 as i64)),
             None => [1; 3],
         };
-        PerspectivePaint::new(&face.screen, face.vertex_rgb, q, face.area2)
+        PerspectivePaint::new(&face.screen(), face.vertex_rgb(), q, face.area2)
     }
 }
