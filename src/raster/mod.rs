@@ -285,28 +285,31 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
     /// [`step_quotient`](Self::step_quotient).
     #[inline(always)]
     pub(crate) fn step_carry(&mut self) -> bool {
-        let before = self.value;
-        self.step();
-        self.value.wrapping_sub(before) != self.step_q
+        self.value = self.value.wrapping_add(self.step_q);
+        let carry = if CEIL {
+            // rem = value·D − N stays in [0, D): a negative rem borrows one more.
+            self.rem = self.rem.wrapping_sub(self.step_r);
+            self.rem < 0
+        } else {
+            // rem = N − value·D stays in [0, D): a rem of D or more carries one more.
+            self.rem = self.rem.wrapping_add(self.step_r);
+            self.rem >= self.den
+        };
+        if carry {
+            self.rem = if CEIL {
+                self.rem.wrapping_add(self.den)
+            } else {
+                self.rem.wrapping_sub(self.den)
+            };
+            self.value = self.value.wrapping_add(1);
+        }
+        carry
     }
 
     /// Advances `k` by one.
     #[inline(always)]
     pub(crate) fn step(&mut self) {
-        self.value = self.value.wrapping_add(self.step_q);
-        if CEIL {
-            self.rem = self.rem.wrapping_sub(self.step_r);
-            if self.rem < 0 {
-                self.rem = self.rem.wrapping_add(self.den);
-                self.value = self.value.wrapping_add(1);
-            }
-        } else {
-            self.rem = self.rem.wrapping_add(self.step_r);
-            if self.rem >= self.den {
-                self.rem = self.rem.wrapping_sub(self.den);
-                self.value = self.value.wrapping_add(1);
-            }
-        }
+        self.step_carry();
     }
 }
 
