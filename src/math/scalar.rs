@@ -43,15 +43,14 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
     }
     let half = d / 2;
     // Where 64-bit division is a long library routine (32-bit cores), the same quotient by a
-    // 32-bit division when the operands fit: most divisions of the pipeline.
+    // 32-bit division when the operands fit (most divisions of the pipeline), else by two
+    // when the divisor and the quotient fit 32 bits (the depth divisions).
     if cfg!(target_pointer_width = "32") {
         if let Some(q) = div_round_u32(n, d) {
             return q;
         }
-        if HARDWARE_DIVIDE {
-            if let Some(q) = div_round_u64_u32(n, d) {
-                return q;
-            }
+        if let Some(q) = div_round_u64_u32(n, d) {
+            return q;
         }
     }
     if n >= 0 {
@@ -68,12 +67,6 @@ pub(crate) fn magnitude_bits(values: &[i64]) -> u32 {
     64 - max.leading_zeros()
 }
 
-/// True where a 32-bit hardware divide exists but no 64-bit one: Armv7-M and later, RISC-V
-/// with atomics (and so, on the targets Rust offers, the M extension). On stable Rust `cfg`
-/// cannot see the divide itself; these cores are told apart from Armv6-M (no divide at all)
-/// by their 32-bit compare-and-swap.
-const HARDWARE_DIVIDE: bool = cfg!(all(target_pointer_width = "32", target_has_atomic = "32"));
-
 /// True where every division is a library routine (Armv6-M, RISC-V without atomics): there a
 /// few comparisons that spare a division pay for themselves; elsewhere they cost more than
 /// the divide instruction.
@@ -83,9 +76,10 @@ pub(crate) const SOFTWARE_DIVIDE: bool = cfg!(all(
 ));
 
 /// `floor(n / d)` for `d > 0` and a quotient below 2³² (`n < d · 2³²`), by two 32-bit
-/// divisions of 16-bit digits (Knuth's algorithm D, as in Hacker's Delight's `divlu`): with a
-/// hardware 32-bit divide a few dozen instructions, where a 64-bit division is a library
-/// routine of a few hundred.
+/// divisions of 16-bit digits (Knuth's algorithm D, as in Hacker's Delight's `divlu`): on
+/// 32-bit cores a 64-bit division is a library routine of a few hundred instructions; this
+/// takes a few dozen with a hardware 32-bit divide (Cortex-M3/M4), and on Cortex-M0 two
+/// library 32-bit divisions still cost less than the 64-bit one.
 const fn div_u64_u32(n: u64, d: u32) -> u32 {
     const B: u32 = 1 << 16;
     // Normalise: the divisor's top bit set. n · 2^s < d · 2^s · 2³² ≤ 2⁶⁴: nothing is lost.
