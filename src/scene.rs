@@ -51,6 +51,7 @@ impl LightColor {
         LightColor::new(ch(c.r()), ch(c.g()), ch(c.b()))
     }
 
+    #[inline]
     pub(crate) fn channels(&self) -> [i64; 3] {
         [self.r, self.g, self.b].map(|c| c.to_bits() as i64)
     }

@@ -135,6 +135,7 @@ impl Normalize {
 }
 
 /// The vector shifted so that its largest component lies in [2¹⁴, 2¹⁵); `None` for zero.
+#[inline]
 fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
     let bits = magnitude_bits(&v);
     if bits == 0 {
@@ -151,6 +152,7 @@ fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
 }
 
 /// [`Normalize::Newton`]: relative error below 2·10⁻⁶, no division and no loop.
+#[inline]
 fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
     let c = shrink_to_15_bits(v)?;
     // The sum of squares lies in [2²⁸, 3·2³⁰).

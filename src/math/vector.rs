@@ -140,6 +140,7 @@ pub(crate) fn saturate(v: i64) -> Scalar {
 }
 
 /// Exact cross product of raw vectors whose components fit in i32 (each term < 2⁶³).
+#[inline]
 pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     [
@@ -184,6 +185,7 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
 }
 
 /// Dot product of two Q2.30 unit vectors, Q2.30.
+#[inline]
 pub(crate) fn dot_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
     let s: i64 = a.iter().zip(b.iter()).map(|(x, y)| mul_wide(*x, *y)).sum();
     shr_round(s, 30).clamp(-(2 * UNIT_ONE as i64), 2 * UNIT_ONE as i64 - 1) as i32
