@@ -20,7 +20,7 @@ pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
 pub(crate) use scalar::{
-    div_round, magnitude_bits, map3, mul_wide, shr_round, DEPTH_ONE, SOFTWARE_DIVIDE, UNIT_ONE,
+    div_round, magnitude_bits, map3, mul_wide, shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 
 pub(crate) use sqrt::isqrt_u64;

@@ -67,10 +67,12 @@ pub(crate) fn magnitude_bits(values: &[i64]) -> u32 {
     64 - max.leading_zeros()
 }
 
-/// True where every division is a library routine (Armv6-M, RISC-V without atomics): there a
-/// few comparisons that spare a division pay for themselves; elsewhere they cost more than
-/// the divide instruction.
-pub(crate) const SOFTWARE_DIVIDE: bool = cfg!(all(
+/// True on the smallest cores (Armv6-M; RISC-V without atomics), where every division and
+/// every 64-bit product is a library routine: there a few comparisons that spare one pay for
+/// themselves, elsewhere they cost more than the instruction. (`cfg` on stable Rust cannot
+/// see the divide or the long multiply; these cores are told apart from Armv7-M and up by
+/// their lack of 32-bit compare-and-swap.)
+pub(crate) const NARROW_CORE: bool = cfg!(all(
     target_pointer_width = "32",
     not(target_has_atomic = "32")
 ));

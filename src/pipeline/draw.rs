@@ -18,8 +18,7 @@ use crate::target::{DepthPlane, RasterTarget};
 /// Doubled signed area, y down: negative for front faces.
 #[inline]
 fn area2(p: &[ScreenPoint; 3]) -> i64 {
-    let [a, b, c] = map3(*p, |q| (q.x as i64, q.y as i64));
-    (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
+    crate::raster::doubled_area(p[0], p[1], p[2])
 }
 
 /// True when culling keeps a triangle of this signed area (non-zero).

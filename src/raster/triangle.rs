@@ -10,8 +10,8 @@
 //! exclusive: the top-left rule, exactly. The crossings are rationals stepped from row to row
 //! with an integer quotient and remainder, so no precision is lost however long the edge.
 
-use super::{first_centre_from, CeilStepper, PixelRect, Plane, ScreenPoint};
-use crate::math::{SOFTWARE_DIVIDE, SUBPIXEL_SCALE};
+use super::{doubled_area, first_centre_from, CeilStepper, PixelRect, Plane, ScreenPoint};
+use crate::math::{NARROW_CORE, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -75,11 +75,9 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
         return empty();
     }
     let [a, b, c] = sort_by_y(v);
-    let (ax, ay, bx, by, cx, cy) = (
-        a.x as i64, a.y as i64, b.x as i64, b.y as i64, c.x as i64, c.y as i64,
-    );
+    let (ay, by, cy) = (a.y as i64, b.y as i64, c.y as i64);
     // Twice the signed area; zero covers nothing (rule R4).
-    let cross = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
+    let cross = doubled_area(a, b, c);
     if cross == 0 {
         return empty();
     }
@@ -126,7 +124,7 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
     // ceil(((16k + m)·dy + …) / 16dy) = k + ceil((m·dy + …) / 16dy), a small quotient for
     // steep edges started at their top, found without dividing (see `floor_divmod`).
     let x = p.x as i64 - HALF;
-    let (k, m) = if SOFTWARE_DIVIDE {
+    let (k, m) = if NARROW_CORE {
         (x >> 4, x & (S - 1))
     } else {
         (0, x)
