@@ -124,12 +124,21 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
     // ceil(((16k + m)·dy + …) / 16dy) = k + ceil((m·dy + …) / 16dy), a small quotient for
     // steep edges started at their top, found without dividing (see `floor_divmod`).
     let x = p.x as i64 - HALF;
-    let (k, m) = if NARROW_CORE {
-        (x >> 4, x & (S - 1))
+    let t = S * py + HALF - p.y as i64;
+    let (k, n0) = if NARROW_CORE {
+        let (k, m) = (x >> 4, x & (S - 1));
+        // Started within its top pixel (0 ≤ t < 16, the usual case) both products are below
+        // 2²⁹ (sides below 2²⁵): 32-bit, where a 64-bit product is a library call.
+        let n0 = if (0..S).contains(&t) {
+            (m as i32 * dy as i32 + dx as i32 * t as i32) as i64
+        } else {
+            m * dy + dx * t
+        };
+        (k, n0)
     } else {
-        (0, x)
+        (0, x * dy + dx * t)
     };
-    let mut e = CeilStepper::new(m * dy + dx * (S * py + HALF - p.y as i64), S * dy, S * dx);
+    let mut e = CeilStepper::new(n0, S * dy, S * dx);
     e.value = e.value.wrapping_add(k as i32);
     e
 }
