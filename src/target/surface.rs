@@ -154,6 +154,11 @@ where
     ) {
         let (first_row, width) = (self.first_row, self.color.width() as usize);
         let (colors, depths) = (self.color.cells_all_mut(), self.depth.cells_all_mut());
+        // The same length for both (they are), so that one bounds check per span serves both.
+        let n = colors.len().min(depths.len());
+        let (Some(colors), Some(depths)) = (colors.get_mut(..n), depths.get_mut(..n)) else {
+            return;
+        };
         let (mut fragments, mut written) = (0u32, 0u32);
         spans.for_each_on(plane, |span, start| {
             // Spans lie in the clip rectangle, the buffers' extent (same size, exactly
