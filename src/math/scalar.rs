@@ -77,6 +77,21 @@ pub(crate) const NARROW_CORE: bool = cfg!(all(
     not(target_has_atomic = "32")
 ));
 
+/// True for `d` in [−2¹⁵, 2¹⁵): two such factors make a 32-bit product within ±2³⁰, and the
+/// difference of two such products still fits 32 bits.
+#[inline(always)]
+pub(crate) const fn is_short(d: i32) -> bool {
+    (d.wrapping_add(1 << 15) as u32) < 1 << 16
+}
+
+/// `ux·vy − vx·uy` in 32-bit arithmetic when every factor [`is_short`] (within ±(2³¹ − 2¹⁵));
+/// for cores without a long multiply. `None` otherwise.
+#[inline(always)]
+pub(crate) fn narrow_cross(ux: i32, uy: i32, vx: i32, vy: i32) -> Option<i64> {
+    (is_short(ux) && is_short(uy) && is_short(vx) && is_short(vy))
+        .then(|| (ux * vy - vx * uy) as i64)
+}
+
 /// `floor(n / d)` for `d > 0` and a quotient below 2³² (`n < d · 2³²`), by two 32-bit
 /// divisions of 16-bit digits (Knuth's algorithm D, as in Hacker's Delight's `divlu`): on
 /// 32-bit cores a 64-bit division is a library routine of a few hundred instructions; this
@@ -223,6 +238,38 @@ mod tests {
             assert_eq!(div_u64_u32(n, d), q, "{n} / {d}");
         }
         assert!(checked > 100_000, "{checked}");
+    }
+
+    /// The 32-bit cross product (used where 64-bit products are library calls, so not on the
+    /// host) equals the 64-bit one wherever it answers, and answers for sides below 2¹⁵.
+    #[test]
+    fn narrow_cross_equals_wide() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = |bits: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            ((x as i64) >> (64 - bits)) as i32
+        };
+        for i in 0..100_000 {
+            let bits = 10 + i % 8;
+            let (ux, uy, vx, vy) = (next(bits), next(bits), next(bits), next(bits));
+            let wide = ux as i64 * vy as i64 - vx as i64 * uy as i64;
+            let fits = [ux, uy, vx, vy].iter().all(|d| (-32768..32768).contains(d));
+            assert_eq!(narrow_cross(ux, uy, vx, vy), fits.then_some(wide));
+        }
+        // The extremes: the difference reaches ±(2³¹ − 2¹⁵) and still fits.
+        let extreme =
+            |a: i32, b: i32, c: i32, d: i32| Some(a as i64 * d as i64 - c as i64 * b as i64);
+        assert_eq!(
+            narrow_cross(-32768, 32767, -32768, -32768),
+            extreme(-32768, 32767, -32768, -32768)
+        );
+        assert_eq!(
+            narrow_cross(-32768, -32768, -32768, 32767),
+            extreme(-32768, -32768, -32768, 32767)
+        );
+        assert_eq!(narrow_cross(32768, 0, 0, 0), None);
     }
 
     #[test]

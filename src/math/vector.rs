@@ -2,7 +2,9 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use super::scalar::{magnitude_bits, mul_wide, shr_round, Scalar, UNIT_ONE};
+use super::scalar::{
+    magnitude_bits, mul_wide, narrow_cross, shr_round, Scalar, NARROW_CORE, UNIT_ONE,
+};
 use super::sqrt::isqrt_u64;
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
@@ -143,6 +145,17 @@ pub(crate) fn saturate(v: i64) -> Scalar {
 #[inline]
 pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
+    if NARROW_CORE {
+        // Short components (the edges of most triangles): 32-bit products, where a 64-bit
+        // product is a library call.
+        if let (Some(x), Some(y), Some(z)) = (
+            narrow_cross(a1, a2, b1, b2),
+            narrow_cross(a2, a0, b2, b0),
+            narrow_cross(a0, a1, b0, b1),
+        ) {
+            return [x, y, z];
+        }
+    }
     [
         mul_wide(a1, b2).saturating_sub(mul_wide(a2, b1)),
         mul_wide(a2, b0).saturating_sub(mul_wide(a0, b2)),

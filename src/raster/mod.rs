@@ -31,7 +31,7 @@ pub use triangle::{triangle_spans, Span, TriangleSpans};
 
 use embedded_graphics::primitives::Rectangle;
 
-use crate::math::{mul_wide, NARROW_CORE, SUBPIXEL_SCALE};
+use crate::math::{mul_wide, narrow_cross, NARROW_CORE, SUBPIXEL_SCALE};
 
 /// The largest magnitude of a sub-pixel coordinate the rasterisers accept (2²⁴, a million
 /// pixels); anything further is rejected as a whole.
@@ -151,15 +151,6 @@ pub(crate) fn doubled_area(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i6
     }
     // On 32-bit cores, 32-bit factors: one widening multiply each (Cortex-M3/M4).
     mul_wide(ux, vy) - mul_wide(vx, uy)
-}
-
-/// `ux·vy − vx·uy` in 32-bit arithmetic when every factor lies in [−2¹⁵, 2¹⁵) (most triangles
-/// on screen): products within ±2³⁰, a difference within ±(2³¹ − 2¹⁵). For cores without a long
-/// multiply; `None` otherwise.
-#[inline(always)]
-fn narrow_cross(ux: i32, uy: i32, vx: i32, vy: i32) -> Option<i64> {
-    let short = |d: i32| (d.wrapping_add(1 << 15) as u32) < 1 << 16;
-    (short(ux) && short(uy) && short(vx) && short(vy)).then(|| (ux * vy - vx * uy) as i64)
 }
 
 /// The first pixel whose centre lies at or right of (below) sub-pixel coordinate `v`:
@@ -346,38 +337,6 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The 32-bit cross product (used where 64-bit products are library calls, so not on the
-    /// host) equals the 64-bit one wherever it answers, and answers for sides below 2¹⁵.
-    #[test]
-    fn narrow_cross_equals_wide() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = |bits: u64| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            ((x as i64) >> (64 - bits)) as i32
-        };
-        for i in 0..100_000 {
-            let bits = 10 + i % 8;
-            let (ux, uy, vx, vy) = (next(bits), next(bits), next(bits), next(bits));
-            let wide = ux as i64 * vy as i64 - vx as i64 * uy as i64;
-            let fits = [ux, uy, vx, vy].iter().all(|d| (-32768..32768).contains(d));
-            assert_eq!(narrow_cross(ux, uy, vx, vy), fits.then_some(wide));
-        }
-        // The extremes: the difference reaches ±(2³¹ − 2¹⁵) and still fits.
-        let extreme =
-            |a: i32, b: i32, c: i32, d: i32| Some(a as i64 * d as i64 - c as i64 * b as i64);
-        assert_eq!(
-            narrow_cross(-32768, 32767, -32768, -32768),
-            extreme(-32768, 32767, -32768, -32768)
-        );
-        assert_eq!(
-            narrow_cross(-32768, -32768, -32768, 32767),
-            extreme(-32768, -32768, -32768, 32767)
-        );
-        assert_eq!(narrow_cross(32768, 0, 0, 0), None);
-    }
 
     /// The division-free quotients (used where division is a library routine, so not on the
     /// host) equal floor division wherever they answer, and answer for quotients −1, 0, 1.
