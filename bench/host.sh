@@ -78,18 +78,22 @@ $timing
 
 ## Where the rest goes, and what would take it
 
-- **Spans and pixels** (the largest row above): every row of a triangle pays its edge
-  steppers, a bounds-checked row range, the depth plane at the span's first pixel (two 64-bit
-  products, library calls on Cortex-M0) and the loop's set-up, then a few instructions per
-  pixel. Stepping the span's first depth along the left edge in 32 bits would take most of
-  the per-row part.
-- **Per triangle** (set-up and flat shading): three or four edge steppers, the depth plane
-  (two divisions of 62-bit numerators: long library routines on Cortex-M0), the face normal,
-  its normalisation and Lambert (about thirty 64-bit products). One reciprocal of the doubled
-  area for both gradients, and face normals precomputed in flash, are the next steps; both
-  change rounding, so `docs/accuracy.md` has to show they lose nothing.
-- **Per vertex**: the transform (twelve 32x32→64 products) and the projection (the depth's
-  64-bit division; on Cortex-M0, x and y take a 32-bit division when they fit).
+- **Spans and pixels** (the largest row above): every row of a triangle steps its two edge
+  steppers and the depth at the left edge (one 64-bit addition: the plane's change for the
+  edge's step, or one pixel more), clips the span, finds the row in both buffers (one bounds
+  check) and sets up the pixel loop; then each pixel is a shift, a compare, two stores and
+  a count. The remaining per-row cost is mostly state that does
+  not fit in registers (two edges, the depth walk, the buffers, the counters).
+- **Per triangle** (set-up and flat shading): three edge steppers (two divisions each; by
+  comparisons when the quotient is -1, 0 or 1 on cores without a divider), the depth plane
+  (two divisions of 62-bit numerators; two 32-bit divisions each on 32-bit cores), the face
+  normal through the normal matrix, its normalisation and Lambert (some thirty 64-bit
+  products, library calls on Cortex-M0). Every step keeps the images bit-identical; what would go further (one reciprocal
+  of the doubled area for both gradients, lighting in 16-bit arithmetic, face normals
+  precomputed in flash) changes rounding, so \`docs/accuracy.md\` would have to show it loses
+  nothing.
+- **Per vertex**: the transform (twelve 32x32→64 products), then the outcode and the
+  projection from one reduction (two divisions for x and y, one for the depth).
 DOC
     echo "wrote docs/performance.md"
 fi
