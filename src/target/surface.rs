@@ -164,9 +164,13 @@ where
             // Spans lie in the clip rectangle, the buffers' extent (same size, exactly
             // width · height cells): the span's cells are x0..x1 of its row in both.
             let row = (span.y.wrapping_sub(first_row) as u32 as usize).wrapping_mul(width);
-            let (x0, x1) = (span.x0 as u32 as usize, span.x1 as u32 as usize);
-            let range = row.wrapping_add(x0)..row.wrapping_add(x1);
-            let (Some(cs), Some(ds)) = (colors.get_mut(range.clone()), depths.get_mut(range))
+            let first = row.wrapping_add(span.x0 as u32 as usize);
+            // x1 > x0: the length is positive; an end that would overflow is no span at all.
+            let len = span.x1.wrapping_sub(span.x0) as u32 as usize;
+            let Some(end) = first.checked_add(len) else {
+                return;
+            };
+            let (Some(cs), Some(ds)) = (colors.get_mut(first..end), depths.get_mut(first..end))
             else {
                 return;
             };
