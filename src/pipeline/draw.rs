@@ -8,7 +8,7 @@ use embedded_graphics::Pixel;
 
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
 use super::vertex::{project, ScreenMap};
-use super::{bump, Cull, Frame, Prepared, ScreenVertex, Stats};
+use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::math::{map3, Mat4};
 use crate::mesh::{Object, Triangle};
 use crate::raster::{line_pixels, triangle_spans, PixelRect, Plane, ScreenPoint};
@@ -145,8 +145,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let mut stats = Stats::default();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
         for setup in self.objects() {
-            for tri in setup.object.mesh.triangles() {
-                bump(&mut stats.primitives);
+            let triangles = setup.object.mesh.triangles();
+            // Counted once per object (an error returns no statistics at all).
+            add_count(&mut stats.primitives, triangles.len());
+            for tri in triangles {
                 let (Some(a), Some(b), Some(c)) = (
                     setup.vertices.get(tri[0] as usize),
                     setup.vertices.get(tri[1] as usize),
@@ -315,14 +317,15 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 target.draw_iter(pixels.map(|p| Pixel(p, color)))
             };
             if let Some(edges) = setup.object.mesh.edges() {
+                add_count(&mut stats.primitives, edges.len());
                 for e in edges {
-                    bump(&mut stats.primitives);
                     segment(e[0], e[1], &mut stats)?;
                 }
                 continue;
             }
-            for tri in setup.object.mesh.triangles() {
-                bump(&mut stats.primitives);
+            let triangles = setup.object.mesh.triangles();
+            add_count(&mut stats.primitives, triangles.len());
+            for tri in triangles {
                 let vs = tri.map(|i| setup.vertices.get(i as usize).copied());
                 let [Some(a), Some(b), Some(c)] = vs else {
                     bump(&mut stats.invalid);

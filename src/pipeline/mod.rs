@@ -74,6 +74,11 @@ fn bump(c: &mut u32) {
     *c = c.saturating_add(1);
 }
 
+/// Adds `n` to a statistic, saturating.
+fn add_count(c: &mut u32, n: usize) {
+    *c = c.saturating_add(u32::try_from(n).unwrap_or(u32::MAX));
+}
+
 /// Why a frame could not be prepared.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
