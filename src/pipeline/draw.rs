@@ -11,7 +11,7 @@ use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::math::{map3, Mat4};
 use crate::mesh::{Object, Triangle};
-use crate::raster::{line_pixels, triangle_spans, PixelRect, Plane, ScreenPoint};
+use crate::raster::{line_pixels, spans_in_range, PixelRect, Plane, ScreenPoint};
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
 use crate::target::{DepthPlane, RasterTarget};
 
@@ -115,7 +115,7 @@ fn fill<T: RasterTarget, P: Paint>(
     } else {
         DepthPlane::default()
     };
-    target.fill_triangle(triangle_spans(p, clip), &plane, paint, stats)
+    target.fill_triangle(spans_in_range(p, clip), &plane, paint, stats)
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {

@@ -27,6 +27,7 @@ mod triangle;
 
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::Plane;
+pub(crate) use triangle::spans_in_range;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
 use embedded_graphics::primitives::Rectangle;

@@ -60,18 +60,17 @@ pub struct TriangleSpans {
 /// ```
 #[must_use]
 pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
-    let empty = || TriangleSpans {
-        v,
-        y: 0,
-        y_end: 0,
-        y_split: 0,
-        left: CeilStepper::ZERO,
-        right: CeilStepper::ZERO,
-        long_is_left: true,
-        x_min: 0,
-        x_max: 0,
-    };
-    if !v.iter().all(|p| p.in_range()) || clip.is_empty() {
+    if !v.iter().all(|p| p.in_range()) {
+        return TriangleSpans::empty(v);
+    }
+    spans_in_range(v, clip)
+}
+
+/// [`triangle_spans`] of points already known to lie within ±[`COORD_LIMIT`](super::COORD_LIMIT)
+/// (the pipeline's projected vertices lie within ±2¹⁵).
+pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
+    let empty = || TriangleSpans::empty(v);
+    if clip.is_empty() {
         return empty();
     }
     let [a, b, c] = sort_by_y(v);
@@ -158,6 +157,21 @@ fn sort_by_y(v: [ScreenPoint; 3]) -> [ScreenPoint; 3] {
 }
 
 impl TriangleSpans {
+    /// Spans of nothing.
+    fn empty(v: [ScreenPoint; 3]) -> Self {
+        TriangleSpans {
+            v,
+            y: 0,
+            y_end: 0,
+            y_split: 0,
+            left: CeilStepper::ZERO,
+            right: CeilStepper::ZERO,
+            long_is_left: true,
+            x_min: 0,
+            x_max: 0,
+        }
+    }
+
     /// Switches the short edge to the lower one at the middle vertex's row; true if the left
     /// edge changed.
     #[inline(always)]
