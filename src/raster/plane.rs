@@ -24,6 +24,7 @@ pub(crate) struct Plane {
 impl Plane {
     /// The plane through `(p[i], v[i])`; `area2` is the triangle's doubled signed area
     /// `(x1−x0)(y2−y0) − (x2−x0)(y1−y0)`, non-zero.
+    #[inline]
     pub(crate) fn new(p: &[ScreenPoint; 3], v: [i64; 3], area2: i64) -> Plane {
         let [a, b, c] = *p;
         let (dx1, dy1) = (b.x as i64 - a.x as i64, b.y as i64 - a.y as i64);
