@@ -51,6 +51,7 @@ pub struct FaceInputs<'a> {
 
 impl FaceInputs<'_> {
     /// Model-space positions of the three vertices (raw Q16.16).
+    #[inline]
     fn model(&self) -> [[i32; 3]; 3] {
         map3(*self.indices, |i| {
             let p = self.positions.get(i as usize).copied();
