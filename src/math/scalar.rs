@@ -106,31 +106,31 @@ const fn div_u64_u32(n: u64, d: u32) -> u32 {
     let un = n << s;
     let (un32, un10) = ((un >> 32) as u32, un as u32);
     let (un1, un0) = (un10 >> 16, un10 & 0xFFFF);
-    // Each digit: estimate from the top 32 bits by the top 16 of the divisor, then correct
-    // (at most twice). Every product and sum below stays within 32 bits.
-    let mut q1 = un32 / vn1;
-    let mut rhat = un32 - q1 * vn1;
-    while q1 >= B || q1 * vn0 > B * rhat + un1 {
-        q1 -= 1;
-        rhat += vn1;
-        if rhat >= B {
-            break;
-        }
-    }
+    let q1 = quotient_digit(un32, un1, vn1, vn0);
     let un21 = un32
         .wrapping_mul(B)
         .wrapping_add(un1)
         .wrapping_sub(q1.wrapping_mul(v));
-    let mut q0 = un21 / vn1;
-    let mut rhat = un21 - q0 * vn1;
-    while q0 >= B || q0 * vn0 > B * rhat + un0 {
-        q0 -= 1;
+    let q0 = quotient_digit(un21, un0, vn1, vn0);
+    q1 * B + q0
+}
+
+/// One 16-bit digit of `(top · 2¹⁶ + next) / v`, `v = vn1 · 2¹⁶ + vn0` normalised (top bit
+/// set), `top < v`: estimated from the top 32 bits by the divisor's top 16, then corrected
+/// (at most twice). Every product and sum stays within 32 bits.
+#[inline(always)]
+const fn quotient_digit(top: u32, next: u32, vn1: u32, vn0: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let mut q = top / vn1;
+    let mut rhat = top - q * vn1;
+    while q >= B || q * vn0 > B * rhat + next {
+        q -= 1;
         rhat += vn1;
         if rhat >= B {
             break;
         }
     }
-    q1 * B + q0
+    q
 }
 
 /// [`div_round`] by [`div_u64_u32`], when `d` fits 32 bits and the quotient too.
