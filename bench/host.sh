@@ -25,7 +25,7 @@ ir() { # inclusive instructions of the first function whose name ends with $1
 }
 draw=$(ir "torus_bench::draw_scene"); clear=$(ir "torus_bench::clear_buffers")
 prepare=$(ir "pipeline::Frame::prepare"); walk=$(ir "Prepared<_,S>>::draw"); face=$(ir "Prepared<_,S>>::fill_face")
-fill=$(ir "pipeline::draw::fill"); spans=$(ir "raster::triangle::triangle_spans"); plane=$(ir "raster::plane::Plane::new")
+fill=$(ir "pipeline::draw::fill"); spans=$(ir "raster::triangle::spans_in_range"); plane=$(ir "raster::plane::Plane::new")
 normal=$(ir "shade::lambert::face_normal"); lambert=$(ir "shade::lambert::lambert")
 timing=$(target/release/examples/torus_bench 200)
 report=$(awk -v d="$draw" -v c="$clear" -v n="$frames" -v px="$covered" -v pr="${prepare:-0}" -v wk="${walk:-0}" \
@@ -36,8 +36,8 @@ report=$(awk -v d="$draw" -v c="$clear" -v n="$frames" -v px="$covered" -v pr="$
     row("vertex stage (transform, outcodes, projection), once per vertex", pr);
     row("triangle walk (fetch, trivial reject, culling, clipping)", wk - fc);
     row("flat shading per triangle (face normal, Lambert)", nm + lb);
-    row("triangle set-up (edge steppers, depth plane)", sp + pl);
-    row("spans and pixels (edge stepping, depth test, writes)", fl - sp - pl);
+    row("span set-up (sorting, edge steppers)", sp + pl);
+    row("depth plane set-up, spans and pixels (edge stepping, depth test, writes)", fl - sp - pl);
     row("other per-triangle work", fc - fl - nm - lb);
     row("rest of draw_scene", d - pr - wk);
 }
