@@ -11,7 +11,7 @@
 //! with an integer quotient and remainder, so no precision is lost however long the edge.
 
 use super::{doubled_area, first_centre_from, CeilStepper, PixelRect, Plane, ScreenPoint};
-use crate::math::{NARROW_CORE, SUBPIXEL_SCALE};
+use crate::math::{NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -125,7 +125,7 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
     let x = p.x as i64 - HALF;
     let t = S * py + HALF - p.y as i64;
     let (k, n0) = if NARROW_CORE {
-        let (k, m) = (x >> 4, x & (S - 1));
+        let (k, m) = (x >> SUBPIXEL_BITS, x & (S - 1));
         // Started within its top pixel (0 ≤ t < 16, the usual case) both products are below
         // 2²⁹ (sides below 2²⁵): 32-bit, where a 64-bit product is a library call.
         let n0 = if (0..S).contains(&t) {
