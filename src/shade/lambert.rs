@@ -39,7 +39,9 @@ pub(crate) fn lambert<const N: usize>(
 fn shrink(v: [i64; 3]) -> [i64; 3] {
     // The common case, found by comparisons (counting bits is a library call on Cortex-M0).
     const LIMIT: i64 = 1 << 30;
-    if v.iter().all(|c| -LIMIT < *c && *c < LIMIT) {
+    // −2³⁰ < c < 2³⁰, as one unsigned comparison.
+    let small = |c: i64| (c.wrapping_add(LIMIT - 1) as u64) < (2 * LIMIT - 1) as u64;
+    if small(v[0]) && small(v[1]) && small(v[2]) {
         return v;
     }
     let bits = magnitude_bits(&v);
@@ -105,6 +107,35 @@ mod tests {
 
     fn to_f(v: [i32; 3]) -> [f64; 3] {
         v.map(|c| c as f64 / (1u64 << 30) as f64)
+    }
+
+    /// `shrink` leaves vectors below 2³⁰ alone and brings larger ones below it, at the
+    /// boundaries and the ends of the range.
+    #[test]
+    fn shrink_boundaries() {
+        let edges = [
+            i64::MIN,
+            -(1 << 30) - 1,
+            -(1 << 30),
+            -(1 << 30) + 1,
+            -1,
+            0,
+            1,
+        ];
+        let values = edges.iter().flat_map(|&e| [e, e.saturating_neg()]);
+        for a in values.clone() {
+            for b in values.clone() {
+                let v = [a, b, 7];
+                let s = shrink(v);
+                assert!(
+                    s.iter().all(|c| c.unsigned_abs() <= 1 << 30),
+                    "{v:?} -> {s:?}"
+                );
+                if v.iter().all(|c| c.unsigned_abs() < 1 << 30) {
+                    assert_eq!(s, v);
+                }
+            }
+        }
     }
 
     /// T33: face normals of triangles with edges from 1e-4 to 1e3 world units: no panic, the

@@ -1,0 +1,172 @@
+#!/usr/bin/env python3
+"""Where a firmware preset's instructions go on an emulated Cortex-M core.
+
+    python3 bench/mcu/profile.py [PRESET] [TARGET] [LINES]
+    (defaults: full thumbv6m-none-eabi 40)
+
+Builds the preset with line tables (the same code: debug information changes no instruction),
+runs it under QEMU logging every translated block and every block executed, and prints, per
+drawn frame: instructions by function, the library calls (64-bit multiply and division, bit
+counting, shifts) by the source line that makes them, and the busiest source lines. The
+harness's own work (clears, hashing, calibration, building the mesh) is left out, so the total
+is close to, not equal to, the `instructions_per_frame` that `run.sh` measures.
+The log is large (about 1.5 GB for `full` on the M0) and is deleted afterwards.
+"""
+
+import bisect
+import collections
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+# Frames the firmware draws: FRAMES measured ones and one more for the stack measurement.
+FRAMES_DRAWN = 5
+# Harness functions (whole symbols) left out of the profile.
+HARNESS = ("mcu_bench::run_each", "mcu_bench::spin", "mcu_bench::Meter", "mcu_bench::stack",
+           "torus_mesh", "__aeabi_memset", "__aeabi_memclr", "memset", "Reset", "frame_hash")
+LIBRARY = re.compile(r"^(__aeabi_|__clz|__udiv|__div|__mul|compiler_builtins)|div_rem")
+
+
+def machine(target):
+    return "mps2-an385" if target.startswith("thumbv6m") else "mps2-an386"
+
+
+def build(preset, target, target_dir):
+    env = dict(os.environ, CARGO_PROFILE_RELEASE_S_DEBUG="line-tables-only")
+    features = ["--features", "micromath"] if preset == "knobs" else []
+    subprocess.run(["cargo", "build", "--quiet", "--profile", "release-s", "--target", target,
+                    "--target-dir", target_dir, "--bin", preset] + features,
+                   cwd=HERE, env=env, check=True)
+    return os.path.join(target_dir, target, "release-s", preset)
+
+
+def trace(binary, target, log):
+    out = subprocess.run(["qemu-system-arm", "-M", machine(target), "-nographic",
+                          "-semihosting-config", "enable=on,target=native", "-icount", "shift=10",
+                          "-d", "in_asm,exec,nochain", "-D", log, "-kernel", binary],
+                         stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=900)
+    return out.stdout.strip().splitlines()[-1:] if out.stdout else []
+
+
+def executed(log, is_call):
+    """Instructions executed per address, and library calls counted by calling block: a block
+    of a library routine entered from a block that `is_call(previous, pc)` accepts."""
+    blocks, current, addrs = {}, None, []
+    runs = collections.Counter()
+    calls = collections.Counter()
+    previous = None
+    with open(log, "rb") as f:
+        for line in f:
+            if line.startswith(b"IN:"):
+                current, addrs = None, []
+            elif line.startswith(b"0x") and b":  " in line:
+                a = int(line[:10], 16)
+                if current is None:
+                    current = a
+                addrs.append(a)
+            elif line.startswith(b"Trace"):
+                if current is not None:
+                    blocks[current], current = addrs, None
+                pc = int(line.split(b"/")[1], 16)
+                runs[pc] += 1
+                if previous is not None and is_call(previous, pc):
+                    calls[(pc, previous)] += 1
+                previous = pc
+    count = collections.Counter()
+    for pc, n in runs.items():
+        for a in blocks.get(pc, ()):
+            count[a] += n
+    return count, calls
+
+
+def symbols(binary):
+    table = []
+    nm = subprocess.run(["nm", "-C", "-n", binary], capture_output=True, text=True).stdout
+    for line in nm.splitlines():
+        parts = line.split(" ", 2)
+        if len(parts) == 3 and parts[1] in "tT" and not parts[2].startswith("$"):
+            table.append((int(parts[0], 16) & ~1, parts[2]))
+    starts = [s for s, _ in table]
+
+    def of(address):
+        i = bisect.bisect_right(starts, address) - 1
+        return table[i][1] if i >= 0 else "?"
+    return of
+
+
+def lines(binary, addresses):
+    """The source line of each address: the innermost one in this repository's code (inlined
+    library code counts where the crate's code used it), else the innermost one."""
+    out = subprocess.run(["addr2line", "-a", "-i", "-e", binary] + [hex(a) for a in addresses],
+                         capture_output=True, text=True).stdout.splitlines()
+    short = lambda l: "/".join(l.split(" (")[0].split("/")[-3:])
+    ours = lambda l: "/rustc/" not in l and "/.cargo/" not in l and "??" not in l
+    found, chain, current = {}, [], None
+
+    def close():
+        if current is not None:
+            mine = [l for l in chain if ours(l)]
+            found[current] = short((mine or chain or ["?"])[0])
+    for line in out:
+        if line.startswith("0x"):
+            close()
+            current, chain = int(line, 16), []
+        else:
+            chain.append(line)
+    close()
+    return found
+
+
+def main():
+    preset = sys.argv[1] if len(sys.argv) > 1 else "full"
+    target = sys.argv[2] if len(sys.argv) > 2 else "thumbv6m-none-eabi"
+    top = int(sys.argv[3]) if len(sys.argv) > 3 else 40
+    binary = build(preset, target, os.path.join(HERE, "target", "profile"))
+    symbol = symbols(binary)
+    names = {}
+
+    def name_of(pc):
+        if pc not in names:
+            names[pc] = symbol(pc)
+        return names[pc]
+
+    harness = lambda name: any(h in name for h in HARNESS)
+    library = lambda pc: LIBRARY.search(name_of(pc)) is not None
+
+    def is_call(previous, pc):
+        return library(pc) and not library(previous) and not harness(name_of(previous))
+
+    with tempfile.TemporaryDirectory() as tmp:
+        log = os.path.join(tmp, "qemu.log")
+        result = trace(binary, target, log)
+        count, raw_calls = executed(log, is_call)
+    kept = {a: n for a, n in count.items() if not harness(symbol(a))}
+    where = lines(binary, sorted(kept))
+    per = lambda n: n / FRAMES_DRAWN
+    by_function = collections.Counter()
+    by_line = collections.Counter()
+    for a, n in kept.items():
+        by_function[symbol(a)] += n
+        by_line[where[a]] += n
+    caller_line = lines(binary, sorted({p for _, p in raw_calls}))
+    calls = collections.Counter()
+    for (pc, previous), n in raw_calls.items():
+        calls[(name_of(pc), caller_line.get(previous, "?"))] += n
+    print(f"{preset} on {target} ({machine(target)}): {' '.join(result)}")
+    print(f"traced instructions per drawn frame, harness left out: {per(sum(kept.values())):,.0f}\n")
+    print("by function:")
+    for name, n in by_function.most_common(15):
+        print(f"  {per(n):>11,.0f}  {name[:100]}")
+    print("\nlibrary calls per frame, by the line that makes them (first block of a call):")
+    for (name, line), n in calls.most_common(top):
+        print(f"  {per(n):>8,.0f}  {name[:40]:40}  {line}")
+    print("\nbusiest source lines (inlined code counts where it was written):")
+    for line, n in by_line.most_common(top):
+        print(f"  {per(n):>11,.0f}  {line}")
+
+
+if __name__ == "__main__":
+    main()
