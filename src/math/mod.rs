@@ -20,8 +20,8 @@ pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
 pub(crate) use scalar::{
-    div_round, magnitude_bits, map3, mul_wide, narrow_cross, shr_round, DEPTH_ONE, NARROW_CORE,
-    UNIT_ONE,
+    below_bits, div_round, magnitude_bits, map3, mul_wide, narrow_cross, shr_round, DEPTH_ONE,
+    NARROW_CORE, UNIT_ONE,
 };
 
 pub(crate) use sqrt::isqrt_u64;

@@ -77,6 +77,14 @@ pub(crate) const NARROW_CORE: bool = cfg!(all(
     not(target_has_atomic = "32")
 ));
 
+/// True for `−2^bits < v < 2^bits` (`bits` < 63), by one unsigned comparison: on 32-bit cores a
+/// 64-bit comparison is several instructions, and range checks of whole vectors are hot.
+#[inline(always)]
+pub(crate) const fn below_bits(v: i64, bits: u32) -> bool {
+    let limit = 1u64 << bits;
+    (v as u64).wrapping_add(limit - 1) < 2 * limit - 1
+}
+
 /// True for `d` in [−2¹⁵, 2¹⁵): two such factors make a 32-bit product within ±2³⁰, and the
 /// difference of two such products still fits 32 bits.
 #[inline(always)]
@@ -191,6 +199,33 @@ mod tests {
             }
         }
         assert!(checked > 50_000);
+    }
+
+    /// `below_bits` is the open interval's test, at its ends and the ends of the range.
+    #[test]
+    fn below_bits_is_the_open_interval() {
+        for bits in [0u32, 1, 15, 30, 31, 62] {
+            let l = 1i64 << bits;
+            for v in [
+                i64::MIN,
+                -l - 1,
+                -l,
+                -l + 1,
+                -1,
+                0,
+                1,
+                l - 1,
+                l,
+                l + 1,
+                i64::MAX,
+            ] {
+                assert_eq!(
+                    below_bits(v, bits),
+                    -l < v && v < l,
+                    "{v} within {bits} bits"
+                );
+            }
+        }
     }
 
     /// The two-digit 64/32 division gives the 64-bit quotient wherever it applies: divisors

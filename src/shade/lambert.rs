@@ -4,7 +4,9 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 #[cfg(test)]
 use crate::math::normalize;
-use crate::math::{cross_wide, dot_unit, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE};
+use crate::math::{
+    below_bits, cross_wide, dot_unit, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE,
+};
 use crate::scene::Lighting;
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
@@ -38,10 +40,7 @@ pub(crate) fn lambert<const N: usize>(
 /// headroom for one more product with Q16.16 before normalising.
 fn shrink(v: [i64; 3]) -> [i64; 3] {
     // The common case, found by comparisons (counting bits is a library call on Cortex-M0).
-    const LIMIT: i64 = 1 << 30;
-    // −2³⁰ < c < 2³⁰, as one unsigned comparison.
-    let small = |c: i64| (c.wrapping_add(LIMIT - 1) as u64) < (2 * LIMIT - 1) as u64;
-    if small(v[0]) && small(v[1]) && small(v[2]) {
+    if below_bits(v[0], 30) && below_bits(v[1], 30) && below_bits(v[2], 30) {
         return v;
     }
     let bits = magnitude_bits(&v);
