@@ -7,9 +7,10 @@
 Builds the preset with line tables (the same code: debug information changes no instruction),
 runs it under QEMU logging every translated block and every block executed, and prints, per
 drawn frame: instructions by function, the library calls (64-bit multiply and division, bit
-counting, shifts) by the source line that makes them, and the busiest source lines. The
-harness's own work (clears, hashing, calibration, building the mesh) is left out, so the total
-is close to, not equal to, the `instructions_per_frame` that `run.sh` measures.
+counting, shifts) by the source line that makes them, and the busiest source lines. Everything
+the firmware executes is traced, the harness's work too (clears, hashing, calibration,
+building the mesh at start-up, spread over the frames): functions of the harness are marked,
+and code the compiler inlined into them counts as theirs.
 The log is large (about 1.5 GB for `full` on the M0) and is deleted afterwards.
 """
 
@@ -24,7 +25,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 # Frames the firmware draws: FRAMES measured ones and one more for the stack measurement.
 FRAMES_DRAWN = 5
-# Harness functions (whole symbols) left out of the profile.
+# Harness functions (whole symbols), marked in the profile.
 HARNESS = ("mcu_bench::run_each", "mcu_bench::spin", "mcu_bench::Meter", "mcu_bench::stack",
            "torus_mesh", "__aeabi_memset", "__aeabi_memclr", "memset", "Reset", "frame_hash")
 LIBRARY = re.compile(r"^(__aeabi_|__clz|__udiv|__div|__mul|compiler_builtins)|div_rem")
@@ -143,7 +144,7 @@ def main():
         log = os.path.join(tmp, "qemu.log")
         result = trace(binary, target, log)
         count, raw_calls = executed(log, is_call)
-    kept = {a: n for a, n in count.items() if not harness(symbol(a))}
+    kept = dict(count)
     where = lines(binary, sorted(kept))
     per = lambda n: n / FRAMES_DRAWN
     by_function = collections.Counter()
@@ -156,10 +157,11 @@ def main():
     for (pc, previous), n in raw_calls.items():
         calls[(name_of(pc), caller_line.get(previous, "?"))] += n
     print(f"{preset} on {target} ({machine(target)}): {' '.join(result)}")
-    print(f"traced instructions per drawn frame, harness left out: {per(sum(kept.values())):,.0f}\n")
+    print(f"traced instructions per drawn frame, harness included: {per(sum(kept.values())):,.0f}\n")
     print("by function:")
-    for name, n in by_function.most_common(15):
-        print(f"  {per(n):>11,.0f}  {name[:100]}")
+    for name, n in by_function.most_common(18):
+        mark = "  (harness)" if harness(name) else ""
+        print(f"  {per(n):>11,.0f}  {name[:100]}{mark}")
     print("\nlibrary calls per frame, by the line that makes them (first block of a call):")
     for (name, line), n in calls.most_common(top):
         print(f"  {per(n):>8,.0f}  {name[:40]:40}  {line}")
