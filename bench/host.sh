@@ -94,6 +94,10 @@ $timing
   nothing.
 - **Per vertex**: the transform (twelve 32x32→64 products), then the outcode and the
   projection from one reduction (two divisions for x and y, one for the depth).
+- **On Cortex-M**, \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or
+  \`thumbv7em-none-eabihf\`) lists the instructions by function and the library calls by the
+  line that makes them: on Cortex-M0 the 32-bit software divisions and \`__aeabi_lmul\` are the
+  largest single costs.
 DOC
     echo "wrote docs/performance.md"
 fi
