@@ -15,6 +15,9 @@
 #[cfg(test)]
 extern crate std;
 
+#[cfg(test)]
+mod testing;
+
 pub mod camera;
 pub mod math;
 pub mod mesh;

@@ -144,20 +144,19 @@ def main():
         log = os.path.join(tmp, "qemu.log")
         result = trace(binary, target, log)
         count, raw_calls = executed(log, is_call)
-    kept = dict(count)
-    where = lines(binary, sorted(kept))
+    where = lines(binary, sorted(count))
     per = lambda n: n / FRAMES_DRAWN
     by_function = collections.Counter()
     by_line = collections.Counter()
-    for a, n in kept.items():
-        by_function[symbol(a)] += n
+    for a, n in count.items():
+        by_function[name_of(a)] += n
         by_line[where[a]] += n
     caller_line = lines(binary, sorted({p for _, p in raw_calls}))
     calls = collections.Counter()
     for (pc, previous), n in raw_calls.items():
         calls[(name_of(pc), caller_line.get(previous, "?"))] += n
     print(f"{preset} on {target} ({machine(target)}): {' '.join(result)}")
-    print(f"traced instructions per drawn frame, harness included: {per(sum(kept.values())):,.0f}\n")
+    print(f"traced instructions per drawn frame, harness included: {per(sum(count.values())):,.0f}\n")
     print("by function:")
     for name, n in by_function.most_common(18):
         mark = "  (harness)" if harness(name) else ""

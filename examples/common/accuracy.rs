@@ -22,7 +22,9 @@ use std::time::Instant;
 
 use crate::desktop::Model;
 use crate::exact::model_triangle;
-use crate::reference::{apply4, clip_near_far, cross, dot, mul4, norm, sub, Camera, V3};
+use crate::reference::{
+    apply4, clip_near_far, cross, dot, inside_distance, mul4, norm, polygon_area, sub, Camera, V3,
+};
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Trig, Vec3};
@@ -630,12 +632,7 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
                 ]
             })
             .collect();
-        let area: f64 = (0..s.len())
-            .map(|i| {
-                let (a, b) = (s[i], s[(i + 1) % s.len()]);
-                a[0] * b[1] - b[0] * a[1]
-            })
-            .sum();
+        let area = polygon_area(&s);
         // Moving each vertex by `tol` changes the doubled area by at most `tol` times the
         // perimeter (to first order): a polygon within twice that may face either way.
         let perimeter: f64 = (0..s.len())
@@ -683,15 +680,7 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
             for px in x0..x1 {
                 let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
                 // Signed distance inside the convex polygon (front faces wind negatively).
-                let mut dist = f64::INFINITY;
-                for i in 0..s.len() {
-                    let (a, b) = (s[i], s[(i + 1) % s.len()]);
-                    let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
-                    let len = (ex * ex + ey * ey).sqrt();
-                    if len > 0.0 {
-                        dist = dist.min(-orient * (ex * (y - a[1]) - ey * (x - a[0])) / len);
-                    }
-                }
+                let dist = inside_distance(&s, -orient, x, y);
                 let pix = &mut pixels[py * w + px];
                 if cut && dist >= -tol - 1.0 {
                     pix.clipped = true;

@@ -157,13 +157,29 @@ pub enum Cover {
 }
 
 /// Signed area of a polygon (y down; negative = front face, counter-clockwise in world).
-pub fn polygon_area(p: &[[f64; 3]]) -> f64 {
+pub fn polygon_area<const N: usize>(p: &[[f64; N]]) -> f64 {
     let mut a = 0.0;
     for i in 0..p.len() {
         let (u, v) = (p[i], p[(i + 1) % p.len()]);
         a += u[0] * v[1] - v[0] * u[1];
     }
     a
+}
+
+/// How far `(x, y)` lies inside a convex polygon whose doubled area has sign `sign` (x, y in
+/// the first two coordinates of each vertex): the distance to the nearest edge line, negative
+/// outside.
+pub fn inside_distance<const N: usize>(poly: &[[f64; N]], sign: f64, x: f64, y: f64) -> f64 {
+    let mut min_d = f64::INFINITY;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+        let len = (ex * ex + ey * ey).sqrt();
+        if len > 0.0 {
+            min_d = min_d.min(sign * (ex * (y - a[1]) - ey * (x - a[0])) / len);
+        }
+    }
+    min_d
 }
 
 /// Classifies the centre of pixel (px, py) against a convex polygon.
@@ -175,20 +191,7 @@ pub fn classify(poly: &[[f64; 3]], px: i32, py: i32, tol: f64) -> Cover {
     if area == 0.0 {
         return Cover::None;
     }
-    let s = area.signum();
-    let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
-    let mut min_d = f64::INFINITY;
-    for i in 0..poly.len() {
-        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
-        let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
-        let len = (ex * ex + ey * ey).sqrt();
-        if len == 0.0 {
-            continue;
-        }
-        // Positive inside for s > 0 orientation.
-        let d = s * (ex * (y - a[1]) - ey * (x - a[0])) / len;
-        min_d = min_d.min(d);
-    }
+    let min_d = inside_distance(poly, area.signum(), px as f64 + 0.5, py as f64 + 0.5);
     if min_d > tol {
         Cover::Full
     } else if min_d < -tol {

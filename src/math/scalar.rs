@@ -184,12 +184,10 @@ mod tests {
     /// The 32-bit division path gives the 64-bit path's quotient wherever it applies.
     #[test]
     fn div_round_32_bit_path_is_exact() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let mut checked = 0;
         for _ in 0..200_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             let n = (x as i64) >> (31 + x % 33);
             let d = ((x >> 20) as i64 & 0xFFFF_FFFF) >> ((x >> 8) % 32);
             if let Some(q) = div_round_u32(n, d) {
@@ -233,12 +231,10 @@ mod tests {
     /// estimates that need their corrections.
     #[test]
     fn div_round_64_by_32_bit_path_is_exact() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let mut checked = 0;
         for i in 0..400_000u32 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             let d = ((x >> 32) as u32 >> (i % 32)).max(1) as i64;
             let n = ((x as i64) >> (x % 40))
                 .wrapping_mul(d >> (i % 7))
@@ -263,9 +259,7 @@ mod tests {
         }
         // Quotients of every size below 2³², remainders of every size below d.
         for _ in 0..200_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             let d = ((x >> 32) as u32 >> (x % 32)).max(1);
             let q = (x as u32) >> ((x >> 5) % 32);
             let r = ((x >> 16) as u32) % d;
@@ -279,11 +273,9 @@ mod tests {
     /// host) equals the 64-bit one wherever it answers, and answers for sides below 2¹⁵.
     #[test]
     fn narrow_cross_equals_wide() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let mut next = |bits: u64| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             ((x as i64) >> (64 - bits)) as i32
         };
         for i in 0..100_000 {

@@ -75,11 +75,9 @@ mod tests {
                 "n = {n}"
             );
         }
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         for _ in 0..10_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             let r = isqrt_u64(x) as u128;
             assert!(r * r <= x as u128 && (r + 1) * (r + 1) > x as u128);
         }

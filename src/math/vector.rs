@@ -243,11 +243,9 @@ mod tests {
 
     #[test]
     fn fast_normalize_agrees() {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         for _ in 0..20_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             let scale = (x >> 58) as u32;
             let v = [
                 (x as i16) as i64,

@@ -300,11 +300,9 @@ mod tests {
 
     #[test]
     fn random_decimals_round_like_f64() {
-        let mut x = 0x1234_5678_9abc_def0u64;
+        let mut rng = crate::testing::XorShift(0x1234_5678_9abc_def0u64);
         for _ in 0..20_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             let v = ((x >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 60000.0;
             let s = format!("{v:.6}");
             let exact: f64 = s.parse().unwrap_or(0.0);

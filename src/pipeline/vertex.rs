@@ -148,7 +148,8 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 }
 
 /// The vertex stage's hot path: the planes a clip-space vertex is outside of (one bit each,
-/// in [`distance`]'s order) and, when there are none, its [`project`]ion (the reduction and the viewport products done once for both).
+/// in [`distance`]'s order) and, when there are none, its [`project`]ion; the reduction and
+/// the viewport products are done once for both.
 #[inline]
 pub(crate) fn outcode_and_project(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoint, i32) {
     let [x, y, z, w] = reduce(c);
@@ -192,13 +193,11 @@ mod tests {
             &Viewport::new(320, 240).unwrap_or_else(|_| unreachable!()),
             &Precision::DEFAULT,
         );
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         for _ in 0..100_000 {
             let mut c = [0i64; 4];
             for v in &mut c {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
+                let x = rng.next_u64();
                 *v = (x as i64) >> (x % 60);
             }
             let r = reduce(c);

@@ -196,7 +196,7 @@ impl TriangleSpans {
     /// [`Plane::at`]). The value is walked down the left edge: per row one addition of one of
     /// the two steps the edge can take, instead of two 64-bit products.
     #[inline(always)]
-    pub(crate) fn for_each_on(mut self, plane: &Plane, mut f: impl FnMut(Span, i64)) {
+    pub(crate) fn for_each_with_plane(mut self, plane: &Plane, mut f: impl FnMut(Span, i64)) {
         let (gx, gy) = plane.pixel_steps();
         // The plane at the left edge's pixel, and its change to the next row's: down one row
         // and right by the edge's step, or by one pixel more.
@@ -260,16 +260,14 @@ mod tests {
     use super::*;
     use std::vec::Vec;
 
-    /// `for_each_on` visits the spans the iterator yields, with the plane at each first pixel
-    /// exactly as `Plane::at` computes it: triangles of every shape, partly off every side of
+    /// `for_each_with_plane` visits the spans the iterator yields, with the plane at each
+    /// first pixel exactly as `Plane::at` computes it: triangles of every shape, partly off every side of
     /// the clip rectangle, steep and flat gradients.
     #[test]
     fn walked_plane_equals_plane_at_every_span() {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let mut next = |range: i32| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next_u64();
             (x % (2 * range as u64 + 1)) as i32 - range
         };
         let clip = PixelRect::new(3, 5, 60, 44);
@@ -288,7 +286,7 @@ mod tests {
                 .map(|s| (s, plane.at(s.x0, s.y)))
                 .collect();
             let mut walked = Vec::new();
-            triangle_spans(p, clip).for_each_on(&plane, |s, v| walked.push((s, v)));
+            triangle_spans(p, clip).for_each_with_plane(&plane, |s, v| walked.push((s, v)));
             assert_eq!(walked, expected, "{p:?}");
             spans_seen += walked.len();
         }

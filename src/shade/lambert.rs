@@ -192,11 +192,9 @@ mod tests {
             ))
             .unwrap();
         let base = Rgb888::new(255, 160, 64);
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
+            let state = rng.next_u64();
             (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
         };
         let ll = (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]).sqrt();

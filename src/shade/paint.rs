@@ -38,6 +38,13 @@ const FRAC: u32 = 36;
 /// Vertex colours arrive with this many fraction bits (0..=255 << 8).
 pub(crate) const RGB_FRAC: u32 = 8;
 
+/// Per channel, the smallest and largest of the three vertex values `channel(k)`.
+fn channel_ranges(channel: impl Fn(usize) -> [i64; 3]) -> ([i64; 3], [i64; 3]) {
+    let lo = [0, 1, 2].map(|k| channel(k).into_iter().min().unwrap_or(0));
+    let hi = [0, 1, 2].map(|k| channel(k).into_iter().max().unwrap_or(0));
+    (lo, hi)
+}
+
 /// Vertex colours interpolated across the triangle, each channel clamped to the range of its
 /// vertex values (so every pixel is a convex combination, rule R8).
 #[derive(Clone, Copy, Debug)]
@@ -53,8 +60,7 @@ impl SmoothPaint {
         let scaled =
             |k: usize| rgb.map(|c| (c.get(k).copied().unwrap_or(0) as i64) << (FRAC - RGB_FRAC));
         let planes = [0, 1, 2].map(|k| Plane::new(p, scaled(k), area2));
-        let lo = [0, 1, 2].map(|k| scaled(k).into_iter().min().unwrap_or(0));
-        let hi = [0, 1, 2].map(|k| scaled(k).into_iter().max().unwrap_or(0));
+        let (lo, hi) = channel_ranges(scaled);
         SmoothPaint { planes, lo, hi }
     }
 }
@@ -143,8 +149,7 @@ impl PerspectivePaint {
             Plane::new(p, num(2), area2),
             Plane::new(p, den, area2),
         ];
-        let lo = [0, 1, 2].map(|k| channel(k).into_iter().min().unwrap_or(0));
-        let hi = [0, 1, 2].map(|k| channel(k).into_iter().max().unwrap_or(0));
+        let (lo, hi) = channel_ranges(channel);
         PerspectivePaint { planes, lo, hi }
     }
 }

@@ -140,36 +140,39 @@ impl DepthFormat for u16 {
         start: i64,
         st: i32,
         test: DepthTest,
-        mut next_color: impl FnMut() -> C,
+        next_color: impl FnMut() -> C,
     ) -> u32 {
         // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
-        let mut acc = (start.wrapping_add(1 << 27) >> 13) as i32;
-        let mut written = 0;
-        if test == DepthTest::Less {
-            for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
-                let z = (acc >> 15) as u16;
-                acc = acc.wrapping_add(st);
-                let color = next_color();
-                if z < *d {
-                    *d = z;
-                    *c = color;
-                    written += 1;
-                }
-            }
-        } else {
-            for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
-                let z = (acc >> 15) as u16;
-                acc = acc.wrapping_add(st);
-                let color = next_color();
-                if z <= *d {
-                    *d = z;
-                    *c = color;
-                    written += 1;
-                }
-            }
+        let acc = (start.wrapping_add(1 << 27) >> 13) as i32;
+        match test {
+            DepthTest::Less => unclamped_u16::<C, false>(depths, colors, acc, st, next_color),
+            DepthTest::LessOrEqual => unclamped_u16::<C, true>(depths, colors, acc, st, next_color),
         }
-        written
     }
+}
+
+/// The u16 span loop without clamping: depth in u16 units with 15 fraction bits from `acc`,
+/// stepped by `st`; the test is fixed at compile time (`LE`: nearer or equal wins).
+#[inline(always)]
+fn unclamped_u16<C: Copy, const LE: bool>(
+    depths: &mut [u16],
+    colors: &mut [C],
+    mut acc: i32,
+    st: i32,
+    mut next_color: impl FnMut() -> C,
+) -> u32 {
+    let mut written = 0;
+    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
+        let z = (acc >> 15) as u16;
+        acc = acc.wrapping_add(st);
+        let color = next_color();
+        if z < *d || (LE && z == *d) {
+            *d = z;
+            *c = color;
+            written += 1;
+        }
+    }
+    written
 }
 
 /// 32-bit depth: `round(z · 2³²)`, clamped to `u32::MAX`; its resolution is that of the

@@ -160,7 +160,7 @@ where
             return;
         };
         let (mut fragments, mut written) = (0u32, 0u32);
-        spans.for_each_on(plane, |span, start| {
+        spans.for_each_with_plane(plane, |span, start| {
             // Spans lie in the clip rectangle, the buffers' extent (same size, exactly
             // width · height cells): the span's cells are x0..x1 of its row in both.
             let row = (span.y.wrapping_sub(first_row) as u32 as usize).wrapping_mul(width);
