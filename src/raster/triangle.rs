@@ -205,23 +205,36 @@ impl TriangleSpans {
             (plane.at(s.left.value, s.y), small, small.wrapping_add(gx))
         };
         let (mut at_left, mut small, mut big) = left_walk(&self);
-        while self.y < self.y_end {
+        // Two runs of rows, above and below the middle vertex's row: no per-row check for
+        // the switch of the short edge.
+        loop {
+            // Up to the split while it lies ahead (`i32::MIN` once switched), then to the end.
+            let end = if self.y_split > self.y {
+                self.y_split
+            } else {
+                self.y_end
+            };
+            while self.y < end {
+                let (l, r) = (self.left.value, self.right.value);
+                let (x0, x1) = (l.max(self.x_min), r.min(self.x_max));
+                if x0 < x1 {
+                    let start = if x0 == l {
+                        at_left
+                    } else {
+                        at_left.wrapping_add(gx.wrapping_mul(x0.wrapping_sub(l) as i64))
+                    };
+                    f(Span { y: self.y, x0, x1 }, start);
+                }
+                at_left = at_left.wrapping_add(if self.left.step_carry() { big } else { small });
+                self.right.step();
+                self.y += 1;
+            }
+            if self.y >= self.y_end {
+                return;
+            }
             if self.switch_at_split() {
                 (at_left, small, big) = left_walk(&self);
             }
-            let (l, r) = (self.left.value, self.right.value);
-            let (x0, x1) = (l.max(self.x_min), r.min(self.x_max));
-            if x0 < x1 {
-                let start = if x0 == l {
-                    at_left
-                } else {
-                    at_left.wrapping_add(gx.wrapping_mul(x0.wrapping_sub(l) as i64))
-                };
-                f(Span { y: self.y, x0, x1 }, start);
-            }
-            at_left = at_left.wrapping_add(if self.left.step_carry() { big } else { small });
-            self.right.step();
-            self.y += 1;
         }
     }
 
