@@ -6,6 +6,7 @@
 //! function rounds, its documentation says how.
 
 mod angle;
+mod divide;
 mod matrix;
 mod methods;
 mod scalar;
@@ -24,5 +25,6 @@ pub(crate) use scalar::{
     NARROW_CORE, UNIT_ONE,
 };
 
+pub(crate) use divide::DivideBy;
 pub(crate) use sqrt::isqrt_u64;
 pub(crate) use vector::{cross_wide, dot_unit, normalize};

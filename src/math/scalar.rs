@@ -105,17 +105,30 @@ pub(crate) fn narrow_cross(ux: i32, uy: i32, vx: i32, vy: i32) -> Option<i64> {
 /// 32-bit cores a 64-bit division is a library routine of a few hundred instructions; this
 /// takes a few dozen with a hardware 32-bit divide (Cortex-M3/M4), and on Cortex-M0 two
 /// library 32-bit divisions still cost less than the 64-bit one.
-const fn div_u64_u32(n: u64, d: u32) -> u32 {
-    const B: u32 = 1 << 16;
+pub(super) const fn div_u64_u32(n: u64, d: u32) -> u32 {
     // Normalise: the divisor's top bit set. n · 2^s < d · 2^s · 2³² ≤ 2⁶⁴: nothing is lost.
     let s = d.leading_zeros();
-    let v = d << s;
+    let (hi, lo) = shl_words(n, s);
+    div_normalized(hi, lo, d << s)
+}
+
+/// The words of `n << s` (`s < 32`, nothing shifted out), by 32-bit shifts: a 64-bit shift by
+/// a variable amount is a library call on Cortex-M0.
+#[inline(always)]
+pub(super) const fn shl_words(n: u64, s: u32) -> (u32, u32) {
+    let (hi, lo) = ((n >> 32) as u32, n as u32);
+    // `lo >> (32 − s)` without a shift by 32 when s = 0.
+    ((hi << s) | ((lo >> 1) >> (31 - s)), lo << s)
+}
+
+/// `⌊(hi · 2³² + lo) / v⌋` for a normalised `v` (top bit set) and `hi < v`: two 16-bit digits.
+#[inline(always)]
+pub(super) const fn div_normalized(hi: u32, lo: u32, v: u32) -> u32 {
+    const B: u32 = 1 << 16;
     let (vn1, vn0) = (v >> 16, v & 0xFFFF);
-    let un = n << s;
-    let (un32, un10) = ((un >> 32) as u32, un as u32);
-    let (un1, un0) = (un10 >> 16, un10 & 0xFFFF);
-    let q1 = quotient_digit(un32, un1, vn1, vn0);
-    let un21 = un32
+    let (un1, un0) = (lo >> 16, lo & 0xFFFF);
+    let q1 = quotient_digit(hi, un1, vn1, vn0);
+    let un21 = hi
         .wrapping_mul(B)
         .wrapping_add(un1)
         .wrapping_sub(q1.wrapping_mul(v));

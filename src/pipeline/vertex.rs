@@ -7,7 +7,7 @@
 //! nothing is shifted.
 
 use super::Precision;
-use crate::math::{div_round, magnitude_bits, shr_round, DEPTH_ONE};
+use crate::math::{div_round, magnitude_bits, shr_round, DivideBy, DEPTH_ONE};
 use crate::projection::Viewport;
 use crate::raster::ScreenPoint;
 
@@ -169,16 +169,18 @@ fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(S
         return None;
     }
     let lim = 1i64 << 15;
+    let by_w = DivideBy::new(w);
     let (sx, sy) = if m.snap == 0 {
-        (div_round(xh, w), div_round(yh, w))
+        (by_w.round(xh), by_w.round(yh))
     } else {
         // One rounding to the coarser grid (no double rounding through sixteenths).
         let (g, wg) = (m.snap, w << m.snap);
         (div_round(xh, wg) << g, div_round(yh, wg) << g)
     };
+    let sz = by_w.round(z << 30);
     let sx = (m.half_w + sx).clamp(-lim, lim);
     let sy = (m.half_h - sy).clamp(-lim, lim);
-    let sz = div_round(z << 30, w).clamp(0, DEPTH_ONE as i64);
+    let sz = sz.clamp(0, DEPTH_ONE as i64);
     Some((ScreenPoint::new(sx as i32, sy as i32), sz as i32))
 }
 

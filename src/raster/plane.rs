@@ -2,7 +2,7 @@
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
 use super::ScreenPoint;
-use crate::math::{div_round, SUBPIXEL_SCALE};
+use crate::math::{DivideBy, SUBPIXEL_SCALE};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels.
 ///
@@ -37,12 +37,14 @@ impl Plane {
         } else {
             (nx, ny, area2)
         };
+        let by_area = DivideBy::new(den);
+        let (gx, gy) = (by_area.round(nx), by_area.round(ny));
         Plane {
             x0: a.x,
             y0: a.y,
             v0: v[0],
-            gx: div_round(nx, den),
-            gy: div_round(ny, den),
+            gx,
+            gy,
         }
     }
 

@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 #[cfg(test)]
 use embedded_graphics::pixelcolor::RgbColor;
 
-use crate::math::{div_round, magnitude_bits};
+use crate::math::{magnitude_bits, DivideBy};
 use crate::raster::{Plane, ScreenPoint};
 
 /// A source of colours along a span, started at its first pixel.
@@ -167,10 +167,11 @@ impl Iterator for PerspectiveCursor {
     type Item = Rgb888;
     #[inline]
     fn next(&mut self) -> Option<Rgb888> {
-        let den = self.acc[3].max(1);
+        // One divisor for the three channels (one reciprocal on cores without a divide).
+        let by_q = DivideBy::new(self.acc[3].max(1));
         let ch = |k: usize| {
             // c·q / (q·2¹⁶) · 2¹⁶ = c with RGB_FRAC fraction bits.
-            let c = div_round(self.acc[k].max(0) << 16, den);
+            let c = by_q.round(self.acc[k].max(0) << 16);
             let c = c.clamp(self.lo[k], self.hi[k]);
             ((c + (1 << (RGB_FRAC - 1))) >> RGB_FRAC).clamp(0, 255) as u8
         };

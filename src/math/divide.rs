@@ -1,0 +1,238 @@
+//! Several divisions by one divisor, for cores without a hardware divide.
+//!
+//! On Armv6-M every division is a library routine of a hundred and more instructions, and the
+//! pipeline often divides several numerators by the same number: a vertex's x, y and depth by
+//! its `w`, a triangle's two depth gradients by its doubled area. [`Divisor`] pays for one
+//! reciprocal of the divisor and then divides with a widening multiply and a few corrections
+//! (Möller and Granlund, "Improved division by invariant integers", IEEE Trans. Computers
+//! 60(2), 2011: the reciprocal `v = ⌊(2⁶⁴ − 1)/d⌋ − 2³²` of the normalised divisor `d`, and
+//! their two-by-one division, algorithm 4). The quotients are exact: the same numbers
+//! [`div_round`] returns, which the tests check against 128-bit arithmetic.
+
+use super::scalar::{div_normalized, div_round, shl_words, NARROW_CORE};
+
+/// Rounded divisions by one divisor `d`: [`div_round`]`(n, d)` for every `n`, through a
+/// [`Divisor`] where division is a library routine, by the divide instruction elsewhere.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DivideBy {
+    d: i64,
+    by: Option<Divisor>,
+}
+
+impl DivideBy {
+    /// Divisions by `d` (any value: [`div_round`] returns 0 for `d ≤ 0`).
+    #[inline(always)]
+    pub(crate) fn new(d: i64) -> DivideBy {
+        let by = if NARROW_CORE { Divisor::new(d) } else { None };
+        DivideBy { d, by }
+    }
+
+    /// [`div_round`]`(n, d)`.
+    #[inline(always)]
+    pub(crate) fn round(&self, n: i64) -> i64 {
+        match self.by {
+            Some(by) => by.div_round(n),
+            None => div_round(n, self.d),
+        }
+    }
+}
+
+/// A positive divisor below 2³², prepared for [`Divisor::div_round`].
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Divisor {
+    /// The divisor.
+    d: u32,
+    /// `d` shifted left until its top bit is set, and by how much.
+    norm: u32,
+    shift: u32,
+    /// `⌊(2⁶⁴ − 1) / norm⌋ − 2³²`.
+    v: u32,
+}
+
+impl Divisor {
+    /// Prepares `d`; `None` unless `0 < d < 2³²`.
+    pub(crate) fn new(d: i64) -> Option<Divisor> {
+        let d = u32::try_from(d).ok().filter(|d| *d > 0)?;
+        let shift = d.leading_zeros();
+        let norm = d << shift;
+        // 2⁶⁴ − 1 − 2³²·norm has its high word 2³² − 1 − norm below norm (norm ≥ 2³¹): the
+        // quotient fits 32 bits.
+        let v = reciprocal(norm);
+        Some(Divisor { d, norm, shift, v })
+    }
+
+    /// `(⌊n / d⌋, n mod d)` for `n < d · 2³²` (the quotient fits 32 bits).
+    #[inline]
+    fn div_rem(&self, n: u64) -> (u32, u32) {
+        // n · 2^shift < norm · 2³² ≤ 2⁶⁴: the high word stays below norm.
+        let (u1, u0) = shl_words(n, self.shift);
+        // Algorithm 4: the quotient estimate from the reciprocal, off by at most one or two.
+        let p = (self.v as u64 * u1 as u64).wrapping_add((u1 as u64) << 32 | u0 as u64);
+        let (mut q, q0) = (((p >> 32) as u32).wrapping_add(1), p as u32);
+        let mut r = u0.wrapping_sub(q.wrapping_mul(self.norm));
+        if r > q0 {
+            q = q.wrapping_sub(1);
+            r = r.wrapping_add(self.norm);
+        }
+        if r >= self.norm {
+            q = q.wrapping_add(1);
+            r = r.wrapping_sub(self.norm);
+        }
+        (q, r >> self.shift)
+    }
+
+    /// [`div_round`]`(n, d)`: `n / d` rounded to nearest, ties away from zero.
+    pub(crate) fn div_round(&self, n: i64) -> i64 {
+        let a = n.unsigned_abs().saturating_add((self.d / 2) as u64);
+        if (a >> 32) >= self.d as u64 {
+            // The quotient does not fit 32 bits.
+            return div_round(n, self.d as i64);
+        }
+        let q = self.div_rem(a).0 as i64;
+        if n >= 0 {
+            q
+        } else {
+            -q
+        }
+    }
+}
+
+/// `RECIPROCALS[i] = ⌊2⁴⁷ / ((128.5 + i) · 2²⁴)⌋`: `2⁴⁷ / d` to 8 bits for a normalised `d`
+/// by its top byte (256 bytes).
+const RECIPROCALS: [u16; 128] = {
+    let mut t = [0u16; 128];
+    let mut i = 0;
+    while i < 128 {
+        t[i] = ((1u64 << 24) / (257 + 2 * i as u64)) as u16;
+        i += 1;
+    }
+    t
+};
+
+/// `⌊(2⁶⁴ − 1) / d⌋ − 2³²` for a normalised `d` (top bit set): see [`newton_reciprocal`];
+/// a division in the case that never happens.
+fn reciprocal(d: u32) -> u32 {
+    newton_reciprocal(d).unwrap_or_else(|| div_normalized(!d, u32::MAX, d))
+}
+
+/// [`reciprocal`] from a table seed and two Newton steps (relative error 2⁻⁸, 2⁻¹⁶, then a
+/// few units), made exact by stepping the remainder `2⁶⁴ − 1 − x·d` into `[0, d)`: products
+/// only, no library division. `None` if eight steps do not suffice (the tests show they do).
+fn newton_reciprocal(d: u32) -> Option<u32> {
+    let d64 = d as u64;
+    let seed = RECIPROCALS.get((d >> 24) as usize & 127).copied();
+    // x ≈ 2⁶⁴ / d, in (2³², 2³³].
+    let mut x = (seed.unwrap_or(0) as u64) << 17;
+    for _ in 0..2 {
+        // x + x·(2⁶⁴ − d·x)/2⁶⁴; the error term is small, so its wrapped value is its value.
+        let e = 0u64.wrapping_sub(d64.wrapping_mul(x)) as i64;
+        x = x.wrapping_add_signed(((x >> 9) as i64).wrapping_mul(e >> 24) >> 31);
+    }
+    // r = 2⁶⁴ − 1 − x·d (wrapped: its true value is small), stepped into [0, d).
+    let mut r = u64::MAX.wrapping_sub(d64.wrapping_mul(x)) as i64;
+    for _ in 0..8 {
+        if r < 0 {
+            x = x.wrapping_sub(1);
+            r = r.wrapping_add(d as i64);
+        } else if r >= d as i64 {
+            x = x.wrapping_add(1);
+            r = r.wrapping_sub(d as i64);
+        } else {
+            return Some(x as u32);
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The two-by-one division equals 128-bit division: random divisors of every size,
+    /// numerators up to the largest the quotient allows, and the boundaries.
+    #[test]
+    fn div_rem_is_exact() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let check = |d: u32, n: u64| {
+            let Some(div) = Divisor::new(d as i64) else {
+                panic!("{d}")
+            };
+            if (n >> 32) >= d as u64 {
+                return;
+            }
+            let (q, r) = div.div_rem(n);
+            assert_eq!(
+                (q as u64, r as u64),
+                (n / d as u64, n % d as u64),
+                "{n} / {d}"
+            );
+        };
+        for d in [
+            1,
+            2,
+            3,
+            7,
+            1 << 31,
+            (1 << 31) - 1,
+            (1 << 31) + 1,
+            u32::MAX,
+            u32::MAX - 1,
+        ] {
+            for n in [
+                0,
+                1,
+                d as u64 - 1,
+                d as u64,
+                (d as u64) << 31,
+                ((d as u64) << 32) - 1,
+            ] {
+                check(d, n);
+            }
+        }
+        for _ in 0..1_000_000 {
+            let x = rng.next_u64();
+            let d = ((x >> 32) as u32 >> (x % 32)).max(1);
+            let n = rng.next_u64() >> ((x >> 8) % 64);
+            check(d, n);
+            check(d, ((d as u64) << 32).wrapping_sub(1 + (n >> 40)));
+        }
+    }
+
+    /// The reciprocal equals 128-bit division for every seed interval's ends and middle and
+    /// for random divisors, and never needs the fallback.
+    #[test]
+    fn reciprocal_is_exact() {
+        let exact = |d: u32| ((u128::from(u64::MAX) / d as u128) - (1u128 << 32)) as u32;
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let top = (128u32..256).flat_map(|b| {
+            let lo = b << 24;
+            [lo, lo + 1, lo + (1 << 23), lo + 0xFF_FFFF, lo + 0xFF_FFFE]
+        });
+        let random = (0..1_000_000).map(|_| (rng.next_u64() as u32) | 1 << 31);
+        for d in top.chain(random) {
+            assert_eq!(newton_reciprocal(d), Some(exact(d)), "{d}");
+        }
+    }
+
+    /// `Divisor::div_round` is `div_round` wherever the divisor is prepared.
+    #[test]
+    fn div_round_matches() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        assert!(Divisor::new(0).is_none() && Divisor::new(-3).is_none());
+        assert!(Divisor::new(1 << 32).is_none());
+        for _ in 0..500_000 {
+            let x = rng.next_u64();
+            let d = (x as i64 & 0xFFFF_FFFF) >> ((x >> 32) % 32);
+            let n = (rng.next_u64() as i64) >> ((x >> 40) % 64);
+            let Some(div) = Divisor::new(d) else {
+                assert_eq!(d, 0);
+                continue;
+            };
+            assert_eq!(div.div_round(n), div_round(n, d), "{n} / {d}");
+        }
+        let div = Divisor::new(3).unwrap_or_else(|| unreachable!());
+        for n in [i64::MIN, i64::MIN + 1, i64::MAX, -5, -4, -1, 0, 1, 4, 5] {
+            assert_eq!(div.div_round(n), div_round(n, 3), "{n}");
+        }
+    }
+}
