@@ -9,7 +9,7 @@
 //! their two-by-one division, algorithm 4). The quotients are exact: the same numbers
 //! [`div_round`] returns, which the tests check against 128-bit arithmetic.
 
-use super::scalar::{div_normalized, div_round, shl_words, NARROW_CORE};
+use super::scalar::{div_normalized, div_round, leading_zeros32, shl_words, NARROW_CORE};
 
 /// Rounded divisions by one divisor `d`: [`div_round`]`(n, d)` for every `n`, through a
 /// [`Divisor`] where division is a library routine, by the divide instruction elsewhere.
@@ -53,7 +53,7 @@ impl Divisor {
     /// Prepares `d`; `None` unless `0 < d < 2³²`.
     pub(crate) fn new(d: i64) -> Option<Divisor> {
         let d = u32::try_from(d).ok().filter(|d| *d > 0)?;
-        let shift = d.leading_zeros();
+        let shift = leading_zeros32(d);
         let norm = d << shift;
         // 2⁶⁴ − 1 − 2³²·norm has its high word 2³² − 1 − norm below norm (norm ≥ 2³¹): the
         // quotient fits 32 bits.

@@ -64,7 +64,61 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
 /// that renormalises a vector or matrix of any scale is taken from it.
 pub(crate) fn magnitude_bits(values: &[i64]) -> u32 {
     let max = values.iter().map(|v| v.unsigned_abs()).max().unwrap_or(0);
-    64 - max.leading_zeros()
+    64 - leading_zeros64(max)
+}
+
+/// `v.leading_zeros()`; on cores without a count-leading-zeros instruction by
+/// [`leading_zeros_by_halves`] instead of the library routine.
+#[inline]
+pub(crate) const fn leading_zeros32(v: u32) -> u32 {
+    if NARROW_CORE {
+        leading_zeros_by_halves(v)
+    } else {
+        v.leading_zeros()
+    }
+}
+
+/// `v.leading_zeros()` by five comparisons and shifts (binary search), written out.
+#[inline(always)]
+const fn leading_zeros_by_halves(v: u32) -> u32 {
+    if v == 0 {
+        return 32;
+    }
+    let (mut v, mut n) = (v, 0);
+    if v >> 16 == 0 {
+        v <<= 16;
+        n += 16;
+    }
+    if v >> 24 == 0 {
+        v <<= 8;
+        n += 8;
+    }
+    if v >> 28 == 0 {
+        v <<= 4;
+        n += 4;
+    }
+    if v >> 30 == 0 {
+        v <<= 2;
+        n += 2;
+    }
+    if v >> 31 == 0 {
+        n += 1;
+    }
+    n
+}
+
+/// `v.leading_zeros()` (by [`leading_zeros_by_halves`] of its words where that is cheaper).
+#[inline]
+pub(crate) const fn leading_zeros64(v: u64) -> u32 {
+    if !NARROW_CORE {
+        return v.leading_zeros();
+    }
+    let hi = (v >> 32) as u32;
+    if hi != 0 {
+        leading_zeros32(hi)
+    } else {
+        32 + leading_zeros32(v as u32)
+    }
 }
 
 /// True on the smallest cores (Armv6-M; RISC-V without atomics), where every division and
@@ -107,7 +161,7 @@ pub(crate) fn narrow_cross(ux: i32, uy: i32, vx: i32, vy: i32) -> Option<i64> {
 /// library 32-bit divisions still cost less than the 64-bit one.
 pub(super) const fn div_u64_u32(n: u64, d: u32) -> u32 {
     // Normalise: the divisor's top bit set. n · 2^s < d · 2^s · 2³² ≤ 2⁶⁴: nothing is lost.
-    let s = d.leading_zeros();
+    let s = leading_zeros32(d);
     let (hi, lo) = shl_words(n, s);
     div_normalized(hi, lo, d << s)
 }
@@ -193,6 +247,17 @@ pub(crate) const fn mul_wide(a: i32, b: i32) -> i64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The binary-search count of leading zeros is the instruction's, at every bit position.
+    #[test]
+    fn leading_zeros_by_halves_is_exact() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let values = (0..64).flat_map(|b| [1u64 << b, (1u64 << b) - 1, (1u64 << b) | 1]);
+        for v in values.chain((0..10_000).map(|_| rng.next_u64() >> (rng.next_u64() % 64))) {
+            let w = v as u32;
+            assert_eq!(leading_zeros_by_halves(w), w.leading_zeros(), "{v}");
+        }
+    }
 
     /// The 32-bit division path gives the 64-bit path's quotient wherever it applies.
     #[test]
