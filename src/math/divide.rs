@@ -120,14 +120,27 @@ fn reciprocal(d: u32) -> u32 {
 /// only, no library division. `None` if eight steps do not suffice (the tests show they do).
 fn newton_reciprocal(d: u32) -> Option<u32> {
     let d64 = d as u64;
-    let seed = RECIPROCALS.get((d >> 24) as usize & 127).copied();
-    // x ≈ 2⁶⁴ / d, in (2³², 2³³].
-    let mut x = (seed.unwrap_or(0) as u64) << 17;
-    for _ in 0..2 {
-        // x + x·(2⁶⁴ − d·x)/2⁶⁴; the error term is small, so its wrapped value is its value.
-        let e = 0u64.wrapping_sub(d64.wrapping_mul(x)) as i64;
-        x = x.wrapping_add_signed(((x >> 9) as i64).wrapping_mul(e >> 24) >> 31);
-    }
+    // x0 ≈ 2⁴⁷ / d, below 2¹⁶.
+    let x0 = RECIPROCALS
+        .get((d >> 24) as usize & 127)
+        .copied()
+        .unwrap_or(0) as u32;
+    // The first step in 32-bit products of 16-bit halves: p = d·x0 / 2¹⁶ ≈ 2³¹ (within
+    // 2⁻⁸ of it, so 0 < p < 2³²), then x1 = x0·(2³² − p) / 2¹⁶ ≈ 2⁶² / d, below 2³¹.
+    // (Wrapping operations: no panic even if the bounds were wrong; the remainder check
+    // below is what makes the result exact.)
+    let p = (d >> 16)
+        .wrapping_mul(x0)
+        .wrapping_add((d & 0xFFFF).wrapping_mul(x0) >> 16);
+    let t = p.wrapping_neg();
+    let x1 = x0
+        .wrapping_mul(t >> 16)
+        .wrapping_add(x0.wrapping_mul(t & 0xFFFF) >> 16);
+    // The second in 64 bits: x + x·(2⁶⁴ − d·x)/2⁶⁴ for x ≈ 2⁶⁴ / d; the error term is small,
+    // so its wrapped value is its value.
+    let mut x = (x1 as u64) << 2;
+    let e = 0u64.wrapping_sub(d64.wrapping_mul(x)) as i64;
+    x = x.wrapping_add_signed(((x >> 9) as i64).wrapping_mul(e >> 24) >> 31);
     // r = 2⁶⁴ − 1 − x·d (wrapped: its true value is small), stepped into [0, d).
     let mut r = u64::MAX.wrapping_sub(d64.wrapping_mul(x)) as i64;
     for _ in 0..8 {
