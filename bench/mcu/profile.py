@@ -12,6 +12,9 @@ the firmware executes is traced, the harness's work too (clears, hashing, calibr
 building the mesh at start-up, spread over the frames): functions of the harness are marked,
 and code the compiler inlined into them counts as theirs.
 The log is large (about 1.5 GB for `full` on the M0) and is deleted afterwards.
+
+With ASM=<part of a function name> it also prints that function's disassembly (llvm-objdump),
+each instruction with the times it ran per frame: the place to read a hot loop.
 """
 
 import bisect
@@ -167,6 +170,27 @@ def main():
     print("\nbusiest source lines (inlined code counts where it was written):")
     for line, n in by_line.most_common(top):
         print(f"  {per(n):>11,.0f}  {line}")
+    if os.environ.get("ASM"):
+        disassembly(binary, os.environ["ASM"], lambda a: per(count.get(a, 0)), where)
+
+
+def disassembly(binary, part, runs, where):
+    """The functions whose names contain `part`, instruction by instruction with their runs
+    per frame and source lines."""
+    out = subprocess.run(["llvm-objdump", "-d", "-C", "--no-show-raw-insn", binary],
+                         capture_output=True, text=True).stdout
+    inside = False
+    for line in out.splitlines():
+        head = re.match(r"^([0-9a-f]+) <(.*)>:$", line)
+        if head:
+            inside = part in head.group(2)
+            if inside:
+                print(f"\n{head.group(2)}")
+            continue
+        code = re.match(r"^\s*([0-9a-f]+):\s*(.*)$", line)
+        if inside and code:
+            a = int(code.group(1), 16)
+            print(f"  {runs(a):>9,.0f}  {a:08x}  {code.group(2)[:48]:48}  {where.get(a, '')}")
 
 
 if __name__ == "__main__":

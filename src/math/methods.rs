@@ -156,7 +156,7 @@ fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
 fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
     let c = shrink_to_15_bits(v)?;
     // The sum of squares lies in [2²⁸, 3·2³⁰): 32-bit squares and sum (components below 2¹⁵).
-    let s = c.iter().map(|&x| (x as i32 * x as i32) as u32).sum::<u32>() as u64;
+    let s = c.iter().map(|&x| (x as i32 * x as i32) as u32).sum::<u32>();
     let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
     // y = 2⁴⁵ / sqrt(m); c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
     let y = rsqrt_q45(m) as i64;

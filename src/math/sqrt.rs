@@ -37,14 +37,17 @@ const RSQRT: [u32; 48] = {
 
 /// `2⁴⁵ / sqrt(m)` for `m` in `[2²⁸, 2³⁰)`: a table seed and two Newton steps, multiplications
 /// only (no division, no loop), relative error below 10⁻⁶.
-pub(crate) fn rsqrt_q45(m: u64) -> u64 {
+pub(crate) fn rsqrt_q45(m: u32) -> u32 {
     let idx = ((m >> 24) as usize).saturating_sub(16);
-    let mut y = RSQRT.get(idx).copied().unwrap_or(1 << 30) as u64;
+    // Every factor below fits 32 bits (y stays near 2⁴⁵ / sqrt(m) ≤ 2³¹, m·y² / 2⁶⁰ near 1):
+    // 32x32→64 products, one widening multiply each on Cortex-M3/M4.
+    let wide = |a: u32, b: u32| a as u64 * b as u64;
+    let mut y = RSQRT.get(idx).copied().unwrap_or(1 << 30);
     let mut k = 0;
     while k < 2 {
         // m·y² in Q2.30, then y·(3 − m·y²)/2.
-        let t = (m * ((y * y) >> 31)) >> 29;
-        y = (y * ((3u64 << 30).saturating_sub(t))) >> 31;
+        let t = wide(m, (wide(y, y) >> 31) as u32) >> 29;
+        y = (wide(y, (3u64 << 30).saturating_sub(t) as u32) >> 31) as u32;
         k += 1;
     }
     y
@@ -60,10 +63,30 @@ mod tests {
         let mut m = 1u64 << 28;
         while m < 1 << 30 {
             let exact = (1u64 << 45) as f64 / (m as f64).sqrt();
-            worst = worst.max((rsqrt_q45(m) as f64 - exact).abs() / exact);
+            worst = worst.max((rsqrt_q45(m as u32) as f64 - exact).abs() / exact);
             m += 9_973;
         }
         assert!(worst < 1e-6, "{worst}");
+    }
+
+    /// The 32-bit factors lose nothing: the same steps in 64-bit arithmetic give the same
+    /// values over the whole input range.
+    #[test]
+    fn rsqrt_32_bit_factors_are_exact() {
+        let wide = |m: u64| {
+            let mut y = RSQRT[((m >> 24) as usize).saturating_sub(16)] as u64;
+            for _ in 0..2 {
+                let t = (m * ((y * y) >> 31)) >> 29;
+                y = (y * ((3u64 << 30).saturating_sub(t))) >> 31;
+            }
+            y
+        };
+        for m in ((1u32 << 28)..(1 << 30))
+            .step_by(997)
+            .chain([(1 << 30) - 1])
+        {
+            assert_eq!(rsqrt_q45(m) as u64, wide(m as u64), "{m}");
+        }
     }
 
     #[test]
