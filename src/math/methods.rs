@@ -4,7 +4,7 @@
 //! others exist so that their error and cost can be measured (`docs/accuracy.md`) and chosen.
 
 use super::angle::Angle;
-use super::scalar::{magnitude_bits, map3, shr_round, UNIT_ONE};
+use super::scalar::{magnitude_bits, map3, shr_low_word, shr_round, UNIT_ONE};
 use super::sqrt::rsqrt_q45;
 use super::vector::normalize;
 use super::Unit;
@@ -144,7 +144,8 @@ fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
     let shift = bits as i32 - 15;
     Some(map3(v, |x| {
         if shift > 0 {
-            x >> shift
+            // The result is below 2¹⁵: the low word of the shift is all of it.
+            shr_low_word(x, shift as u32) as i64
         } else {
             x << (-shift) as u32
         }
@@ -157,11 +158,18 @@ fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
     let c = shrink_to_15_bits(v)?;
     // The sum of squares lies in [2²⁸, 3·2³⁰): 32-bit squares and sum (components below 2¹⁵).
     let s = c.iter().map(|&x| (x as i32 * x as i32) as u32).sum::<u32>();
-    let (m, extra) = if s >= 1 << 30 { (s >> 2, 1) } else { (s, 0) };
-    // y = 2⁴⁵ / sqrt(m); c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered).
+    let (m, quartered) = if s >= 1 << 30 {
+        (s >> 2, true)
+    } else {
+        (s, false)
+    };
+    // y = 2⁴⁵ / sqrt(m); c / sqrt(s) in Q2.30 = c · y / 2¹⁵ (halved again when s was quartered;
+    // shifts by constants: a 64-bit shift by a variable amount is a library call on Cortex-M0).
     let y = rsqrt_q45(m) as i64;
     Some(map3(c, |x| {
-        ((x * y) >> (15 + extra)).clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
+        let u = (x * y) >> 15;
+        let u = if quartered { u >> 1 } else { u };
+        u.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
     }))
 }
 

@@ -175,6 +175,29 @@ pub(super) const fn shl_words(n: u64, s: u32) -> (u32, u32) {
     ((hi << s) | ((lo >> 1) >> (31 - s)), lo << s)
 }
 
+/// The low 32 bits of `v >> s` (arithmetic shift, `s < 64`), from 32-bit shifts of its words:
+/// the whole result when it fits i32. A 64-bit shift by a variable amount is a library call on
+/// Cortex-M0.
+#[inline(always)]
+pub(crate) const fn shr_low_word(v: i64, s: u32) -> i32 {
+    if cfg!(target_pointer_width = "64") {
+        return (v >> (s & 63)) as i32;
+    }
+    shr_words(v, s)
+}
+
+/// [`shr_low_word`] by 32-bit shifts (what 32-bit cores use; tested on every host).
+#[inline(always)]
+const fn shr_words(v: i64, s: u32) -> i32 {
+    let (hi, lo) = ((v >> 32) as i32, v as u32);
+    if s >= 32 {
+        hi >> (s - 32)
+    } else {
+        // `hi << (32 − s)` without a shift by 32 when s = 0.
+        ((lo >> s) | (((hi as u32) << 1) << (31 - s))) as i32
+    }
+}
+
 /// `⌊(hi · 2³² + lo) / v⌋` for a normalised `v` (top bit set) and `hi < v`: two 16-bit digits.
 #[inline(always)]
 pub(super) const fn div_normalized(hi: u32, lo: u32, v: u32) -> u32 {
@@ -256,6 +279,20 @@ mod tests {
         for v in values.chain((0..10_000).map(|_| rng.next_u64() >> (rng.next_u64() % 64))) {
             let w = v as u32;
             assert_eq!(leading_zeros_by_halves(w), w.leading_zeros(), "{v}");
+        }
+    }
+
+    /// `shr_low_word` (and its 32-bit form) is the low word of the 64-bit shift, for every
+    /// shift and sign.
+    #[test]
+    fn shr_low_word_is_the_shift() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        for _ in 0..100_000 {
+            let v = rng.next_u64() as i64 >> (rng.next_u64() % 64);
+            for s in 0..64 {
+                assert_eq!(shr_words(v, s), (v >> s) as i32, "{v} >> {s}");
+                assert_eq!(shr_low_word(v, s), (v >> s) as i32, "{v} >> {s}");
+            }
         }
     }
 
