@@ -9,7 +9,10 @@
 //! their two-by-one division, algorithm 4). The quotients are exact: the same numbers
 //! [`div_round`] returns, which the tests check against 128-bit arithmetic.
 
-use super::scalar::{div_normalized, div_round, leading_zeros32, shl_words, NARROW_CORE};
+use super::scalar::{
+    div_normalized, div_round, leading_zeros32, rounded_magnitude, shl_words, with_sign_of,
+    NARROW_CORE,
+};
 
 /// Rounded divisions by one divisor `d`: [`div_round`]`(n, d)` for every `n`, through a
 /// [`Divisor`] where division is a library routine, by the divide instruction elsewhere.
@@ -83,17 +86,16 @@ impl Divisor {
 
     /// [`div_round`]`(n, d)`: `n / d` rounded to nearest, ties away from zero.
     pub(crate) fn div_round(&self, n: i64) -> i64 {
-        let a = n.unsigned_abs().saturating_add((self.d / 2) as u64);
-        if (a >> 32) >= self.d as u64 {
-            // The quotient does not fit 32 bits.
-            return div_round(n, self.d as i64);
-        }
-        let q = self.div_rem(a).0 as i64;
-        if n >= 0 {
-            q
+        let a = rounded_magnitude(n, self.d);
+        let hi = (a >> 32) as u32;
+        let q = if hi < self.d {
+            self.div_rem(a).0 as u64
         } else {
-            -q
-        }
+            // A quotient of more than 32 bits: its high word first, then the rest.
+            let (qh, rh) = self.div_rem(hi as u64);
+            ((qh as u64) << 32) | self.div_rem(((rh as u64) << 32) | (a & 0xFFFF_FFFF)).0 as u64
+        };
+        with_sign_of(n, q)
     }
 }
 

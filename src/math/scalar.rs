@@ -43,8 +43,8 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
     }
     let half = d / 2;
     // Where 64-bit division is a long library routine (32-bit cores), the same quotient by a
-    // 32-bit division when the operands fit (most divisions of the pipeline), else by two
-    // when the divisor and the quotient fit 32 bits (the depth divisions).
+    // 32-bit division when the operands fit (most divisions of the pipeline), else by two or
+    // three when the divisor fits 32 bits (the depth divisions).
     if cfg!(target_pointer_width = "32") {
         if let Some(q) = div_round_u32(n, d) {
             return q;
@@ -231,24 +231,57 @@ const fn quotient_digit(top: u32, next: u32, vn1: u32, vn0: u32) -> u32 {
     q
 }
 
-/// [`div_round`] by [`div_u64_u32`], when `d` fits 32 bits and the quotient too.
+/// `|n| + ⌊d/2⌋`, the magnitude [`div_round`] divides, saturated at `i64::MAX` as its 64-bit
+/// path saturates it (so every path returns the same quotient).
+#[inline(always)]
+pub(super) const fn rounded_magnitude(n: i64, d: u32) -> u64 {
+    // At most 2⁶³ + 2³¹: no overflow.
+    let a = n.unsigned_abs() + (d / 2) as u64;
+    if a > i64::MAX as u64 {
+        i64::MAX as u64
+    } else {
+        a
+    }
+}
+
+/// `q` with the sign of `n` (`q ≤ i64::MAX`).
+#[inline(always)]
+pub(super) const fn with_sign_of(n: i64, q: u64) -> i64 {
+    if n >= 0 {
+        q as i64
+    } else {
+        -(q as i64)
+    }
+}
+
+/// [`div_round`] for `d` that fits 32 bits, by [`div_u64_u32`]: twice for a quotient below
+/// 2³², once more for its high word (the depth gradients of small triangles).
 const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
-    let a = n.unsigned_abs().saturating_add((d / 2) as u64);
-    if d <= 0 || d > u32::MAX as i64 || (a >> 32) >= d as u64 {
+    if d <= 0 || d > u32::MAX as i64 {
         return None;
     }
-    let q = div_u64_u32(a, d as u32) as i64;
-    Some(if n >= 0 { q } else { -q })
+    let d = d as u32;
+    let a = rounded_magnitude(n, d);
+    let hi = (a >> 32) as u32;
+    let q = if hi < d {
+        div_u64_u32(a, d) as u64
+    } else {
+        let (qh, rh) = (hi / d, hi % d);
+        ((qh as u64) << 32) | div_u64_u32(((rh as u64) << 32) | (a & 0xFFFF_FFFF), d) as u64
+    };
+    Some(with_sign_of(n, q))
 }
 
 /// [`div_round`] by a 32-bit division, when `|n| + d/2` and `d > 0` fit 32 bits.
 const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
-    let a = n.unsigned_abs().saturating_add((d / 2) as u64);
-    if d <= 0 || a > u32::MAX as u64 || d > u32::MAX as i64 {
+    if d <= 0 || d > u32::MAX as i64 {
         return None;
     }
-    let q = (a as u32 / d as u32) as i64;
-    Some(if n >= 0 { q } else { -q })
+    let a = rounded_magnitude(n, d as u32);
+    if a > u32::MAX as u64 {
+        return None;
+    }
+    Some(with_sign_of(n, (a as u32 / d as u32) as u64))
 }
 
 /// `[f(a), f(b), f(c)]`: `array::map` written out, which optimisers keep as three plain
@@ -314,6 +347,29 @@ mod tests {
         assert!(checked > 50_000);
     }
 
+    /// The 32-bit-divisor paths give the 64-bit path's quotient for every numerator (quotients
+    /// of any size, the ends of the range) and every divisor that fits 32 bits.
+    #[test]
+    fn div_round_32_bit_divisor_paths_are_exact() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let ends = [i64::MIN, i64::MIN + 1, i64::MAX, i64::MAX - 1, 0, 1, -1];
+        for i in 0..300_000 {
+            let x = rng.next_u64();
+            let d = ((x >> 32) as i64 >> (x % 32)).max(1);
+            let n = match ends.get(i % 50) {
+                Some(&e) => e,
+                None => rng.next_u64() as i64 >> (x >> 8) % 64,
+            };
+            let expected = div_round(n, d);
+            assert_eq!(div_round_u64_u32(n, d), Some(expected), "{n} / {d}");
+            if let Some(q) = div_round_u32(n, d) {
+                assert_eq!(q, expected, "{n} / {d}");
+            }
+        }
+        assert_eq!(div_round_u64_u32(5, 1 << 32), None);
+        assert_eq!(div_round_u64_u32(5, 0), None);
+    }
+
     /// `below_bits` is the open interval's test, at its ends and the ends of the range.
     #[test]
     fn below_bits_is_the_open_interval() {
@@ -356,8 +412,9 @@ mod tests {
                 .wrapping_add(x as i64 >> 40);
             if let Some(q) = div_round_u64_u32(n, d) {
                 let (half, sign) = (d / 2, if n >= 0 { 1 } else { -1 });
-                let expected =
-                    sign * ((n.unsigned_abs() as i128 + half as i128) / d as i128) as i64;
+                // The magnitude saturates at i64::MAX, as the 64-bit path's does.
+                let a = (n.unsigned_abs() as i128 + half as i128).min(i64::MAX as i128);
+                let expected = sign * (a / d as i128) as i64;
                 assert_eq!(q, expected, "{n} / {d}");
                 checked += 1;
             }
@@ -369,7 +426,8 @@ mod tests {
             ((1 << 63) - 1, 1 << 31),
         ] {
             if let Some(q) = div_round_u64_u32(n as i64, d as i64) {
-                assert_eq!(q, ((n as i128 + (d / 2) as i128) / d as i128) as i64);
+                let a = (n as i128 + (d / 2) as i128).min(i64::MAX as i128);
+                assert_eq!(q, (a / d as i128) as i64);
             }
         }
         // Quotients of every size below 2³², remainders of every size below d.
