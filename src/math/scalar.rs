@@ -358,7 +358,7 @@ mod tests {
             let d = ((x >> 32) as i64 >> (x % 32)).max(1);
             let n = match ends.get(i % 50) {
                 Some(&e) => e,
-                None => rng.next_u64() as i64 >> (x >> 8) % 64,
+                None => rng.next_u64() as i64 >> ((x >> 8) % 64),
             };
             let expected = div_round(n, d);
             assert_eq!(div_round_u64_u32(n, d), Some(expected), "{n} / {d}");
