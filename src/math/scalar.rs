@@ -294,10 +294,28 @@ pub(crate) fn map3<T, U>(v: [T; 3], mut f: impl FnMut(T) -> U) -> [U; 3] {
 }
 
 /// `a · b` exactly, from 32-bit factors: the form compilers turn into one widening multiply
-/// (SMULL) on Cortex-M3/M4 instead of a full 64-bit product.
+/// (SMULL) on Cortex-M3/M4 instead of a full 64-bit product; on cores without a long multiply
+/// four 32-bit products of halves in line instead of the library's 64-bit product.
 #[inline(always)]
 pub(crate) const fn mul_wide(a: i32, b: i32) -> i64 {
-    a as i64 * b as i64
+    if NARROW_CORE {
+        mul_halves(a, b)
+    } else {
+        a as i64 * b as i64
+    }
+}
+
+/// [`mul_wide`] from 16-bit halves: every partial product fits 32 bits. Out of line: in line
+/// at every product it would save another 3% of the M0's instructions for 2 KB of flash.
+#[inline(never)]
+const fn mul_halves(a: i32, b: i32) -> i64 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    // Low halves below 2¹⁶, high halves within ±2¹⁵: each product fits 32 bits.
+    let low = (al as u32 * bl as u32) as i64;
+    let middle = (ah * bl) as i64 + (al * bh) as i64;
+    let high = (ah * bh) as i64;
+    (high << 32) + (middle << 16) + low
 }
 
 #[cfg(test)]
@@ -368,6 +386,37 @@ mod tests {
         }
         assert_eq!(div_round_u64_u32(5, 1 << 32), None);
         assert_eq!(div_round_u64_u32(5, 0), None);
+    }
+
+    /// The product of halves is the 64-bit product, at the ends of the range and at random.
+    #[test]
+    fn mul_halves_is_the_product() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let ends = [
+            i32::MIN,
+            i32::MIN + 1,
+            -65_536,
+            -65_535,
+            -1,
+            0,
+            1,
+            65_535,
+            65_536,
+            i32::MAX,
+        ];
+        for a in ends {
+            for b in ends {
+                assert_eq!(mul_halves(a, b), a as i64 * b as i64, "{a} {b}");
+            }
+        }
+        for _ in 0..200_000 {
+            let x = rng.next_u64();
+            let (a, b) = (
+                (x as i32) >> (x % 32),
+                ((x >> 32) as i32) >> ((x >> 8) % 32),
+            );
+            assert_eq!(mul_halves(a, b), a as i64 * b as i64, "{a} {b}");
+        }
     }
 
     /// `below_bits` is the open interval's test, at its ends and the ends of the range.

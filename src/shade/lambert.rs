@@ -38,7 +38,6 @@ pub(crate) fn lambert<const N: usize>(
 
 /// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough
 /// headroom for one more product with Q16.16 before normalising.
-#[inline(always)]
 fn shrink(v: [i64; 3]) -> [i64; 3] {
     // The common case, found by comparisons (counting bits is a library call on Cortex-M0).
     if below_bits(v[0], 30) && below_bits(v[1], 30) && below_bits(v[2], 30) {
