@@ -10,8 +10,8 @@
 //! [`div_round`] returns, which the tests check against 128-bit arithmetic.
 
 use super::scalar::{
-    div_normalized, div_round, leading_zeros32, rounded_magnitude, shl_words, with_sign_of,
-    NARROW_CORE,
+    div_normalized, div_round, leading_zeros32, mul_wide_u32, rounded_magnitude, shl_words,
+    with_sign_of, NARROW_CORE,
 };
 
 /// Rounded divisions by one divisor `d`: [`div_round`]`(n, d)` for every `n`, through a
@@ -70,7 +70,7 @@ impl Divisor {
         // n · 2^shift < norm · 2³² ≤ 2⁶⁴: the high word stays below norm.
         let (u1, u0) = shl_words(n, self.shift);
         // Algorithm 4: the quotient estimate from the reciprocal, off by at most one or two.
-        let p = (self.v as u64 * u1 as u64).wrapping_add((u1 as u64) << 32 | u0 as u64);
+        let p = mul_wide_u32(self.v, u1).wrapping_add((u1 as u64) << 32 | u0 as u64);
         let (mut q, q0) = (((p >> 32) as u32).wrapping_add(1), p as u32);
         let mut r = u0.wrapping_sub(q.wrapping_mul(self.norm));
         if r > q0 {

@@ -1,6 +1,8 @@
 //! Integer square root: the only root the pipeline takes (normals, light directions, camera
 //! axes), exact and free of floats.
 
+use super::scalar::mul_wide_u32;
+
 /// `floor(sqrt(n))`, bit by bit: 32 iterations of shifts, adds and compares, no division.
 pub(crate) const fn isqrt_u64(n: u64) -> u64 {
     let mut rem = n;
@@ -41,7 +43,7 @@ pub(crate) fn rsqrt_q45(m: u32) -> u32 {
     let idx = ((m >> 24) as usize).saturating_sub(16);
     // Every factor below fits 32 bits (y stays near 2⁴⁵ / sqrt(m) ≤ 2³¹, m·y² / 2⁶⁰ near 1):
     // 32x32→64 products, one widening multiply each on Cortex-M3/M4.
-    let wide = |a: u32, b: u32| a as u64 * b as u64;
+    let wide = mul_wide_u32;
     let mut y = RSQRT.get(idx).copied().unwrap_or(1 << 30);
     let mut k = 0;
     while k < 2 {
