@@ -451,7 +451,10 @@ mod tests {
         }
         for _ in 0..200_000 {
             let x = rng.next_u64();
-            let (a, b) = ((x as u32) >> (x % 32), ((x >> 32) as u32) >> ((x >> 8) % 32));
+            let (a, b) = (
+                (x as u32) >> (x % 32),
+                ((x >> 32) as u32) >> ((x >> 8) % 32),
+            );
             assert_eq!(mul_halves_u32(a, b), a as u64 * b as u64, "{a} {b}");
         }
     }

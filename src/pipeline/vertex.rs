@@ -7,7 +7,7 @@
 //! nothing is shifted.
 
 use super::Precision;
-use crate::math::{div_round, magnitude_bits, shr_round, DivideBy, DEPTH_ONE};
+use crate::math::{div_round, magnitude_bits, mul_wide, shr_round, DivideBy, DEPTH_ONE};
 use crate::projection::Viewport;
 use crate::raster::ScreenPoint;
 
@@ -79,6 +79,16 @@ impl ScreenMap {
             snap: precision.snap_shift(),
         }
     }
+
+    /// `x·half_w` and `y·half_h` of reduced coordinates (below 2³¹; half sizes at most 2¹⁴):
+    /// 32-bit factors.
+    #[inline(always)]
+    fn viewport_products(&self, x: i64, y: i64) -> (i64, i64) {
+        (
+            mul_wide(x as i32, self.half_w as i32),
+            mul_wide(y as i32, self.half_h as i32),
+        )
+    }
 }
 
 /// Shift that brings the largest magnitude below 2³¹.
@@ -144,7 +154,8 @@ fn outcode_reduced(z: i64, w: i64, xh: i64, yh: i64) -> u8 {
 /// `None` when w ≤ 0: the pipeline never divides by it.
 pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> {
     let [x, y, z, w] = reduce(c);
-    project_reduced(x * m.half_w, y * m.half_h, z, w, m)
+    let (xh, yh) = m.viewport_products(x, y);
+    project_reduced(xh, yh, z, w, m)
 }
 
 /// The vertex stage's hot path: the planes a clip-space vertex is outside of (one bit each,
@@ -153,7 +164,7 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 #[inline]
 pub(crate) fn outcode_and_project(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoint, i32) {
     let [x, y, z, w] = reduce(c);
-    let (xh, yh) = (x * m.half_w, y * m.half_h);
+    let (xh, yh) = m.viewport_products(x, y);
     let code = outcode_reduced(z, w, xh, yh);
     if code != 0 {
         return (code, ScreenPoint::default(), 0);
