@@ -21,8 +21,9 @@ pub(crate) fn lambert<const N: usize>(
         for light in lighting.lights() {
             let d = dot_unit(n, light.direction).max(0);
             for (s, c) in sum.iter_mut().zip(light.color.iter()) {
-                // Q16.16 · Q2.30 → Q16.16 (the channel is a Scalar's bits: it fits i32).
-                *s = s.saturating_add(mul_wide(*c as i32, d) >> 30);
+                // Q16.16 · Q2.30 → Q16.16 (the channel is a Scalar's bits: it fits i32), each
+                // term within ±2³¹: no count of lights a memory can hold overflows the sum.
+                *s = s.wrapping_add(mul_wide(*c as i32, d) >> 30);
             }
         }
     }
