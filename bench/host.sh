@@ -84,20 +84,25 @@ $timing
   check) and sets up the pixel loop; then each pixel is a shift, a compare, two stores and
   a count. The remaining per-row cost is mostly state that does
   not fit in registers (two edges, the depth walk, the buffers, the counters).
-- **Per triangle** (set-up and flat shading): three edge steppers (two divisions each; by
-  comparisons when the quotient is -1, 0 or 1 on cores without a divider), the depth plane
-  (two divisions of 62-bit numerators; two 32-bit divisions each on 32-bit cores), the face
-  normal through the normal matrix, its normalisation and Lambert (some thirty 64-bit
-  products, library calls on Cortex-M0). Every step keeps the images bit-identical; what would go further (one reciprocal
-  of the doubled area for both gradients, lighting in 16-bit arithmetic, face normals
+- **Per triangle** (set-up and flat shading): three edge steppers (two divisions each; on
+  cores without a divider quotients from -8 to 7 by subtraction), the depth plane (two
+  divisions of 62-bit numerators: on Cortex-M0 through one reciprocal of the doubled area,
+  on Cortex-M3/M4 by 32-bit divides), the face normal through the normal matrix, its
+  normalisation and Lambert (some thirty products of 32-bit factors). Flat shading is about a
+  sixth of the frame on x86-64, a fifth on the M4 and a quarter on the M0 (there measured by
+  swapping \`Flat\` for \`Unlit\` in the firmware). Every step keeps the images bit-identical; what would go further
+  (lighting in 16-bit arithmetic, 32-bit depth stepping relative to the triangle, face normals
   precomputed in flash) changes rounding, so \`docs/accuracy.md\` would have to show it loses
   nothing.
 - **Per vertex**: the transform (twelve 32x32→64 products), then the outcode and the
-  projection from one reduction (two divisions for x and y, one for the depth).
+  projection from one reduction (three divisions by \`w\`: on Cortex-M0 one reciprocal and
+  three multiplications).
 - **On Cortex-M**, \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or
   \`thumbv7em-none-eabihf\`) lists the instructions by function and the library calls by the
-  line that makes them: on Cortex-M0 the 32-bit software divisions and \`__aeabi_lmul\` are the
-  largest single costs.
+  line that makes them, and \`ASM=fill_face\` prints a function's instructions with their
+  counts. On Cortex-M0 the set-up's arithmetic (products of halves, divisions through
+  reciprocals, the remaining 64-bit products) is still the largest cost; on the M4 the rows
+  and pixels, whose state spills to the stack.
 DOC
     echo "wrote docs/performance.md"
 fi
