@@ -58,8 +58,6 @@ impl Divisor {
         let d = u32::try_from(d).ok().filter(|d| *d > 0)?;
         let shift = leading_zeros32(d);
         let norm = d << shift;
-        // 2⁶⁴ − 1 − 2³²·norm has its high word 2³² − 1 − norm below norm (norm ≥ 2³¹): the
-        // quotient fits 32 bits.
         let v = reciprocal(norm);
         Some(Divisor { d, norm, shift, v })
     }
@@ -111,8 +109,9 @@ const RECIPROCALS: [u16; 128] = {
     t
 };
 
-/// `⌊(2⁶⁴ − 1) / d⌋ − 2³²` for a normalised `d` (top bit set): see [`newton_reciprocal`];
-/// a division in the case that never happens.
+/// `⌊(2⁶⁴ − 1) / d⌋ − 2³²` for a normalised `d` (top bit set): see [`newton_reciprocal`].
+/// In the case that never happens, a division of `2⁶⁴ − 1 − 2³²·d`, whose high word
+/// `2³² − 1 − d` is below `d` (d ≥ 2³¹), so that the quotient fits 32 bits.
 fn reciprocal(d: u32) -> u32 {
     newton_reciprocal(d).unwrap_or_else(|| div_normalized(!d, u32::MAX, d))
 }
