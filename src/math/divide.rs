@@ -213,7 +213,7 @@ mod tests {
     }
 
     /// The reciprocal equals 128-bit division for every seed interval's ends and middle and
-    /// for random divisors, and never needs the fallback.
+    /// for random divisors, and never needs the fallback (which is exact too).
     #[test]
     fn reciprocal_is_exact() {
         let exact = |d: u32| ((u128::from(u64::MAX) / d as u128) - (1u128 << 32)) as u32;
@@ -225,6 +225,7 @@ mod tests {
         let random = (0..1_000_000).map(|_| (rng.next_u64() as u32) | 1 << 31);
         for d in top.chain(random) {
             assert_eq!(newton_reciprocal(d), Some(exact(d)), "{d}");
+            assert_eq!(div_normalized(!d, u32::MAX, d), exact(d), "fallback, {d}");
         }
     }
 
