@@ -408,10 +408,15 @@ mod tests {
         assert_eq!(div_round_u64_u32(5, 0), None);
     }
 
-    /// The product of halves is the 64-bit product, at the ends of the range and at random.
+    /// The products of halves, signed and unsigned, are the 64-bit products: at the ends of
+    /// the range and at random.
     #[test]
-    fn mul_halves_is_the_product() {
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+    fn products_of_halves_are_the_products() {
+        let check = |a: i32, b: i32| {
+            assert_eq!(mul_halves(a, b), a as i64 * b as i64, "{a} {b}");
+            let (ua, ub) = (a as u32, b as u32);
+            assert_eq!(mul_halves_u32(ua, ub), ua as u64 * ub as u64, "{ua} {ub}");
+        };
         let ends = [
             i32::MIN,
             i32::MIN + 1,
@@ -426,36 +431,16 @@ mod tests {
         ];
         for a in ends {
             for b in ends {
-                assert_eq!(mul_halves(a, b), a as i64 * b as i64, "{a} {b}");
+                check(a, b);
             }
         }
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         for _ in 0..200_000 {
             let x = rng.next_u64();
-            let (a, b) = (
+            check(
                 (x as i32) >> (x % 32),
                 ((x >> 32) as i32) >> ((x >> 8) % 32),
             );
-            assert_eq!(mul_halves(a, b), a as i64 * b as i64, "{a} {b}");
-        }
-    }
-
-    /// The unsigned product of halves is the 64-bit product.
-    #[test]
-    fn mul_halves_u32_is_the_product() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let ends = [0, 1, 65_535, 65_536, u32::MAX - 1, u32::MAX];
-        for a in ends {
-            for b in ends {
-                assert_eq!(mul_halves_u32(a, b), a as u64 * b as u64, "{a} {b}");
-            }
-        }
-        for _ in 0..200_000 {
-            let x = rng.next_u64();
-            let (a, b) = (
-                (x as u32) >> (x % 32),
-                ((x >> 32) as u32) >> ((x >> 8) % 32),
-            );
-            assert_eq!(mul_halves_u32(a, b), a as u64 * b as u64, "{a} {b}");
         }
     }
 
