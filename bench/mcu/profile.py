@@ -57,8 +57,13 @@ def trace(binary, target, log):
 
 def executed(log, is_call):
     """Instructions executed per address, and library calls counted by calling block: a block
-    of a library routine entered from a block that `is_call(previous, pc)` accepts."""
+    of a library routine entered from a block that `is_call(previous, pc)` accepts.
+
+    A block's address may be translated more than once, and not always to the same length:
+    under `-icount` QEMU also translates blocks cut short to the instructions left in the
+    budget. Each run is counted against the translation current when it ran."""
     blocks, current, addrs = {}, None, []
+    version = collections.Counter()
     runs = collections.Counter()
     calls = collections.Counter()
     previous = None
@@ -73,15 +78,16 @@ def executed(log, is_call):
                 addrs.append(a)
             elif line.startswith(b"Trace"):
                 if current is not None:
-                    blocks[current], current = addrs, None
+                    version[current] += 1
+                    blocks[(current, version[current])], current = addrs, None
                 pc = int(line.split(b"/")[1], 16)
-                runs[pc] += 1
+                runs[(pc, version[pc])] += 1
                 if previous is not None and is_call(previous, pc):
                     calls[(pc, previous)] += 1
                 previous = pc
     count = collections.Counter()
-    for pc, n in runs.items():
-        for a in blocks.get(pc, ()):
+    for key, n in runs.items():
+        for a in blocks.get(key, ()):
             count[a] += n
     return count, calls
 
