@@ -10,8 +10,8 @@
 //! [`div_round`] returns, which the tests check against 128-bit arithmetic.
 
 use super::scalar::{
-    div_normalized, div_round, leading_zeros32, mul_wide_u32, rounded_magnitude, shl_words,
-    with_sign_of, NARROW_CORE,
+    div_normalized, div_round, leading_zeros32, mul_wide, mul_wide_u32, rounded_magnitude,
+    shl_words, with_sign_of, NARROW_CORE,
 };
 
 /// Rounded divisions by one divisor `d`: [`div_round`]`(n, d)` for every `n`, through a
@@ -109,6 +109,13 @@ const RECIPROCALS: [u16; 128] = {
     t
 };
 
+/// `d · x` modulo 2⁶⁴, from one 32x32→64 product and one 32-bit product.
+#[inline(always)]
+fn times(d: u32, x: u64) -> u64 {
+    let high = d.wrapping_mul((x >> 32) as u32) as u64;
+    mul_wide_u32(d, x as u32).wrapping_add(high << 32)
+}
+
 /// `⌊(2⁶⁴ − 1) / d⌋ − 2³²` for a normalised `d` (top bit set): see [`newton_reciprocal`].
 /// In the case that never happens, a division of `2⁶⁴ − 1 − 2³²·d`, whose high word
 /// `2³² − 1 − d` is below `d` (d ≥ 2³¹), so that the quotient fits 32 bits.
@@ -120,7 +127,6 @@ fn reciprocal(d: u32) -> u32 {
 /// few units), made exact by stepping the remainder `2⁶⁴ − 1 − x·d` into `[0, d)`: products
 /// only, no library division. `None` if eight steps do not suffice (the tests show they do).
 fn newton_reciprocal(d: u32) -> Option<u32> {
-    let d64 = d as u64;
     // x0 ≈ 2⁴⁷ / d, below 2¹⁶.
     let x0 = RECIPROCALS
         .get((d >> 24) as usize & 127)
@@ -138,12 +144,12 @@ fn newton_reciprocal(d: u32) -> Option<u32> {
         .wrapping_mul(t >> 16)
         .wrapping_add(x0.wrapping_mul(t & 0xFFFF) >> 16);
     // The second in 64 bits: x + x·(2⁶⁴ − d·x)/2⁶⁴ for x ≈ 2⁶⁴ / d; the error term is small,
-    // so its wrapped value is its value.
+    // so its wrapped value is its value. Its factors x / 2⁹ and e / 2²⁴ are below 2²⁵.
     let mut x = (x1 as u64) << 2;
-    let e = 0u64.wrapping_sub(d64.wrapping_mul(x)) as i64;
-    x = x.wrapping_add_signed(((x >> 9) as i64).wrapping_mul(e >> 24) >> 31);
+    let e = 0u64.wrapping_sub(times(d, x)) as i64;
+    x = x.wrapping_add_signed(mul_wide((x >> 9) as i32, (e >> 24) as i32) >> 31);
     // r = 2⁶⁴ − 1 − x·d (wrapped: its true value is small), stepped into [0, d).
-    let mut r = u64::MAX.wrapping_sub(d64.wrapping_mul(x)) as i64;
+    let mut r = u64::MAX.wrapping_sub(times(d, x)) as i64;
     for _ in 0..8 {
         if r < 0 {
             x = x.wrapping_sub(1);
