@@ -11,7 +11,7 @@
 //! with an integer quotient and remainder, so no precision is lost however long the edge.
 
 use super::{doubled_area, first_centre_from, CeilStepper, PixelRect, Plane, ScreenPoint};
-use crate::math::{NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
+use crate::math::{mul_wide, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -114,31 +114,35 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSp
 }
 
 /// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row
-/// `py`. With coordinates within ±2²⁴ the numerator stays below 2⁵⁴ and the denominator below
-/// 2²⁹.
+/// `py` (one of the edge's rows). With coordinates within ±2²⁴ every difference below is a
+/// 32-bit factor, the numerator stays below 2⁵⁴ and the denominator below 2²⁹.
 fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
-    let dx = q.x as i64 - p.x as i64;
-    let dy = (q.y as i64 - p.y as i64).max(1);
+    let dx = q.x.wrapping_sub(p.x);
+    let dy = q.y.wrapping_sub(p.y).max(1);
     // Without a hardware divide, the whole pixels of p.x − 8 come out by a shift:
     // ceil(((16k + m)·dy + …) / 16dy) = k + ceil((m·dy + …) / 16dy), a small quotient for
     // steep edges started at their top, found without dividing (see `floor_divmod`).
-    let x = p.x as i64 - HALF;
-    let t = S * py + HALF - p.y as i64;
+    let x = p.x.wrapping_sub(HALF as i32);
+    // The row lies within the edge's rows: |16·py| below 2²⁵.
+    let t = (py as i32)
+        .wrapping_mul(S as i32)
+        .wrapping_add(HALF as i32)
+        .wrapping_sub(p.y);
     let (k, n0) = if NARROW_CORE {
-        let (k, m) = (x >> SUBPIXEL_BITS, x & (S - 1));
+        let (k, m) = (x >> SUBPIXEL_BITS, x & (S as i32 - 1));
         // Started within its top pixel (0 ≤ t < 16, the usual case) both products are below
         // 2²⁹ (sides below 2²⁵): 32-bit, where a 64-bit product is a library call.
-        let n0 = if (0..S).contains(&t) {
-            (m as i32 * dy as i32 + dx as i32 * t as i32) as i64
+        let n0 = if (0..S as i32).contains(&t) {
+            (m * dy + dx * t) as i64
         } else {
-            m * dy + dx * t
+            mul_wide(m, dy) + mul_wide(dx, t)
         };
         (k, n0)
     } else {
-        (0, x * dy + dx * t)
+        (0, mul_wide(x, dy) + mul_wide(dx, t))
     };
-    let mut e = CeilStepper::new(n0, S * dy, S * dx);
-    e.value = e.value.wrapping_add(k as i32);
+    let mut e = CeilStepper::new(n0, S * dy as i64, S * dx as i64);
+    e.value = e.value.wrapping_add(k);
     e
 }
 
