@@ -241,6 +241,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             base: setup.object.color,
             positions: setup.object.mesh.positions(),
             indices: tri,
+            extent: setup.object.mesh.extent(),
             normal_matrix: &setup.normal_matrix,
             normalize: self.frame.precision.normalize(),
             vertices: &v,

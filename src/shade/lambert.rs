@@ -66,16 +66,28 @@ fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
 
 /// Unit world-space face normal (Q2.30) of a model-space triangle, counter-clockwise front; `None`
 /// for a zero-area triangle. Edges of any length: the cross product is exact in i64 after the
-/// edges are shifted below 2³⁰ (case T33).
+/// edges are shifted below 2³⁰ (case T33). `extent` bounds every coordinate's magnitude (the
+/// mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹ the edges need no shifting, and
+/// are not even checked.
 pub(crate) fn face_normal(
     p: [[i32; 3]; 3],
     normal_matrix: &[[i32; 3]; 3],
     method: Normalize,
+    extent: u32,
 ) -> Option<[i32; 3]> {
     let [a, b, c] = p;
+    let short = extent < 1 << 29;
     let edge = |q: [i32; 3]| {
         let [q0, q1, q2] = q;
         let [a0, a1, a2] = a;
+        if short {
+            // Both coordinates below 2²⁹: the difference is below 2³⁰ and fits i32.
+            return [
+                q0.wrapping_sub(a0),
+                q1.wrapping_sub(a1),
+                q2.wrapping_sub(a2),
+            ];
+        }
         let d = |q: i32, a: i32| q as i64 - a as i64;
         map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
     };
@@ -145,7 +157,18 @@ mod tests {
         for scale in [1e-4f64, 1e-3, 0.01, 0.1, 1.0, 10.0, 100.0, 1000.0] {
             let raw = [[0.0, 0.0, 0.0], [1.0, 0.2, -0.3], [0.3, 1.1, 0.4]]
                 .map(|p| p.map(|c: f64| (c * scale * 65536.0).round() as i32));
-            let n = face_normal(raw, &IDENTITY, Normalize::Newton).expect("non-degenerate");
+            let extent = raw
+                .iter()
+                .flatten()
+                .map(|c| c.unsigned_abs())
+                .max()
+                .unwrap_or(0);
+            let n = face_normal(raw, &IDENTITY, Normalize::Newton, extent).expect("non-degenerate");
+            // The unchecked short edges give what the checked ones give.
+            assert_eq!(
+                Some(n),
+                face_normal(raw, &IDENTITY, Normalize::Newton, u32::MAX)
+            );
             let p = raw.map(|v| v.map(|c| c as f64));
             let e1 = [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]];
             let e2 = [p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]];
@@ -160,11 +183,12 @@ mod tests {
             assert!(cos > 1f64.to_radians().cos(), "scale {scale}: cos {cos}");
         }
         // A zero-area triangle has no normal (ambient only), never a division.
-        assert!(face_normal([[5, 5, 5]; 3], &IDENTITY, Normalize::Newton).is_none());
+        assert!(face_normal([[5, 5, 5]; 3], &IDENTITY, Normalize::Newton, 5).is_none());
         assert!(face_normal(
             [[0, 0, 0], [1 << 16, 0, 0], [2 << 16, 0, 0]],
             &IDENTITY,
-            Normalize::Newton
+            Normalize::Newton,
+            2 << 16
         )
         .is_none());
         // Extreme coordinates do not overflow.
@@ -173,7 +197,7 @@ mod tests {
             [i32::MAX, i32::MIN, 0],
             [i32::MIN, i32::MAX, 7],
         ];
-        assert!(face_normal(big, &IDENTITY, Normalize::Newton).is_some());
+        assert!(face_normal(big, &IDENTITY, Normalize::Newton, u32::MAX).is_some());
     }
 
     /// T34: Lambert with random unit vectors, zero normals and back-facing normals: intensity in

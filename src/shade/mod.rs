@@ -36,6 +36,8 @@ pub struct FaceInputs<'a> {
     /// The mesh's model-space positions, and the triangle's indices into them.
     pub(crate) positions: &'a [Vec3],
     pub(crate) indices: &'a Triangle,
+    /// The mesh's largest coordinate magnitude (raw Q16.16).
+    pub(crate) extent: u32,
     /// World-from-model normal matrix (cofactor, raw Q16.16).
     pub(crate) normal_matrix: &'a [[i32; 3]; 3],
     /// How normals are normalised.
@@ -120,7 +122,12 @@ impl Shading for Flat {
     type Paint = SolidPaint;
     const PER_VERTEX: bool = false;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
-        let n = face_normal(face.model(), face.normal_matrix, face.normalize);
+        let n = face_normal(
+            face.model(),
+            face.normal_matrix,
+            face.normalize,
+            face.extent,
+        );
         SolidPaint(lambert(face.base, n, lighting))
     }
 }
