@@ -88,9 +88,9 @@ $timing
   cores without a divider quotients from -8 to 7 by subtraction), the depth plane (two
   divisions of 62-bit numerators: on Cortex-M0 through one reciprocal of the doubled area,
   on Cortex-M3/M4 by 32-bit divides), the face normal through the normal matrix, its
-  normalisation and Lambert (some thirty products of 32-bit factors). Flat shading is about a
-  sixth of the frame on x86-64, a fifth on the M4 and a quarter on the M0 (there measured by
-  swapping \`Flat\` for \`Unlit\` in the firmware). Every step keeps the images bit-identical; what would go further
+  normalisation and Lambert (some thirty products of 32-bit factors). Flat shading is about 14%
+  of the frame on x86-64, 18% on the M4 and 23% on the M0 (there measured by swapping
+  \`Flat\` for \`Unlit\` in the firmware). Every step keeps the images bit-identical; what would go further
   (lighting in 16-bit arithmetic, 32-bit depth stepping relative to the triangle, face normals
   precomputed in flash) changes rounding, so \`docs/accuracy.md\` would have to show it loses
   nothing.
