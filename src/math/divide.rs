@@ -1,18 +1,138 @@
-//! Several divisions by one divisor, for cores without a hardware divide.
-//!
-//! On Armv6-M every division is a library routine of a hundred and more instructions, and the
-//! pipeline often divides several numerators by the same number: a vertex's x, y and depth by
-//! its `w`, a triangle's two depth gradients by its doubled area. [`Divisor`] pays for one
-//! reciprocal of the divisor and then divides with a widening multiply and a few corrections
+//! Divisions. [`div_round`] rounds to nearest on every core; where 64-bit division is a long
+//! library routine (32-bit cores) it runs as 32-bit divisions of 16-bit digits. On Armv6-M
+//! every division is a library routine of a hundred and more instructions, and the pipeline
+//! often divides several numerators by the same number: a vertex's x, y and depth by its `w`,
+//! a triangle's two depth gradients by its doubled area. [`DivideBy`] then pays for one
+//! reciprocal of the divisor and divides with a widening multiply and a few corrections
 //! (Möller and Granlund, "Improved division by invariant integers", IEEE Trans. Computers
 //! 60(2), 2011: the reciprocal `v = ⌊(2⁶⁴ − 1)/d⌋ − 2³²` of the normalised divisor `d`, and
-//! their two-by-one division, algorithm 4). The quotients are exact: the same numbers
-//! [`div_round`] returns, which the tests check against 128-bit arithmetic.
+//! their two-by-one division, algorithm 4). Every path returns the same quotients, which the
+//! tests check against 128-bit arithmetic.
 
-use super::scalar::{
-    div_normalized, div_round, leading_zeros32, mul_wide, mul_wide_u32, rounded_magnitude,
-    shl_words, with_sign_of, NARROW_CORE,
-};
+use super::scalar::{leading_zeros32, mul_wide, mul_wide_u32, shl_words, NARROW_CORE};
+
+/// `n / d` rounded to nearest with ties away from zero; `d` must be positive (a non-positive
+/// `d` returns 0). Never overflows.
+pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
+    if d <= 0 {
+        return 0;
+    }
+    let half = d / 2;
+    // Where 64-bit division is a long library routine (32-bit cores), the same quotient by a
+    // 32-bit division when the operands fit (most divisions of the pipeline), else by two or
+    // three when the divisor fits 32 bits (the depth divisions).
+    if cfg!(target_pointer_width = "32") {
+        if let Some(q) = div_round_u32(n, d) {
+            return q;
+        }
+        if let Some(q) = div_round_u64_u32(n, d) {
+            return q;
+        }
+    }
+    if n >= 0 {
+        n.saturating_add(half) / d
+    } else {
+        -(n.saturating_neg().saturating_add(half) / d)
+    }
+}
+
+/// `floor(n / d)` for `d > 0` and a quotient below 2³² (`n < d · 2³²`), by two 32-bit
+/// divisions of 16-bit digits (Knuth's algorithm D, as in Hacker's Delight's `divlu`): on
+/// 32-bit cores a 64-bit division is a library routine of a few hundred instructions; this
+/// takes a few dozen with a hardware 32-bit divide (Cortex-M3/M4), and on Cortex-M0 two
+/// library 32-bit divisions still cost less than the 64-bit one.
+const fn div_u64_u32(n: u64, d: u32) -> u32 {
+    // Normalise: the divisor's top bit set. n · 2^s < d · 2^s · 2³² ≤ 2⁶⁴: nothing is lost.
+    let s = leading_zeros32(d);
+    let (hi, lo) = shl_words(n, s);
+    div_normalized(hi, lo, d << s)
+}
+
+/// `⌊(hi · 2³² + lo) / v⌋` for a normalised `v` (top bit set) and `hi < v`: two 16-bit digits.
+#[inline(always)]
+const fn div_normalized(hi: u32, lo: u32, v: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let (vn1, vn0) = (v >> 16, v & 0xFFFF);
+    let (un1, un0) = (lo >> 16, lo & 0xFFFF);
+    let q1 = quotient_digit(hi, un1, vn1, vn0);
+    let un21 = hi
+        .wrapping_mul(B)
+        .wrapping_add(un1)
+        .wrapping_sub(q1.wrapping_mul(v));
+    let q0 = quotient_digit(un21, un0, vn1, vn0);
+    q1 * B + q0
+}
+
+/// One 16-bit digit of `(top · 2¹⁶ + next) / v`, `v = vn1 · 2¹⁶ + vn0` normalised (top bit
+/// set), `top < v`: estimated from the top 32 bits by the divisor's top 16, then corrected
+/// (at most twice). Every product and sum stays within 32 bits.
+#[inline(always)]
+const fn quotient_digit(top: u32, next: u32, vn1: u32, vn0: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let mut q = top / vn1;
+    let mut rhat = top - q * vn1;
+    while q >= B || q * vn0 > B * rhat + next {
+        q -= 1;
+        rhat += vn1;
+        if rhat >= B {
+            break;
+        }
+    }
+    q
+}
+
+/// `|n| + ⌊d/2⌋`, the magnitude [`div_round`] divides, saturated at `i64::MAX` as its 64-bit
+/// path saturates it (so every path returns the same quotient).
+#[inline(always)]
+const fn rounded_magnitude(n: i64, d: u32) -> u64 {
+    // At most 2⁶³ + 2³¹: no overflow.
+    let a = n.unsigned_abs() + (d / 2) as u64;
+    if a > i64::MAX as u64 {
+        i64::MAX as u64
+    } else {
+        a
+    }
+}
+
+/// `q` with the sign of `n` (`q ≤ i64::MAX`).
+#[inline(always)]
+const fn with_sign_of(n: i64, q: u64) -> i64 {
+    if n >= 0 {
+        q as i64
+    } else {
+        -(q as i64)
+    }
+}
+
+/// [`div_round`] for `d` that fits 32 bits, by [`div_u64_u32`]: twice for a quotient below
+/// 2³², once more for its high word (the depth gradients of small triangles).
+const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
+    if d <= 0 || d > u32::MAX as i64 {
+        return None;
+    }
+    let d = d as u32;
+    let a = rounded_magnitude(n, d);
+    let hi = (a >> 32) as u32;
+    let q = if hi < d {
+        div_u64_u32(a, d) as u64
+    } else {
+        let (qh, rh) = (hi / d, hi % d);
+        ((qh as u64) << 32) | div_u64_u32(((rh as u64) << 32) | (a & 0xFFFF_FFFF), d) as u64
+    };
+    Some(with_sign_of(n, q))
+}
+
+/// [`div_round`] by a 32-bit division, when `|n| + d/2` and `d > 0` fit 32 bits.
+const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
+    if d <= 0 || d > u32::MAX as i64 {
+        return None;
+    }
+    let a = rounded_magnitude(n, d as u32);
+    if a > u32::MAX as u64 {
+        return None;
+    }
+    Some(with_sign_of(n, (a as u32 / d as u32) as u64))
+}
 
 /// Rounded divisions by one divisor `d`: [`div_round`]`(n, d)` for every `n`, through a
 /// [`Divisor`] where division is a library routine, by the divide instruction elsewhere.
@@ -42,7 +162,7 @@ impl DivideBy {
 
 /// A positive divisor below 2³², prepared for [`Divisor::div_round`].
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Divisor {
+struct Divisor {
     /// The divisor.
     d: u32,
     /// `d` shifted left until its top bit is set, and by how much.
@@ -54,7 +174,7 @@ pub(crate) struct Divisor {
 
 impl Divisor {
     /// Prepares `d`; `None` unless `0 < d < 2³²`.
-    pub(crate) fn new(d: i64) -> Option<Divisor> {
+    fn new(d: i64) -> Option<Divisor> {
         let d = u32::try_from(d).ok().filter(|d| *d > 0)?;
         let shift = leading_zeros32(d);
         let norm = d << shift;
@@ -83,7 +203,7 @@ impl Divisor {
     }
 
     /// [`div_round`]`(n, d)`: `n / d` rounded to nearest, ties away from zero.
-    pub(crate) fn div_round(&self, n: i64) -> i64 {
+    fn div_round(&self, n: i64) -> i64 {
         let a = rounded_magnitude(n, self.d);
         let hi = (a >> 32) as u32;
         let q = if hi < self.d {
@@ -167,6 +287,92 @@ fn newton_reciprocal(d: u32) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The 32-bit division path gives the 64-bit path's quotient wherever it applies.
+    #[test]
+    fn div_round_32_bit_path_is_exact() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let mut checked = 0;
+        for _ in 0..200_000 {
+            let x = rng.next_u64();
+            let n = (x as i64) >> (31 + x % 33);
+            let d = ((x >> 20) as i64 & 0xFFFF_FFFF) >> ((x >> 8) % 32);
+            if let Some(q) = div_round_u32(n, d) {
+                let (half, wide) = (d / 2, if n >= 0 { 1 } else { -1 });
+                assert_eq!(q, wide * ((n.abs() + half) / d), "{n} / {d}");
+                checked += 1;
+            }
+        }
+        assert!(checked > 50_000);
+    }
+
+    /// The 32-bit-divisor paths give the 64-bit path's quotient for every numerator (quotients
+    /// of any size, the ends of the range) and every divisor that fits 32 bits.
+    #[test]
+    fn div_round_32_bit_divisor_paths_are_exact() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let ends = [i64::MIN, i64::MIN + 1, i64::MAX, i64::MAX - 1, 0, 1, -1];
+        for i in 0..300_000 {
+            let x = rng.next_u64();
+            let d = ((x >> 32) as i64 >> (x % 32)).max(1);
+            let n = match ends.get(i % 50) {
+                Some(&e) => e,
+                None => rng.next_u64() as i64 >> ((x >> 8) % 64),
+            };
+            let expected = div_round(n, d);
+            assert_eq!(div_round_u64_u32(n, d), Some(expected), "{n} / {d}");
+            if let Some(q) = div_round_u32(n, d) {
+                assert_eq!(q, expected, "{n} / {d}");
+            }
+        }
+        assert_eq!(div_round_u64_u32(5, 1 << 32), None);
+        assert_eq!(div_round_u64_u32(5, 0), None);
+    }
+
+    /// The two-digit 64/32 division gives the 64-bit quotient wherever it applies: divisors
+    /// of every size (normalisation shifts 0 to 31), quotients up to 2³² − 1, and the digit
+    /// estimates that need their corrections.
+    #[test]
+    fn div_round_64_by_32_bit_path_is_exact() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let mut checked = 0;
+        for i in 0..400_000u32 {
+            let x = rng.next_u64();
+            let d = ((x >> 32) as u32 >> (i % 32)).max(1) as i64;
+            let n = ((x as i64) >> (x % 40))
+                .wrapping_mul(d >> (i % 7))
+                .wrapping_add(x as i64 >> 40);
+            if let Some(q) = div_round_u64_u32(n, d) {
+                let (half, sign) = (d / 2, if n >= 0 { 1 } else { -1 });
+                // The magnitude saturates at i64::MAX, as the 64-bit path's does.
+                let a = (n.unsigned_abs() as i128 + half as i128).min(i64::MAX as i128);
+                let expected = sign * (a / d as i128) as i64;
+                assert_eq!(q, expected, "{n} / {d}");
+                checked += 1;
+            }
+        }
+        for (n, d) in [
+            (u64::MAX >> 1, u32::MAX),
+            ((1 << 32) - 1, 1),
+            (0, 7),
+            ((1 << 63) - 1, 1 << 31),
+        ] {
+            if let Some(q) = div_round_u64_u32(n as i64, d as i64) {
+                let a = (n as i128 + (d / 2) as i128).min(i64::MAX as i128);
+                assert_eq!(q, (a / d as i128) as i64);
+            }
+        }
+        // Quotients of every size below 2³², remainders of every size below d.
+        for _ in 0..200_000 {
+            let x = rng.next_u64();
+            let d = ((x >> 32) as u32 >> (x % 32)).max(1);
+            let q = (x as u32) >> ((x >> 5) % 32);
+            let r = ((x >> 16) as u32) % d;
+            let n = q as u64 * d as u64 + r as u64;
+            assert_eq!(div_u64_u32(n, d), q, "{n} / {d}");
+        }
+        assert!(checked > 100_000, "{checked}");
+    }
 
     /// The two-by-one division equals 128-bit division: random divisors of every size,
     /// numerators up to the largest the quotient allows, and the boundaries.

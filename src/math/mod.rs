@@ -1,5 +1,6 @@
 //! Numbers the pipeline computes with: fixed-point formats named by their use, binary angles
-//! with an integer sine, vectors and 4x4 matrices.
+//! with an integer sine, vectors and 4x4 matrices, and the divisions (rounded, and several by
+//! one divisor) that every stage shares.
 //!
 //! This module is the only place that names the `fixed` crate's types; the rest of the crate uses
 //! the aliases below. Every operation saturates instead of wrapping and never panics; where a
@@ -21,10 +22,10 @@ pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
 pub(crate) use scalar::{
-    below_bits, div_round, magnitude_bits, map3, mul_wide, narrow_cross, shr_round, DEPTH_ONE,
-    NARROW_CORE, UNIT_ONE,
+    below_bits, magnitude_bits, map3, mul_wide, narrow_cross, shr_round, DEPTH_ONE, NARROW_CORE,
+    UNIT_ONE,
 };
 
-pub(crate) use divide::DivideBy;
+pub(crate) use divide::{div_round, DivideBy};
 pub(crate) use sqrt::isqrt_u64;
 pub(crate) use vector::{cross_wide, dot_unit, normalize};

@@ -192,7 +192,7 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
         return None;
     }
     Some(scaled.map(|c| {
-        let q = super::scalar::div_round(c << 30, len);
+        let q = super::div_round(c << 30, len);
         q.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
     }))
 }

@@ -179,7 +179,7 @@ pub(crate) const fn floor_div(n: i64, d: i64) -> i64 {
 /// `(floor(n / d), n mod d)` for `d > 0`, the remainder in `[0, d)`. Where a division is a
 /// library routine of a hundred instructions or more (no hardware divide), quotients of −1, 0
 /// and 1 (steep edges, and edges starting near their first row) are found by comparisons.
-/// Otherwise a 32-bit division where the operands fit and the core is 32-bit.
+/// Otherwise [`floor_divmod32`] where the operands fit and the core is 32-bit.
 #[inline]
 pub(crate) fn floor_divmod(n: i64, d: i64) -> (i64, i64) {
     if NARROW_CORE {
@@ -187,14 +187,16 @@ pub(crate) fn floor_divmod(n: i64, d: i64) -> (i64, i64) {
             return qr;
         }
     }
-    let (q, r) = match (i32::try_from(n), i32::try_from(d)) {
-        // 32-bit cores only: there a 64-bit division is a long library routine.
-        (Ok(n), Ok(d)) if cfg!(target_pointer_width = "32") => {
-            let (q, r) = floor_divmod32(n, d);
-            return (q as i64, r as i64);
-        }
-        _ => (n / d, n % d),
-    };
+    // 32-bit cores only: there a 64-bit division is a long library routine.
+    if let (true, Ok(n32), Ok(d32)) = (
+        cfg!(target_pointer_width = "32"),
+        i32::try_from(n),
+        i32::try_from(d),
+    ) {
+        let (q, r) = floor_divmod32(n32, d32);
+        return (q as i64, r as i64);
+    }
+    let (q, r) = (n / d, n % d);
     if r < 0 {
         (q - 1, r + d)
     } else {
