@@ -26,7 +26,9 @@ mod plane;
 mod triangle;
 
 pub use line::{line_pixels, LinePixels};
-pub(crate) use plane::Plane;
+pub(crate) use plane::{DepthRows, Plane, RowStarts};
+#[cfg(test)]
+pub(crate) use plane::{ShortRows, WideRows};
 pub(crate) use triangle::spans_in_range;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
@@ -316,11 +318,6 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
             step_q: sq,
             step_r: sr,
         }
-    }
-
-    /// The whole part of the step: [`step`](Self::step) adds it, or it plus one.
-    pub(crate) fn step_quotient(&self) -> i32 {
-        self.step_q
     }
 
     /// Advances `k` by one; true when the value moved by one more than

@@ -10,7 +10,9 @@
 //! exclusive: the top-left rule, exactly. The crossings are rationals stepped from row to row
 //! with an integer quotient and remainder, so no precision is lost however long the edge.
 
-use super::{doubled_area, first_centre_from, CeilStepper, PixelRect, Plane, ScreenPoint};
+#[cfg(test)]
+use super::Plane;
+use super::{doubled_area, first_centre_from, CeilStepper, PixelRect, ScreenPoint};
 use crate::math::{mul_wide, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
@@ -196,19 +198,15 @@ impl TriangleSpans {
         }
     }
 
-    /// Calls `f` with every span left and the value of `plane` at its first pixel (bit for bit
-    /// [`Plane::at`]). The value is walked down the left edge: per row one addition of one of
-    /// the two steps the edge can take, instead of two 64-bit products.
+    /// The row the next span lies on.
+    pub(crate) fn row(&self) -> i32 {
+        self.y
+    }
+
+    /// Calls `f(x0, x1)` for every row left, top to bottom, with the row's pixels `x0..x1`
+    /// clipped to the clip rectangle's columns: empty (`x0 ≥ x1`) where it covers none of them.
     #[inline(always)]
-    pub(crate) fn for_each_with_plane(mut self, plane: &Plane, mut f: impl FnMut(Span, i64)) {
-        let (gx, gy) = plane.pixel_steps();
-        // The plane at the left edge's pixel, and its change to the next row's: down one row
-        // and right by the edge's step, or by one pixel more.
-        let left_walk = |s: &TriangleSpans| {
-            let small = gy.wrapping_add(gx.wrapping_mul(s.left.step_quotient() as i64));
-            (plane.at(s.left.value, s.y), small, small.wrapping_add(gx))
-        };
-        let (mut at_left, mut small, mut big) = left_walk(&self);
+    pub(crate) fn for_each_row(mut self, mut f: impl FnMut(i32, i32)) {
         // Two runs of rows, above and below the middle vertex's row: no per-row check for
         // the switch of the short edge.
         loop {
@@ -219,26 +217,18 @@ impl TriangleSpans {
                 self.y_end
             };
             while self.y < end {
-                let (l, r) = (self.left.value, self.right.value);
-                let (x0, x1) = (l.max(self.x_min), r.min(self.x_max));
-                if x0 < x1 {
-                    let start = if x0 == l {
-                        at_left
-                    } else {
-                        at_left.wrapping_add(gx.wrapping_mul(x0.wrapping_sub(l) as i64))
-                    };
-                    f(Span { y: self.y, x0, x1 }, start);
-                }
-                at_left = at_left.wrapping_add(if self.left.step_carry() { big } else { small });
+                f(
+                    self.left.value.max(self.x_min),
+                    self.right.value.min(self.x_max),
+                );
+                self.left.step();
                 self.right.step();
                 self.y += 1;
             }
             if self.y >= self.y_end {
                 return;
             }
-            if self.switch_at_split() {
-                (at_left, small, big) = left_walk(&self);
-            }
+            self.switch_at_split();
         }
     }
 
@@ -277,21 +267,24 @@ mod tests {
     use super::*;
     use std::vec::Vec;
 
-    /// `for_each_with_plane` visits the spans the iterator yields, with the plane at each
-    /// first pixel exactly as `Plane::at` computes it: triangles of every shape, partly off every side of
-    /// the clip rectangle, steep and flat gradients.
+    /// `for_each_row` visits the rows the iterator yields (and the empty ones between), and
+    /// the row walks of a plane give `Plane::at` at each first pixel: `PlaneRows` bit for bit,
+    /// `ShortRows` the u16 loop's start `⌊(v + 2²⁷) / 2¹³⌋` wherever that fits 31 bits.
+    /// Triangles of every shape and size (taller than a batch), partly off every side of the
+    /// clip rectangle, steep and flat gradients.
     #[test]
-    fn walked_plane_equals_plane_at_every_span() {
+    fn row_walks_equal_the_iterator_and_plane_at() {
+        use crate::raster::{RowStarts, ShortRows, WideRows};
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let mut next = |range: i32| {
             let x = rng.next_u64();
             (x % (2 * range as u64 + 1)) as i32 - range
         };
-        let clip = PixelRect::new(3, 5, 60, 44);
-        let mut spans_seen = 0;
+        let clip = PixelRect::new(3, 5, 60, 144);
+        let (mut spans_seen, mut short_seen) = (0, 0);
         for _ in 0..20_000 {
             let scale = [40, 400, 1200, 16_000][next(1).unsigned_abs() as usize];
-            let p = [(); 3].map(|_| ScreenPoint::new(500 + next(scale), 400 + next(scale)));
+            let p = [(); 3].map(|_| ScreenPoint::new(500 + next(scale), 1200 + next(scale)));
             let area = (p[1].x as i64 - p[0].x as i64) * (p[2].y as i64 - p[0].y as i64)
                 - (p[2].x as i64 - p[0].x as i64) * (p[1].y as i64 - p[0].y as i64);
             if area == 0 {
@@ -302,11 +295,34 @@ mod tests {
             let expected: Vec<(Span, i64)> = triangle_spans(p, clip)
                 .map(|s| (s, plane.at(s.x0, s.y)))
                 .collect();
-            let mut walked = Vec::new();
-            triangle_spans(p, clip).for_each_with_plane(&plane, |s, v| walked.push((s, v)));
+            let spans = triangle_spans(p, clip);
+            let y0 = spans.row();
+            let mut wide = plane.rows(clip.x0, y0);
+            let mut short = ShortRows::new(&plane, clip.x0, y0);
+            let mut start64 = WideRows::new(&plane, clip.x0, y0);
+            let (mut walked, mut y) = (Vec::new(), y0);
+            spans.for_each_row(|x0, x1| {
+                if x0 < x1 {
+                    let v = wide.at(x0);
+                    walked.push((Span { y, x0, x1 }, v));
+                    let start = v.wrapping_add(1 << 27) >> 13;
+                    if (0..1 << 31).contains(&start) {
+                        assert_eq!(short.at(x0) as i64, start, "{p:?}");
+                        assert_eq!(start64.at(x0) as i64, start, "{p:?}");
+                        short_seen += 1;
+                    }
+                }
+                wide.next_row();
+                short.next_row();
+                start64.next_row();
+                y += 1;
+            });
             assert_eq!(walked, expected, "{p:?}");
             spans_seen += walked.len();
         }
-        assert!(spans_seen > 100_000, "{spans_seen}");
+        assert!(
+            spans_seen > 100_000 && short_seen > 50_000,
+            "{spans_seen} {short_seen}"
+        );
     }
 }

@@ -28,18 +28,21 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
     }
 
     /// [`test_span`](Self::test_span) for a span of a triangle that
-    /// [`unclamped_step`](Self::unclamped_step) accepted, with the step it returned.
+    /// [`unclamped_step`](Self::unclamped_step) accepted, with the step it returned; `start`
+    /// is the interpolator's value `v` at the first pixel as the 32-bit loop holds it,
+    /// `⌊(v + 2²⁷) / 2¹³⌋`.
     #[doc(hidden)]
     #[inline(always)]
     fn test_span_unclamped<C: Copy>(
         depths: &mut [Self],
         colors: &mut [C],
-        start: i64,
+        start: i32,
         step: i32,
         test: DepthTest,
         next_color: impl FnMut() -> C,
     ) -> u32 {
         // Formats without a fast path never hand out a step; this only keeps the contract.
+        let start = ((start as i64) << 13).wrapping_sub(1 << 27);
         Self::test_span(depths, colors, start, (step as i64) << 13, test, next_color)
     }
 
@@ -119,7 +122,7 @@ impl DepthFormat for u16 {
             // Ends outside [0, 65536): clamp pixel by pixel.
             return clamped_span(depths, colors, start, step, test, next_color);
         }
-        Self::test_span_unclamped(depths, colors, start, st as i32, test, next_color)
+        Self::test_span_unclamped(depths, colors, a as i32, st as i32, test, next_color)
     }
 
     /// Pixel centres inside a triangle have depths between its vertices', and the plane errs
@@ -137,13 +140,12 @@ impl DepthFormat for u16 {
     fn test_span_unclamped<C: Copy>(
         depths: &mut [u16],
         colors: &mut [C],
-        start: i64,
+        acc: i32,
         st: i32,
         test: DepthTest,
         next_color: impl FnMut() -> C,
     ) -> u32 {
         // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
-        let acc = (start.wrapping_add(1 << 27) >> 13) as i32;
         match test {
             DepthTest::Less => unclamped_u16::<C, false>(depths, colors, acc, st, next_color),
             DepthTest::LessOrEqual => unclamped_u16::<C, true>(depths, colors, acc, st, next_color),

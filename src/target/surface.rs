@@ -10,7 +10,7 @@ use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::pipeline::Stats;
-use crate::raster::{PixelRect, Plane, Span, TriangleSpans};
+use crate::raster::{DepthRows, PixelRect, Plane, RowStarts, Span, TriangleSpans};
 use crate::shade::Paint;
 
 /// Depth across one triangle: the plane through its snapped vertices and the largest of their
@@ -130,52 +130,64 @@ where
         colors_for: impl FnMut(Span) -> G,
     ) {
         let (plane, step, test) = (&depth.plane, depth.plane.step_x(), self.test);
-        // Decided once per triangle: spans whose depths need no clamping.
+        // Spans start at column 0 or right of it (the clip rectangle's first column).
+        let (x_base, y) = (0, spans.row());
+        // Decided once per triangle: spans whose depths need no clamping, in 32-bit arithmetic
+        // (columns within 2¹⁶ of the first, as `ShortRows` needs).
         match D::unclamped_step(depth.max, step) {
-            Some(step) => self.each_span(spans, plane, stats, colors_for, |ds, cs, start, g| {
-                D::test_span_unclamped(ds, cs, start, step, test, g)
-            }),
-            None => self.each_span(spans, plane, stats, colors_for, |ds, cs, start, g| {
-                D::test_span(ds, cs, start, step, test, g)
-            }),
+            Some(step) if self.color.width() <= 1 << 16 => {
+                let rows = DepthRows::new(plane, x_base, y);
+                self.each_span(spans, rows, stats, colors_for, |ds, cs, start, g| {
+                    D::test_span_unclamped(ds, cs, start, step, test, g)
+                });
+            }
+            _ => self.each_span(
+                spans,
+                plane.rows(x_base, y),
+                stats,
+                colors_for,
+                |ds, cs, start, g| D::test_span(ds, cs, start, step, test, g),
+            ),
         }
     }
 
     /// Runs `test_span(depths, colours, depth at the first pixel, colour source)` on every
     /// span of a triangle, and counts the fragments and the writes into `stats`.
     #[inline(always)]
-    fn each_span<G: FnMut() -> C>(
+    fn each_span<G: FnMut() -> C, R: RowStarts>(
         &mut self,
         spans: TriangleSpans,
-        plane: &Plane,
+        mut depth: R,
         stats: &mut Stats,
         mut colors_for: impl FnMut(Span) -> G,
-        mut test_span: impl FnMut(&mut [D], &mut [C], i64, G) -> u32,
+        mut test_span: impl FnMut(&mut [D], &mut [C], R::Start, G) -> u32,
     ) {
-        let (first_row, width) = (self.first_row, self.color.width() as usize);
+        let (mut y, width) = (spans.row(), self.color.width() as usize);
         let (colors, depths) = (self.color.cells_all_mut(), self.depth.cells_all_mut());
         // The same length for both (they are), so that one bounds check per span serves both.
         let n = colors.len().min(depths.len());
         let (Some(colors), Some(depths)) = (colors.get_mut(..n), depths.get_mut(..n)) else {
             return;
         };
+        // Rows lie in the clip rectangle, the buffers' extent (same size, exactly
+        // width · height cells): a span's cells are x0..x1 of its row in both.
+        let mut row = (y.wrapping_sub(self.first_row) as u32 as usize).wrapping_mul(width);
         let (mut fragments, mut written) = (0u32, 0u32);
-        spans.for_each_with_plane(plane, |span, start| {
-            // Spans lie in the clip rectangle, the buffers' extent (same size, exactly
-            // width · height cells): the span's cells are x0..x1 of its row in both.
-            let row = (span.y.wrapping_sub(first_row) as u32 as usize).wrapping_mul(width);
-            let first = row.wrapping_add(span.x0 as u32 as usize);
-            // x1 > x0: the length is positive; an end that would overflow is no span at all.
-            let len = span.x1.wrapping_sub(span.x0) as u32 as usize;
-            let Some(end) = first.checked_add(len) else {
-                return;
-            };
-            let (Some(cs), Some(ds)) = (colors.get_mut(first..end), depths.get_mut(first..end))
-            else {
-                return;
-            };
-            fragments = fragments.wrapping_add(cs.len() as u32);
-            written = written.wrapping_add(test_span(ds, cs, start, colors_for(span)));
+        spans.for_each_row(|x0, x1| {
+            if x0 < x1 {
+                let first = row.wrapping_add(x0 as u32 as usize);
+                let end = row.wrapping_add(x1 as u32 as usize);
+                if let (Some(cs), Some(ds)) =
+                    (colors.get_mut(first..end), depths.get_mut(first..end))
+                {
+                    fragments = fragments.wrapping_add(cs.len() as u32);
+                    let g = colors_for(Span { y, x0, x1 });
+                    written = written.wrapping_add(test_span(ds, cs, depth.at(x0), g));
+                }
+            }
+            depth.next_row();
+            row = row.wrapping_add(width);
+            y = y.wrapping_add(1);
         });
         stats.fragments = stats.fragments.saturating_add(fragments);
         stats.written = stats.written.saturating_add(written);
