@@ -160,6 +160,46 @@ impl<const N: usize> Lighting<N> {
     pub(crate) fn lights(&self) -> &[PreparedLight] {
         &self.lights
     }
+
+    /// The same lights seen from an object's model space, for an object whose normal matrix
+    /// (world from model, see [`Mat4::normal_matrix`](crate::math::Mat4)) is a rotation times a
+    /// scale: then `n · l` in world space equals `n' · Rᵀl` in model space for the model-space
+    /// unit normal `n'`, and flat shading needs no product by the normal matrix per triangle.
+    /// `None` for any other matrix (a non-uniform scale or a shear: normals must be carried).
+    pub(crate) fn in_model_space(&self, normal_matrix: &[[i32; 3]; 3]) -> Option<Lighting<N>> {
+        if !is_scaled_rotation(normal_matrix) {
+            return None;
+        }
+        let mut lights = self.lights.clone();
+        for light in &mut lights {
+            // Nᵀl = s·Rᵀl: its direction is Rᵀl (entries within ±2³⁰: products below 2⁶⁰).
+            let [x, y, z] = light.direction.map(i64::from);
+            let back = core::array::from_fn(|j| {
+                let col = |i: usize| normal_matrix[i][j] as i64;
+                col(0) * x + col(1) * y + col(2) * z
+            });
+            light.direction = normalize(back)?;
+        }
+        Some(Lighting {
+            ambient: self.ambient,
+            lights,
+        })
+    }
+}
+
+/// True when `m` is a rotation times a scale (within 2⁻²⁰, far below what 8-bit colour
+/// shows): its columns orthogonal and of one length, `mᵀm = s²·I`. Entries within ±2³⁰ (a
+/// normal matrix): every product below 2⁶⁰, every sum of three below 2⁶².
+fn is_scaled_rotation(m: &[[i32; 3]; 3]) -> bool {
+    let dot = |a: usize, b: usize| -> i64 { (0..3).map(|i| m[i][a] as i64 * m[i][b] as i64).sum() };
+    let s2 = dot(0, 0);
+    let tolerance = s2 >> 12;
+    s2 > 0
+        && (dot(1, 1) - s2).abs() <= tolerance
+        && (dot(2, 2) - s2).abs() <= tolerance
+        && dot(0, 1).abs() <= tolerance
+        && dot(0, 2).abs() <= tolerance
+        && dot(1, 2).abs() <= tolerance
 }
 
 /// The objects of a frame and their lighting.

@@ -12,6 +12,7 @@ use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::math::{map3, Mat4};
 use crate::mesh::{Object, Triangle};
 use crate::raster::{line_pixels, spans_in_range, PixelRect, Plane, ScreenPoint};
+use crate::scene::Lighting;
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
 use crate::target::{DepthPlane, RasterTarget};
 
@@ -45,16 +46,19 @@ fn kept(cull: Cull, area: i64, stats: &mut Stats) -> bool {
 }
 
 /// Per-object constants for drawing.
-struct ObjectSetup<'o> {
+struct ObjectSetup<'o, const N: usize> {
     object: &'o Object<'o>,
     vertices: &'o [ScreenVertex],
     frame: &'o Frame,
     /// Computed when the first triangle of the object needs clipping (most objects need none).
     clip_from_model: Cell<Option<Mat4>>,
     normal_matrix: [[i32; 3]; 3],
+    /// For flat shading, the lights seen from model space when the model matrix is a rotation
+    /// times a scale: face normals then need no normal matrix.
+    model_lighting: Option<Lighting<N>>,
 }
 
-impl ObjectSetup<'_> {
+impl<const N: usize> ObjectSetup<'_, N> {
     fn clip_from_model(&self) -> Mat4 {
         if let Some(m) = self.clip_from_model.get() {
             return m;
@@ -119,7 +123,7 @@ fn fill<T: RasterTarget, P: Paint>(
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
-    fn objects(&self) -> impl Iterator<Item = ObjectSetup<'_>> {
+    fn objects(&self) -> impl Iterator<Item = ObjectSetup<'_, N>> {
         let mut offset = 0usize;
         self.scene.objects.iter().map(move |object| {
             let n = object.mesh.positions().len();
@@ -128,12 +132,20 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 .get(offset..offset.saturating_add(n))
                 .unwrap_or(&[]);
             offset = offset.saturating_add(n);
+            let normal_matrix = object.model.normal_matrix();
+            // Per-vertex shading lights the vertices in world space (in `prepare`).
+            let model_lighting = if S::PER_VERTEX {
+                None
+            } else {
+                self.scene.lighting.in_model_space(&normal_matrix)
+            };
             ObjectSetup {
                 object,
                 vertices,
                 frame: &self.frame,
                 clip_from_model: Cell::new(None),
-                normal_matrix: object.model.normal_matrix(),
+                normal_matrix,
+                model_lighting,
             }
         })
     }
@@ -222,7 +234,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     fn fill_face<T: RasterTarget>(
         &self,
         target: &mut T,
-        setup: &ObjectSetup<'_>,
+        setup: &ObjectSetup<'_, N>,
         tri: &Triangle,
         v: [(ScreenPoint, i32, [i32; 3]); 3],
         area: i64,
@@ -237,18 +249,22 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             return Ok(());
         }
         let z = map3(v, |v| v.1);
+        // Flat shading in model space where the model matrix allows it (see `in_model_space`).
+        let (lighting, normal_matrix) = match &setup.model_lighting {
+            Some(lighting) => (lighting, None),
+            None => (&self.scene.lighting, Some(&setup.normal_matrix)),
+        };
         let face = FaceInputs {
             base: setup.object.color,
             positions: setup.object.mesh.positions(),
             indices: tri,
             extent: setup.object.mesh.extent(),
-            normal_matrix: &setup.normal_matrix,
+            normal_matrix,
             normalize: self.frame.precision.normalize(),
             vertices: &v,
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
         };
-        let lighting = &self.scene.lighting;
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
             let paint = self.shading.paint(&face, lighting);

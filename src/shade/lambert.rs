@@ -64,17 +64,52 @@ fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
     })
 }
 
-/// Unit world-space face normal (Q2.30) of a model-space triangle, counter-clockwise front; `None`
-/// for a zero-area triangle. Edges of any length: the cross product is exact in i64 after the
-/// edges are shifted below 2³⁰ (case T33). `extent` bounds every coordinate's magnitude (the
-/// mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹ the edges need no shifting, and
-/// are not even checked.
+/// Unit face normal (Q2.30) of a model-space triangle, counter-clockwise front, in world space
+/// through `normal_matrix` (in model space without one); `None` for a zero-area triangle.
+#[cfg(test)]
 pub(crate) fn face_normal(
     p: [[i32; 3]; 3],
-    normal_matrix: &[[i32; 3]; 3],
+    normal_matrix: Option<&[[i32; 3]; 3]>,
     method: Normalize,
     extent: u32,
 ) -> Option<[i32; 3]> {
+    method.unit(face_direction(p, normal_matrix, extent))
+}
+
+/// Lit colour of a model-space triangle, counter-clockwise front, flat shaded: Lambert of its
+/// unit face normal, in world space through `normal_matrix` (in the lighting's space without
+/// one). A face that turns from every light gets the ambient colour without being normalised:
+/// its normal's products with the lights are all ≤ 0, so Lambert adds nothing.
+pub(crate) fn flat_color<const N: usize>(
+    base: Rgb888,
+    p: [[i32; 3]; 3],
+    normal_matrix: Option<&[[i32; 3]; 3]>,
+    method: Normalize,
+    extent: u32,
+    lighting: &Lighting<N>,
+) -> Rgb888 {
+    let n = face_direction(p, normal_matrix, extent);
+    // Components below 2³⁰ and unit directions: products below 2⁶⁰, sums below 2⁶².
+    let faces = |l: &[i32; 3]| (0..3).map(|i| n[i] * l[i] as i64).sum::<i64>() > 0;
+    let unit = if lighting.lights().iter().any(|l| faces(&l.direction)) {
+        method.unit(n)
+    } else {
+        None
+    };
+    lambert(base, unit, lighting)
+}
+
+/// The face normal of a model-space triangle, counter-clockwise front, at some scale below
+/// 2³⁰ per component, in world space through `normal_matrix` (in model space without one);
+/// zero for a zero-area triangle. Edges of any length: the cross product is exact in i64 after
+/// the edges are shifted below 2³⁰ (case T33). `extent` bounds every coordinate's magnitude (the
+/// mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹ the edges need no shifting, and
+/// are not even checked.
+fn face_direction(
+    p: [[i32; 3]; 3],
+    normal_matrix: Option<&[[i32; 3]; 3]>,
+    extent: u32,
+) -> [i64; 3] {
     let [a, b, c] = p;
     let short = extent < 1 << 29;
     let edge = |q: [i32; 3]| {
@@ -92,8 +127,11 @@ pub(crate) fn face_normal(
         map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
     };
     // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
-    let n = cross_wide(edge(b), edge(c));
-    method.unit(apply(normal_matrix, shrink(n)))
+    let n = shrink(cross_wide(edge(b), edge(c)));
+    match normal_matrix {
+        Some(m) => shrink(apply(m, n)),
+        None => n,
+    }
 }
 
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
@@ -163,11 +201,12 @@ mod tests {
                 .map(|c| c.unsigned_abs())
                 .max()
                 .unwrap_or(0);
-            let n = face_normal(raw, &IDENTITY, Normalize::Newton, extent).expect("non-degenerate");
+            let n = face_normal(raw, Some(&IDENTITY), Normalize::Newton, extent)
+                .expect("non-degenerate");
             // The unchecked short edges give what the checked ones give.
             assert_eq!(
                 Some(n),
-                face_normal(raw, &IDENTITY, Normalize::Newton, u32::MAX)
+                face_normal(raw, Some(&IDENTITY), Normalize::Newton, u32::MAX)
             );
             let p = raw.map(|v| v.map(|c| c as f64));
             let e1 = [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]];
@@ -183,10 +222,10 @@ mod tests {
             assert!(cos > 1f64.to_radians().cos(), "scale {scale}: cos {cos}");
         }
         // A zero-area triangle has no normal (ambient only), never a division.
-        assert!(face_normal([[5, 5, 5]; 3], &IDENTITY, Normalize::Newton, 5).is_none());
+        assert!(face_normal([[5, 5, 5]; 3], None, Normalize::Newton, 5).is_none());
         assert!(face_normal(
             [[0, 0, 0], [1 << 16, 0, 0], [2 << 16, 0, 0]],
-            &IDENTITY,
+            Some(&IDENTITY),
             Normalize::Newton,
             2 << 16
         )
@@ -197,7 +236,8 @@ mod tests {
             [i32::MAX, i32::MIN, 0],
             [i32::MIN, i32::MAX, 7],
         ];
-        assert!(face_normal(big, &IDENTITY, Normalize::Newton, u32::MAX).is_some());
+        assert!(face_normal(big, Some(&IDENTITY), Normalize::Newton, u32::MAX).is_some());
+        assert!(face_normal(big, None, Normalize::Newton, u32::MAX).is_some());
     }
 
     /// T34: Lambert with random unit vectors, zero normals and back-facing normals: intensity in

@@ -11,7 +11,7 @@
 mod lambert;
 mod paint;
 
-pub(crate) use lambert::{face_normal, lambert, vertex_normal};
+pub(crate) use lambert::{flat_color, lambert, vertex_normal};
 pub use paint::{
     Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
 };
@@ -38,8 +38,9 @@ pub struct FaceInputs<'a> {
     pub(crate) indices: &'a Triangle,
     /// The mesh's largest coordinate magnitude (raw Q16.16).
     pub(crate) extent: u32,
-    /// World-from-model normal matrix (cofactor, raw Q16.16).
-    pub(crate) normal_matrix: &'a [[i32; 3]; 3],
+    /// World-from-model normal matrix (cofactor, raw Q16.16); `None` when the lighting is
+    /// already in model space.
+    pub(crate) normal_matrix: Option<&'a [[i32; 3]; 3]>,
     /// How normals are normalised.
     pub(crate) normalize: Normalize,
     /// Per vertex: snapped screen position, depth (Q1.30) and lit colour (Gouraud).
@@ -122,13 +123,14 @@ impl Shading for Flat {
     type Paint = SolidPaint;
     const PER_VERTEX: bool = false;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
-        let n = face_normal(
+        SolidPaint(flat_color(
+            face.base,
             face.model(),
             face.normal_matrix,
             face.normalize,
             face.extent,
-        );
-        SolidPaint(lambert(face.base, n, lighting))
+            lighting,
+        ))
     }
 }
 
