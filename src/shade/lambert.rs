@@ -292,3 +292,79 @@ mod tests {
         assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &hot), base);
     }
 }
+
+#[cfg(test)]
+mod model_space_tests {
+    use super::*;
+    use crate::math::{Angle, Mat4, Scalar, Vec3};
+    use crate::scene::{DirectionalLight, LightColor};
+
+    fn lighting() -> Lighting<2> {
+        let mut l = Lighting::<2>::new(LightColor::gray(Scalar::from_num(0.2)));
+        for (d, c) in [((-1, 1, 1), 0.6), ((2, -1, 3), 0.5)] {
+            let light = DirectionalLight::new(
+                Vec3::from_int(d.0, d.1, d.2),
+                LightColor::gray(Scalar::from_num(c)),
+            );
+            l.push(light).unwrap();
+        }
+        l
+    }
+
+    /// Flat shading in model space (lights turned by a rotation's transpose once) gives the
+    /// colour of shading in world space (normals through the normal matrix) within one 8-bit
+    /// step, for rotations about every axis and uniform scales; a non-uniform scale or a shear
+    /// keeps the world-space path, and so does a rotation scaled so small that its Q16.16
+    /// entries are no longer a rotation within 2⁻¹².
+    #[test]
+    fn model_space_lighting_equals_world_space() {
+        let lighting = lighting();
+        let base = Rgb888::new(255, 160, 64);
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let mut next = |range: i32| {
+            let x = rng.next_u64();
+            (x % (2 * range as u64 + 1)) as i32 - range
+        };
+        let mut compared = 0;
+        for k in 0..200 {
+            let turn = |d: i32| Angle::from_degrees(d);
+            let scale = Scalar::from_num([1.0, 0.01, 37.5][k % 3]);
+            let small = k % 3 == 1;
+            let m = Mat4::rotation_z(turn(next(180)))
+                * Mat4::rotation_y(turn(next(180)))
+                * Mat4::rotation_x(turn(next(180)))
+                * Mat4::scaling(Vec3::new(scale, scale, scale));
+            let nm = m.normal_matrix();
+            let Some(model) = lighting.in_model_space(&nm) else {
+                assert!(small, "{m:?}");
+                continue;
+            };
+            for _ in 0..50 {
+                let p = [(); 3].map(|_| [(); 3].map(|_| next(1 << 17)));
+                let world = flat_color(base, p, Some(&nm), Normalize::Newton, 1 << 17, &lighting);
+                let local = flat_color(base, p, None, Normalize::Newton, 1 << 17, &model);
+                let (w, l) = (
+                    [world.r(), world.g(), world.b()],
+                    [local.r(), local.g(), local.b()],
+                );
+                for (a, b) in w.iter().zip(l) {
+                    assert!(a.abs_diff(b) <= 1, "{p:?}: {world:?} vs {local:?}");
+                }
+                compared += 1;
+            }
+        }
+        assert!(compared >= 6_600, "{compared}");
+        let stretched = Mat4::scaling(Vec3::new(Scalar::ONE, Scalar::from_num(1.01), Scalar::ONE));
+        assert!(lighting
+            .in_model_space(&stretched.normal_matrix())
+            .is_none());
+        let one = 1 << 16;
+        let sheared = Mat4::from_bits([
+            [one, 1 << 12, 0, 0],
+            [0, one, 0, 0],
+            [0, 0, one, 0],
+            [0, 0, 0, one],
+        ]);
+        assert!(lighting.in_model_space(&sheared.normal_matrix()).is_none());
+    }
+}
