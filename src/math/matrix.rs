@@ -156,6 +156,36 @@ impl Mat4 {
         [row(r0), row(r1), row(r2), row(r3)]
     }
 
+    /// The vertex stage's transform of a point of a mesh whose coordinates lie within
+    /// ±`extent`: [`transform_short`](Self::transform_short) below 2²⁹ (every unit-scale
+    /// model), else [`transform_wide`](Self::transform_wide). Clipping transforms a triangle's
+    /// vertices again through this, so that shared vertices land on the same pixels.
+    #[inline(always)]
+    pub(crate) fn transform_within(&self, p: [i32; 3], extent: u32) -> [i64; 4] {
+        if extent < 1 << 29 {
+            self.transform_short(p)
+        } else {
+            self.transform_wide(p)
+        }
+    }
+
+    /// [`transform_wide`](Self::transform_wide) of a point whose coordinates lie within ±2²⁹:
+    /// each product is then below 2⁶⁰ and the sum needs no halving, so it is rounded once
+    /// (half up), exactly.
+    #[inline]
+    fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
+        let [x, y, z] = p;
+        let row = |r: &[i32; 4]| {
+            let s = mul_wide(r[0], x)
+                .wrapping_add(mul_wide(r[1], y))
+                .wrapping_add(mul_wide(r[2], z))
+                .wrapping_add((r[3] as i64) << 16);
+            (s + (1 << 15)) >> 16
+        };
+        let [r0, r1, r2, r3] = &self.m;
+        [row(r0), row(r1), row(r2), row(r3)]
+    }
+
     /// The upper-left 3x3 block's cofactor matrix (`det · M⁻ᵀ`) times a power of two: it
     /// carries normals from model to world space, for any scale, with no division. Only
     /// directions matter (normals are normalised after), so the exact cofactors are shifted

@@ -84,7 +84,9 @@ impl<const N: usize> ObjectSetup<'_, N> {
             .map(|v| v.rgb)
             .unwrap_or_default();
         ClipVertex {
-            c: self.clip_from_model().transform_wide(p.to_bits()),
+            c: self
+                .clip_from_model()
+                .transform_within(p.to_bits(), self.object.mesh.extent()),
             rgb: rgb.map(|c| (c as i32) << 8),
         }
     }

@@ -229,9 +229,10 @@ impl Frame {
             } else {
                 None
             };
+            let extent = object.mesh.extent();
             for (i, p) in object.mesh.positions().iter().enumerate() {
                 let Some(slot) = slots.next() else { break };
-                let c = clip_from_model.transform_wide(p.to_bits());
+                let c = clip_from_model.transform_within(p.to_bits(), extent);
                 let (code, pt, z) = outcode_and_project(c, &map);
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {

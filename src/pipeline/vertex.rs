@@ -98,9 +98,11 @@ fn reduce_shift(c: &[i64; 4]) -> u32 {
 
 #[inline]
 pub(crate) fn reduce(c: [i64; 4]) -> [i64; 4] {
-    // The common case, coordinates below 2³¹, needs nothing.
-    let lim = 1i64 << 31;
-    if c.iter().all(|v| *v > -lim && *v < lim) {
+    // The common case, coordinates below 2³¹, needs nothing: `v + 2³¹ − 1` lies in
+    // [0, 2³² − 1) exactly then (four comparisons without a branch between them).
+    let lim = 1u64 << 31;
+    let fits = |v: i64| (v as u64).wrapping_add(lim - 1) < 2 * lim - 1;
+    if fits(c[0]) & fits(c[1]) & fits(c[2]) & fits(c[3]) {
         return c;
     }
     let s = reduce_shift(&c);
