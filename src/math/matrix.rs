@@ -291,6 +291,31 @@ impl Mul<&Mat4> for &Mat4 {
 mod tests {
     use super::*;
 
+    /// The short transform is the exact product rounded once (half up), checked in i128, for
+    /// any matrix and points within ±2²⁹; the wide one within one unit of it.
+    #[test]
+    fn short_transform_rounds_once() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        for _ in 0..100_000 {
+            let mut next = |bits: u64| {
+                let x = rng.next_u64();
+                (x as i64 >> (x % bits + 64 - bits)) as i32
+            };
+            let m = Mat4::from_bits([[0; 4]; 4].map(|r| r.map(|_: i32| next(32))));
+            let limit = (1 << 29) - 1;
+            let p = [0; 3].map(|_: i32| next(31).clamp(-limit, limit));
+            let short = m.transform_within(p, limit as u32);
+            let wide = m.transform_wide(p);
+            for (i, row) in m.m.iter().enumerate() {
+                let exact = (0..3).map(|j| row[j] as i128 * p[j] as i128).sum::<i128>()
+                    + ((row[3] as i128) << 16);
+                let rounded = (exact + (1 << 15)) >> 16;
+                assert_eq!(short[i] as i128, rounded, "{m:?} {p:?}");
+                assert!((wide[i] as i128 - rounded).abs() <= 1, "{m:?} {p:?}");
+            }
+        }
+    }
+
     #[test]
     fn rotations_follow_right_hand_rule() {
         let q = Angle::from_degrees(90);
