@@ -4,7 +4,9 @@
 //! others exist so that their error and cost can be measured (`docs/accuracy.md`) and chosen.
 
 use super::angle::Angle;
-use super::scalar::{magnitude_bits, map3, shr_low_word, shr_round, NARROW_CORE, UNIT_ONE};
+use super::scalar::{
+    leading_zeros32, magnitude_bits, map3, shr_low_word, shr_round, NARROW_CORE, UNIT_ONE,
+};
 use super::sqrt::rsqrt_q45;
 use super::vector::normalize;
 use super::Unit;
@@ -118,6 +120,15 @@ pub enum Normalize {
 }
 
 impl Normalize {
+    /// [`unit`](Self::unit) of a vector whose components fit 32 bits (a face normal): the same
+    /// result, in 32-bit words where the method allows.
+    pub(crate) fn unit32(self, v: [i32; 3]) -> Option<[i32; 3]> {
+        match self {
+            Normalize::Newton => newton_unit(shrink_to_15_bits32(v)?),
+            _ => self.unit(map3(v, i64::from)),
+        }
+    }
+
     /// Unit vector (Q2.30) of a non-zero integer vector of any scale; `None` for zero.
     pub(crate) fn unit(self, v: [i64; 3]) -> Option<[i32; 3]> {
         match self {
@@ -152,10 +163,35 @@ fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
     }))
 }
 
+/// The vector shifted so that its largest component lies in [2¹⁴, 2¹⁵), for components
+/// that fit 32 bits: [`shrink_to_15_bits`] in 32-bit words (the same values); `None` for zero.
+#[inline]
+fn shrink_to_15_bits32(v: [i32; 3]) -> Option<[i64; 3]> {
+    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+    let bits = 32 - leading_zeros32(max);
+    if bits == 0 {
+        return None;
+    }
+    let shift = bits as i32 - 15;
+    Some(map3(v, |x| {
+        // Right: the result is below 2¹⁵; left: below 2¹⁵ before, so below 2²⁹ after.
+        if shift > 0 {
+            (x >> shift) as i64
+        } else {
+            (x << (-shift) as u32) as i64
+        }
+    }))
+}
+
 /// [`Normalize::Newton`]: relative error below 2·10⁻⁶, no division and no loop.
 #[inline]
 fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
-    let c = shrink_to_15_bits(v)?;
+    newton_unit(shrink_to_15_bits(v)?)
+}
+
+/// The unit vector of `c`, whose largest component lies in [2¹⁴, 2¹⁵).
+#[inline(always)]
+fn newton_unit(c: [i64; 3]) -> Option<[i32; 3]> {
     // The sum of squares lies in [2²⁸, 3·2³⁰): 32-bit squares and sum (components below 2¹⁵).
     let s = c.iter().map(|&x| (x as i32 * x as i32) as u32).sum::<u32>();
     let (m, quartered) = if s >= 1 << 30 {
@@ -236,6 +272,38 @@ mod tests {
         assert!(table < 3.2e-3 && table > 1e-3, "table {table}");
         #[cfg(feature = "micromath")]
         assert!(worst_trig(Trig::Micromath) < 2e-3);
+    }
+
+    /// The 32-bit normalisation returns what the 64-bit one returns, for every method and
+    /// vectors of every scale that fits 32 bits.
+    #[test]
+    fn unit32_equals_unit() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let methods = [
+            Normalize::Newton,
+            Normalize::Exact,
+            #[cfg(feature = "micromath")]
+            Normalize::Micromath,
+        ];
+        for _ in 0..200_000 {
+            let r = rng.next_u64();
+            let v = [0, 21, 42].map(|k| ((r >> k) as i32) >> ((r >> (k + 16)) % 32));
+            for method in methods {
+                assert_eq!(method.unit32(v), method.unit(v.map(i64::from)), "{v:?}");
+            }
+        }
+        for v in [
+            [0; 3],
+            [i32::MIN, i32::MAX, 0],
+            [i32::MIN; 3],
+            [1, 0, 0],
+            [-1, -1, -1],
+        ] {
+            assert_eq!(
+                Normalize::Newton.unit32(v),
+                Normalize::Newton.unit(v.map(i64::from))
+            );
+        }
     }
 
     /// M9 for every normalisation method, over many scales.

@@ -73,7 +73,7 @@ pub(crate) fn face_normal(
     method: Normalize,
     extent: u32,
 ) -> Option<[i32; 3]> {
-    method.unit(face_direction(p, normal_matrix, extent))
+    method.unit32(face_direction(p, normal_matrix, extent))
 }
 
 /// Lit colour of a model-space triangle, counter-clockwise front, flat shaded: Lambert of its
@@ -90,9 +90,9 @@ pub(crate) fn flat_color<const N: usize>(
 ) -> Rgb888 {
     let n = face_direction(p, normal_matrix, extent);
     // Components below 2³⁰ and unit directions: products below 2⁶⁰, sums below 2⁶².
-    let faces = |l: &[i32; 3]| (0..3).map(|i| n[i] * l[i] as i64).sum::<i64>() > 0;
+    let faces = |l: &[i32; 3]| (0..3).map(|i| mul_wide(n[i], l[i])).sum::<i64>() > 0;
     let unit = if lighting.lights().iter().any(|l| faces(&l.direction)) {
-        method.unit(n)
+        method.unit32(n)
     } else {
         None
     };
@@ -100,7 +100,7 @@ pub(crate) fn flat_color<const N: usize>(
 }
 
 /// The face normal of a model-space triangle, counter-clockwise front, at some scale below
-/// 2³⁰ per component, in world space through `normal_matrix` (in model space without one);
+/// 2³⁰ per component (so in 32-bit words), in world space through `normal_matrix` (in model space without one);
 /// zero for a zero-area triangle. Edges of any length: the cross product is exact in i64 after
 /// the edges are shifted below 2³⁰ (case T33). `extent` bounds every coordinate's magnitude (the
 /// mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹ the edges need no shifting, and
@@ -109,7 +109,7 @@ fn face_direction(
     p: [[i32; 3]; 3],
     normal_matrix: Option<&[[i32; 3]; 3]>,
     extent: u32,
-) -> [i64; 3] {
+) -> [i32; 3] {
     let [a, b, c] = p;
     let short = extent < 1 << 29;
     let edge = |q: [i32; 3]| {
@@ -128,10 +128,12 @@ fn face_direction(
     };
     // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
     let n = shrink(cross_wide(edge(b), edge(c)));
-    match normal_matrix {
+    let n = match normal_matrix {
         Some(m) => shrink(apply(m, n)),
         None => n,
-    }
+    };
+    // Below 2³⁰ after `shrink`.
+    map3(n, |c| c as i32)
 }
 
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
