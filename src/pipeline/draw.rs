@@ -113,10 +113,10 @@ fn fill<T: RasterTarget, P: Paint>(
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
     let plane = if T::DEPTH {
-        let z = map3(z, |z| (z as i64) << 14);
+        // Depth in Q1.44 (the pipeline's Q1.30 shifted by 14).
         DepthPlane {
-            plane: Plane::new(&p, z, area),
-            max: z[0].max(z[1]).max(z[2]),
+            plane: Plane::scaled(&p, z, 14, area),
+            max: (z[0].max(z[1]).max(z[2]) as i64) << 14,
         }
     } else {
         DepthPlane::default()

@@ -2,7 +2,7 @@
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
 use super::ScreenPoint;
-use crate::math::{DivideBy, SUBPIXEL_SCALE};
+use crate::math::{mul_wide, DivideBy, SUBPIXEL_SCALE};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels.
 ///
@@ -32,6 +32,28 @@ impl Plane {
         let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
         let nx = dv1.wrapping_mul(dy2).wrapping_sub(dv2.wrapping_mul(dy1));
         let ny = dx1.wrapping_mul(dv2).wrapping_sub(dx2.wrapping_mul(dv1));
+        Plane::from_numerators(a, v[0], nx, ny, area2)
+    }
+
+    /// [`new`](Self::new) for values `v[i] << shift` with `|v[i]| ≤ 2³⁰` (depth, colour
+    /// channels): the numerators from 32-bit differences and products, shifted once, the same
+    /// values (exact, as their true values fit).
+    #[inline]
+    pub(crate) fn scaled(p: &[ScreenPoint; 3], v: [i32; 3], shift: u32, area2: i64) -> Plane {
+        let [a, b, c] = *p;
+        // Coordinates within ±2¹⁵ and values within ±2³⁰: every difference fits i32.
+        let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
+        let (dx2, dy2) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
+        let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
+        let nx = mul_wide(dv1, dy2).wrapping_sub(mul_wide(dv2, dy1));
+        let ny = mul_wide(dx1, dv2).wrapping_sub(mul_wide(dx2, dv1));
+        let v0 = (v[0] as i64) << shift;
+        Plane::from_numerators(a, v0, nx << shift, ny << shift, area2)
+    }
+
+    /// The plane through `a` (value `v0`) with gradient numerators `nx`, `ny` over `area2`.
+    #[inline(always)]
+    fn from_numerators(a: ScreenPoint, v0: i64, nx: i64, ny: i64, area2: i64) -> Plane {
         let (nx, ny, den) = if area2 < 0 {
             (nx.wrapping_neg(), ny.wrapping_neg(), area2.wrapping_neg())
         } else {
@@ -42,7 +64,7 @@ impl Plane {
         Plane {
             x0: a.x,
             y0: a.y,
-            v0: v[0],
+            v0,
             gx,
             gy,
         }
@@ -236,5 +258,43 @@ impl RowStarts for ShortRows {
             .wrapping_add(self.row)
             .wrapping_add((sum >> DROPPED) as i32);
         self.alpha = sum & ((1 << DROPPED) - 1);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `scaled` is `new` of the shifted values, bit for bit: coordinates across ±2¹⁵, values
+    /// across ±2³⁰, both signs of area, the shifts the pipeline uses.
+    #[test]
+    fn scaled_equals_new() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let mut next = |range: i64| {
+            let x = rng.next_u64();
+            ((x % (2 * range as u64 + 1)) as i64 - range) as i32
+        };
+        let mut planes = 0;
+        for _ in 0..200_000 {
+            let scale = [1 << 5, 1 << 10, 1 << 15][next(1).unsigned_abs() as usize];
+            let p = [(); 3].map(|_| ScreenPoint::new(next(scale), next(scale)));
+            let area = (p[1].x as i64 - p[0].x as i64) * (p[2].y as i64 - p[0].y as i64)
+                - (p[2].x as i64 - p[0].x as i64) * (p[1].y as i64 - p[0].y as i64);
+            if area == 0 {
+                continue;
+            }
+            let v = [(); 3].map(|_| next(1 << 30));
+            for shift in [14, 28] {
+                let wide = Plane::new(&p, v.map(|v| (v as i64) << shift), area);
+                let short = Plane::scaled(&p, v, shift, area);
+                assert_eq!(
+                    (short.v0, short.gx, short.gy),
+                    (wide.v0, wide.gx, wide.gy),
+                    "{p:?} {v:?} {shift}"
+                );
+            }
+            planes += 1;
+        }
+        assert!(planes > 190_000);
     }
 }

@@ -57,9 +57,9 @@ pub struct SmoothPaint {
 impl SmoothPaint {
     /// From vertex colours (channels `0..=255 << RGB_FRAC`) at snapped screen positions.
     pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64) -> Self {
-        let scaled =
-            |k: usize| rgb.map(|c| (c.get(k).copied().unwrap_or(0) as i64) << (FRAC - RGB_FRAC));
-        let planes = [0, 1, 2].map(|k| Plane::new(p, scaled(k), area2));
+        let channel = |k: usize| rgb.map(|c| c.get(k).copied().unwrap_or(0));
+        let scaled = |k: usize| channel(k).map(|c| (c as i64) << (FRAC - RGB_FRAC));
+        let planes = [0, 1, 2].map(|k| Plane::scaled(p, channel(k), FRAC - RGB_FRAC, area2));
         let (lo, hi) = channel_ranges(scaled);
         SmoothPaint { planes, lo, hi }
     }
