@@ -121,7 +121,7 @@ fn fill<T: RasterTarget, P: Paint>(
     } else {
         DepthPlane::default()
     };
-    target.fill_triangle(spans_in_range(p, clip), &plane, paint, stats)
+    target.fill_triangle(spans_in_range(p, clip, area), &plane, paint, stats)
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {

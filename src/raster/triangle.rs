@@ -65,35 +65,35 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
     if !v.iter().all(|p| p.in_range()) {
         return TriangleSpans::empty(v);
     }
-    spans_in_range(v, clip)
+    let [a, b, c] = v;
+    spans_in_range(v, clip, doubled_area(a, b, c))
 }
 
 /// [`triangle_spans`] of points already known to lie within ±[`COORD_LIMIT`](super::COORD_LIMIT)
-/// (the pipeline's projected vertices lie within ±2¹⁵).
-pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
+/// (the pipeline's projected vertices lie within ±2¹⁵), whose doubled signed area (in the
+/// given order, see `doubled_area`) the caller has.
+pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) -> TriangleSpans {
     let empty = || TriangleSpans::empty(v);
-    if clip.is_empty() {
+    // Zero area covers nothing (rule R4).
+    if clip.is_empty() || area == 0 {
         return empty();
     }
-    let [a, b, c] = sort_by_y(v);
-    let (ay, by, cy) = (a.y as i64, b.y as i64, c.y as i64);
-    // Twice the signed area; zero covers nothing (rule R4).
-    let cross = doubled_area(a, b, c);
-    if cross == 0 {
-        return empty();
-    }
-    let y_start = first_centre_from(ay).max(clip.y0 as i64);
-    let y_end = first_centre_from(cy).min(clip.y1 as i64);
+    let ([a, b, c], odd) = sort_by_y(v);
+    // Coordinates within ±2²⁴: the first row at or below each fits i32.
+    let first_row = |y: i32| first_centre_from(y as i64) as i32;
+    let y_start = first_row(a.y).max(clip.y0);
+    let y_end = first_row(c.y).min(clip.y1);
     if y_start >= y_end {
         return empty();
     }
-    let y_split = first_centre_from(by).clamp(y_start, y_end);
-    // The middle vertex lies right of the long edge when cross > 0 (y down): the long edge is
-    // then the left one.
-    let long_is_left = cross > 0;
+    let y_split = first_row(b.y).clamp(y_start, y_end);
+    // The middle vertex lies right of the long edge when the sorted triangle's doubled area
+    // is positive (y down; an odd permutation turns the sign): the long edge is then the left
+    // one.
+    let long_is_left = (area > 0) != odd;
     let long = edge(a, c, y_start);
     let (short, y_split) = if y_start < y_split {
-        (edge(a, b, y_start), y_split as i32)
+        (edge(a, b, y_start), y_split)
     } else {
         (edge(b, c, y_start), i32::MIN)
     };
@@ -104,8 +104,8 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSp
     };
     TriangleSpans {
         v: [a, b, c],
-        y: y_start as i32,
-        y_end: y_end as i32,
+        y: y_start,
+        y_end,
         y_split,
         left,
         right,
@@ -118,7 +118,7 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSp
 /// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row
 /// `py` (one of the edge's rows). With coordinates within ±2²⁴ every difference below is a
 /// 32-bit factor, the numerator stays below 2⁵⁴ and the denominator below 2²⁹.
-fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
+fn edge(p: ScreenPoint, q: ScreenPoint, py: i32) -> CeilStepper {
     let dx = q.x.wrapping_sub(p.x);
     let dy = q.y.wrapping_sub(p.y).max(1);
     // Without a hardware divide, the whole pixels of p.x − 8 come out by a shift:
@@ -126,7 +126,7 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
     // steep edges started at their top, found without dividing (see `floor_divmod`).
     let x = p.x.wrapping_sub(HALF as i32);
     // The row lies within the edge's rows: |16·py| below 2²⁵.
-    let t = (py as i32)
+    let t = py
         .wrapping_mul(S as i32)
         .wrapping_add(HALF as i32)
         .wrapping_sub(p.y);
@@ -148,18 +148,23 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i64) -> CeilStepper {
     e
 }
 
-fn sort_by_y(v: [ScreenPoint; 3]) -> [ScreenPoint; 3] {
+/// The points sorted by y, and whether the sort was an odd permutation (one or three swaps).
+fn sort_by_y(v: [ScreenPoint; 3]) -> ([ScreenPoint; 3], bool) {
     let [mut a, mut b, mut c] = v;
+    let mut odd = false;
     if b.y < a.y {
         core::mem::swap(&mut a, &mut b);
+        odd = !odd;
     }
     if c.y < b.y {
         core::mem::swap(&mut b, &mut c);
+        odd = !odd;
     }
     if b.y < a.y {
         core::mem::swap(&mut a, &mut b);
+        odd = !odd;
     }
-    [a, b, c]
+    ([a, b, c], odd)
 }
 
 impl TriangleSpans {
@@ -186,7 +191,7 @@ impl TriangleSpans {
             return false;
         }
         let [_, b, c] = self.v;
-        let lower = edge(b, c, self.y as i64);
+        let lower = edge(b, c, self.y);
         // The split row is never reached again.
         self.y_split = i32::MIN;
         if self.long_is_left {
