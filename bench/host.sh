@@ -25,20 +25,20 @@ ir() { # inclusive instructions of the first function whose name ends with $1
 }
 draw=$(ir "torus_bench::draw_scene"); clear=$(ir "torus_bench::clear_buffers")
 prepare=$(ir "pipeline::Frame::prepare"); walk=$(ir "Prepared<_,S>>::draw"); face=$(ir "Prepared<_,S>>::fill_face")
-fill=$(ir "pipeline::draw::fill"); spans=$(ir "raster::triangle::spans_in_range"); plane=$(ir "raster::plane::Plane::new")
-normal=$(ir "shade::lambert::face_normal"); lambert=$(ir "shade::lambert::lambert")
+fill=$(ir "pipeline::draw::fill"); spans=$(ir "raster::triangle::spans_in_range")
+shading=$(ir "Shading>::paint")
 timing=$(target/release/examples/torus_bench 200)
 report=$(awk -v d="$draw" -v c="$clear" -v n="$frames" -v px="$covered" -v pr="${prepare:-0}" -v wk="${walk:-0}" \
-    -v fc="${face:-0}" -v fl="${fill:-0}" -v sp="${spans:-0}" -v pl="${plane:-0}" -v nm="${normal:-0}" -v lb="${lambert:-0}" 'BEGIN {
+    -v fc="${face:-0}" -v fl="${fill:-0}" -v sp="${spans:-0}" -v sh="${shading:-0}" 'BEGIN {
     f = 1 / n;
     printf "draw_scene: %.3f M instructions per frame, %.1f per covered pixel (clear_buffers: %.3f M)\n\n", d*f/1e6, d*f/px, c*f/1e6;
     printf "| stage | instructions per frame | share |\n|---|---:|---:|\n";
     row("vertex stage (transform, outcodes, projection), once per vertex", pr);
     row("triangle walk (fetch, trivial reject, culling, clipping)", wk - fc);
-    row("flat shading per triangle (face normal, Lambert)", nm + lb);
-    row("span set-up (sorting, edge steppers)", sp + pl);
-    row("depth plane set-up, spans and pixels (edge stepping, depth test, writes)", fl - sp - pl);
-    row("other per-triangle work", fc - fl - nm - lb);
+    row("flat shading per triangle (face normal, Lambert)", sh);
+    row("span set-up (sorting, edge steppers)", sp);
+    row("depth plane set-up, spans and pixels (edge stepping, depth test, writes)", fl - sp);
+    row("other per-triangle work", fc - fl - sh);
     row("rest of draw_scene", d - pr - wk);
 }
 function row(name, v) { printf "| %s | %.0f | %.1f%% |\n", name, v * f, 100 * v / d }')
