@@ -46,6 +46,11 @@ echo "$line"
 echo "$report"
 echo "$timing"
 if [[ $doc == 1 ]]; then
+    if command -v qemu-system-arm >/dev/null; then
+        stages=$(python3 bench/mcu/stages.py)
+    else
+        stages="(Not measured here: bench/mcu/stages.py needs qemu-system-arm, see bench/mcu/run.sh setup.)"
+    fi
     cat >docs/performance.md <<DOC
 # Performance: the reference scene
 
@@ -79,33 +84,45 @@ $timing
 | a Rust float software renderer | 7.96 M | 7.78 M | 32.1 M |
 | floor: depth-test and write each covered pixel once | about 0.4 M | | |
 
+## Cortex-M, stage by stage
+
+The same frame on the emulated cores of [footprint.md](footprint.md), cut short after each
+stage in turn by \`bench/mcu/stages.py\` (a copy of the crate with one early return; each
+stage is the difference between two cuts, good to a few per cent of the frame since every cut
+moves the code around it a little; the copy's whole frame can differ from \`run.sh\`'s by a
+few thousandths):
+
+$stages
+
 ## Where the rest goes, and what would take it
 
-- **Spans and pixels** (the largest row above): every row of a triangle steps its two edge
-  steppers and the depth at the left edge (one 64-bit addition: the plane's change for the
-  edge's step, or one pixel more), clips the span, finds the row in both buffers (one bounds
-  check) and sets up the pixel loop; then each pixel is a shift, a compare, two stores and
-  a count. The remaining per-row cost is mostly state that does
-  not fit in registers (two edges, the depth walk, the buffers, the counters).
-- **Per triangle** (set-up and flat shading): three edge steppers (two divisions each; on
-  cores without a divider quotients from -8 to 7 by subtraction), the depth plane (two
-  divisions of 62-bit numerators: on Cortex-M0 through one reciprocal of the doubled area,
-  on Cortex-M3/M4 by 32-bit divides), the face normal through the normal matrix, its
-  normalisation and Lambert (some thirty products of 32-bit factors). Flat shading is about 14%
-  of the frame on x86-64, 18% on the M4 and 23% on the M0 (there measured by swapping
-  \`Flat\` for \`Unlit\` in the firmware). Every step keeps the images bit-identical; what would go further
-  (lighting in 16-bit arithmetic, 32-bit depth stepping relative to the triangle, face normals
-  precomputed in flash) changes rounding, so \`docs/accuracy.md\` would have to show it loses
-  nothing.
-- **Per vertex**: the transform (twelve 32x32→64 products), then the outcode and the
-  projection from one reduction (three divisions by \`w\`: on Cortex-M0 one reciprocal and
-  three multiplications).
-- **On Cortex-M**, \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or
-  \`thumbv7em-none-eabihf\`) lists the instructions by function and the library calls by the
-  line that makes them, and \`ASM=fill_face\` prints a function's instructions with their
-  counts. On Cortex-M0 the set-up's arithmetic (products of halves, divisions through
-  reciprocals, the remaining 64-bit products) is still the largest cost; on the M4 the rows
-  and pixels, whose state spills to the stack.
+- **Pixels**: a shift, a compare, two stores and a count each (x86-64: about 9 instructions;
+  the Cortex-M4 about 13, where the pixel loop's colour and step do not fit in registers
+  beside the row loop's state, the M0 about 15). The floor of the scene is about 0.4 M on
+  x86-64.
+- **Rows and span entries**: every row steps two edge steppers (an exact Bresenham quotient
+  and remainder each), clips the span to the target, and moves the depth start and the row's
+  place in both buffers; a row with pixels also checks the span against the buffers (one
+  bounds check for both), takes the depth at its first pixel from the row's plane value (one
+  32-bit product; on cores without 64-bit arithmetic 32-bit words only) and counts fragments
+  and writes. On x86-64 the edges step out of line, which leaves the pixel loop its registers
+  (4% of the frame); on Cortex-M the call costs more than it frees.
+- **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
+  on Cortex-M0 through one reciprocal, on the M4 by 32-bit divides of 16-bit digits) and three
+  edge steppers (two divisions each), then flat shading: the face normal (a cross product of
+  32-bit edges), its Newton normalisation in 32-bit words (skipped for faces turned from every
+  light: ambient only) and Lambert against the lights, which are turned into model space once
+  per object when the model matrix is a rotation times a scale (no normal matrix per face).
+  What would go further changes rounding (lighting in 16-bit arithmetic, depth relative to
+  the triangle in 32 bits) or the scene's definition (face normals kept in the mesh instead of
+  computed every frame), so \`docs/accuracy.md\` would have to show it loses nothing.
+- **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once), then the
+  outcode and the projection from one reduction (three divisions by \`w\`: on Cortex-M0 one
+  reciprocal and three multiplications). On Cortex-M0, whose products of 32-bit factors are
+  routines of four multiplies, it is the largest stage.
+- \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or \`thumbv7em-none-eabihf\`)
+  lists the instructions by function and the library calls by the line that makes them, and
+  \`ASM=fill_face\` prints a function's instructions with their counts.
 DOC
     echo "wrote docs/performance.md"
 fi

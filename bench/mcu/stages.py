@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""Where the `full` preset's instructions go on the emulated Cortex-M4F and Cortex-M0, stage by
+stage, measured exactly: the frame is cut short after each stage in turn (a copy of the crate
+with one early return, behind `core::hint::black_box` so that nothing before it is optimised
+away) and `run.sh` counts the instructions per frame of each cut; a stage's cost is the
+difference between consecutive cuts. The working tree is never touched: the crate is copied to a
+temporary directory first. Each cut changes the code around it a little (inlining, registers),
+so a stage's figure is good to a few per cent of the frame.
+
+    python3 bench/mcu/stages.py            # prints a Markdown table (about 3 minutes)
+"""
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+TARGETS = ["thumbv7em-none-eabihf", "thumbv6m-none-eabi"]
+BB = "core::hint::black_box"
+
+# (stage measured by this cut, what the frame still does, [(file, anchor, replacement)]),
+# from the whole frame down to the vertex stage alone. Each anchor must occur in the source
+# (the script stops otherwise: update it with the code).
+CUTS = [
+    ("pixels (depth test and writes)", "everything", []),
+    ("span entry (bounds check, depth start, counts)", "no pixel loops", [(
+        "src/target/depth.rs",
+        "    let mut written = 0;\n    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {",
+        f"    let mut written = 0;\n    if {BB}(true) {{ let _ = (&mut next_color, st, acc); "
+        f"return {BB}(depths.len().min(colors.len())) as u32; }}\n"
+        "    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {",
+    )]),
+    ("rows (edge stepping, clipping, depth walk)", "no spans", [(
+        "src/target/surface.rs",
+        "written = written.wrapping_add(test_span(ds, cs, depth.at(x0), g));",
+        f"written = written.wrapping_add({BB}((ds.len(), cs.len(), depth.at(x0))).0 as u32);"
+        " let _ = (&mut test_span, g);",
+    )]),
+    ("fill set-up (colour, depth test choice, first row)", "no rows", [(
+        "src/target/surface.rs",
+        "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
+        f"        if {BB}(true) {{ {BB}((&spans, &depth)); return; }}\n"
+        "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
+    )]),
+    ("depth plane and span set-up (sorting, edge steppers)", "no fill set-up", [(
+        "src/pipeline/draw.rs",
+        "target.fill_triangle(spans_in_range(p, clip, area), &plane, paint, stats)",
+        f"{{ let s = {BB}(spans_in_range(p, clip, area)); {BB}((&plane, paint)); "
+        f"if {BB}(false) {{ return target.fill_triangle(s, &plane, paint, stats); }} Ok(()) }}",
+    )]),
+    ("flat shading (face normal, Lambert)", "no depth plane or spans", [(
+        "src/pipeline/draw.rs",
+        "    bump(&mut stats.drawn);\n",
+        f"    bump(&mut stats.drawn);\n    if {BB}(true) {{ {BB}((&p, &z, area, paint)); "
+        "return Ok(()); }\n",
+    )]),
+    ("a drawn triangle's inputs", "no shading", [(
+        "src/pipeline/draw.rs",
+        "        // Gouraud needs per-vertex normals;",
+        f"        if {BB}(true) {{ {BB}(&face); return Ok(()); }}\n"
+        "        // Gouraud needs per-vertex normals;",
+    )]),
+    ("triangle walk (fetch, trivial reject, culling)", "vertex stage and walk", [(
+        "src/pipeline/draw.rs",
+        "        let clip = target.clip();\n        let p = map3(v, |v| v.0);",
+        f"        if {BB}(true) {{ return Ok(()); }}\n"
+        "        let clip = target.clip();\n        let p = map3(v, |v| v.0);",
+    )]),
+    ("vertex stage (and the frame's camera and model matrix)", "vertex stage", [(
+        "src/pipeline/draw.rs",
+        "        let mut stats = Stats::default();\n        let map = ScreenMap::new(",
+        f"        let mut stats = Stats::default();\n        if {BB}(true) {{ return Ok(stats); }}\n"
+        "        let map = ScreenMap::new(",
+    )]),
+]
+
+
+def count(crate):
+    """Instructions per frame of `full` on each target, for the crate copy at `crate`."""
+    env = dict(os.environ, PRESETS="full", TARGETS=" ".join(TARGETS),
+               CARGO_TARGET_DIR=os.path.join(HERE, "target", "stages"),
+               RESULTS=os.path.join(crate, "results.tsv"))
+    out = subprocess.run(["bash", os.path.join(crate, "bench/mcu/run.sh")], env=env,
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"run.sh failed:\n{out.stdout}\n{out.stderr}")
+    found = {}
+    for line in out.stdout.splitlines():
+        t = re.search(r"target=(\S+)", line)
+        n = re.search(r"instructions_per_frame=(\d+)", line)
+        if t and n:
+            found[t.group(1)] = int(n.group(1))
+    return found
+
+
+def main():
+    files = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True,
+                           check=True).stdout.split()
+    with tempfile.TemporaryDirectory() as tmp:
+        crate = os.path.join(tmp, "main")
+        for f in files:
+            os.makedirs(os.path.dirname(os.path.join(crate, f)), exist_ok=True)
+            shutil.copy2(os.path.join(ROOT, f), os.path.join(crate, f))
+        totals = []
+        for stage, left, patches in CUTS:
+            for path, anchor, replacement in patches:
+                p = os.path.join(crate, path)
+                with open(p) as fh:
+                    text = fh.read()
+                if anchor not in text:
+                    sys.exit(f"stages.py: anchor not found in {path}: {anchor!r}")
+                with open(p, "w") as fh:
+                    fh.write(text.replace(anchor, replacement, 1))
+            totals.append((stage, left, count(crate)))
+            print(f"  {left}: {totals[-1][2]}", file=sys.stderr)
+    whole = totals[0][2]
+    print("| stage | Cortex-M4F | share | Cortex-M0 | share |")
+    print("|---|---:|---:|---:|---:|")
+    for i, (stage, _, here) in enumerate(totals):
+        after = totals[i + 1][2] if i + 1 < len(totals) else {t: 0 for t in TARGETS}
+        cells = []
+        for t in TARGETS:
+            v = here.get(t, 0) - after.get(t, 0)
+            cells += [f"{v:,}", f"{100 * v / max(whole.get(t, 1), 1):.1f}%"]
+        print(f"| {stage} | " + " | ".join(cells) + " |")
+    print("| whole frame | " + " | ".join(
+        [f"{whole.get(t, 0):,} | 100%" for t in TARGETS]) + " |")
+
+
+if __name__ == "__main__":
+    main()
