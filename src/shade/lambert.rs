@@ -20,10 +20,20 @@ pub(crate) fn lambert<const N: usize>(
     if let Some(n) = n {
         for light in lighting.lights() {
             let d = dot_unit(n, light.direction).max(0);
-            for (s, c) in sum.iter_mut().zip(light.color.iter()) {
-                // Q16.16 · Q2.30 → Q16.16 (the channel is a Scalar's bits: it fits i32), each
-                // term within ±2³¹: no count of lights a memory can hold overflows the sum.
-                *s = s.wrapping_add(mul_wide(*c as i32, d) >> 30);
+            // Q16.16 · Q2.30 → Q16.16 (the channel is a Scalar's bits: it fits i32), each term
+            // within ±2³¹: no count of lights a memory can hold overflows the sum.
+            let term = |c: i64| mul_wide(c as i32, d) >> 30;
+            let [r, g, b] = light.color;
+            if r == g && g == b {
+                // A grey light (the usual kind): one product for the three channels.
+                let t = term(r);
+                for s in &mut sum {
+                    *s = s.wrapping_add(t);
+                }
+            } else {
+                for (s, c) in sum.iter_mut().zip(light.color) {
+                    *s = s.wrapping_add(term(c));
+                }
             }
         }
     }
