@@ -196,13 +196,22 @@ pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
 /// at every product it would save another 3% of the M0's instructions for 2 KB of flash.
 #[inline(never)]
 const fn mul_halves(a: i32, b: i32) -> i64 {
-    let (ah, al) = (a >> 16, a & 0xFFFF);
-    let (bh, bl) = (b >> 16, b & 0xFFFF);
-    // Low halves below 2¹⁶, high halves within ±2¹⁵: each product fits 32 bits.
-    let low = (al as u32 * bl as u32) as i64;
-    let middle = (ah * bl) as i64 + (al * bh) as i64;
-    let high = (ah * bh) as i64;
-    (high << 32) + (middle << 16) + low
+    let (ah, al) = (a >> 16, (a & 0xFFFF) as u32);
+    let (bh, bl) = (b >> 16, (b & 0xFFFF) as u32);
+    // Low halves below 2¹⁶, high halves within ±2¹⁵: each product fits 32 bits. The two
+    // middle products are added into the words of the result one at a time (their low half
+    // with a carry into the high word, their high half by an arithmetic shift): 32-bit
+    // operations only, where a 64-bit sum of shifted products takes twice as many.
+    let (m1, m2) = (ah.wrapping_mul(bl as i32), bh.wrapping_mul(al as i32));
+    let (lo, c1) = (al * bl).overflowing_add((m1 as u32) << 16);
+    let (lo, c2) = lo.overflowing_add((m2 as u32) << 16);
+    let hi = ah
+        .wrapping_mul(bh)
+        .wrapping_add(m1 >> 16)
+        .wrapping_add(m2 >> 16)
+        .wrapping_add(c1 as i32)
+        .wrapping_add(c2 as i32);
+    ((hi as i64) << 32) | lo as i64
 }
 
 /// [`mul_wide_u32`] from 16-bit halves (out of line, as [`mul_halves`]).
