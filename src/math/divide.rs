@@ -150,6 +150,19 @@ impl DivideBy {
         DivideBy { d, by }
     }
 
+    /// [`round`](Self::round) for numerators that usually fit 32 bits (a vertex's x and y):
+    /// on 32-bit cores with a divide instruction (Cortex-M3/M4) that case in line, one divide
+    /// and a few instructions instead of a call (0.9% of the M4's frame).
+    #[inline(always)]
+    pub(crate) fn round_short(&self, n: i64) -> i64 {
+        if !NARROW_CORE && cfg!(target_pointer_width = "32") {
+            if let Some(q) = div_round_u32(n, self.d) {
+                return q;
+            }
+        }
+        self.round(n)
+    }
+
     /// [`div_round`]`(n, d)`.
     #[inline(always)]
     pub(crate) fn round(&self, n: i64) -> i64 {

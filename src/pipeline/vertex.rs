@@ -184,7 +184,7 @@ fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(S
     let lim = 1i64 << 15;
     let by_w = DivideBy::new(w);
     let (sx, sy) = if m.snap == 0 {
-        (by_w.round(xh), by_w.round(yh))
+        (by_w.round_short(xh), by_w.round_short(yh))
     } else {
         // One rounding to the coarser grid (no double rounding through sixteenths).
         let (g, wg) = (m.snap, w << m.snap);
