@@ -142,7 +142,9 @@ impl Mat4 {
     /// `self * (p, 1)` as raw Q16.16 in 64 bits, for the vertex stage. Each product (below 2⁶²)
     /// is halved before the sum so that no input can overflow it, and the sum is rounded once
     /// (half up): within 2⁻¹⁶ of a unit of the exact value. Every component is below 2⁴⁸.
-    #[inline]
+    /// Out of line: only meshes beyond ±2²⁹ take it (and `transform_point`), so it need not
+    /// be copied into every caller.
+    #[inline(never)]
     pub(crate) fn transform_wide(&self, p: [i32; 3]) -> [i64; 4] {
         let [x, y, z] = p;
         let row = |r: &[i32; 4]| {

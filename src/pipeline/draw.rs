@@ -135,11 +135,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 .unwrap_or(&[]);
             offset = offset.saturating_add(n);
             let normal_matrix = object.model.normal_matrix();
-            // Per-vertex shading lights the vertices in world space (in `prepare`).
-            let model_lighting = if S::PER_VERTEX {
-                None
-            } else {
+            // Only flat shading lights faces (per-vertex shading lights the vertices in world
+            // space, in `prepare`; unlit shading and wireframes need no lights).
+            let model_lighting = if S::FACE_LIGHTING {
                 self.scene.lighting.in_model_space(&normal_matrix)
+            } else {
+                None
             };
             ObjectSetup {
                 object,

@@ -79,6 +79,10 @@ pub trait Shading: Copy + sealed::Sealed + core::fmt::Debug {
     /// True when the vertex stage must light every vertex.
     #[doc(hidden)]
     const PER_VERTEX: bool;
+    /// True when every face is lit from its face normal (so the lights are worth turning into
+    /// each object's model space once).
+    #[doc(hidden)]
+    const FACE_LIGHTING: bool = false;
     #[doc(hidden)]
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> Self::Paint;
 }
@@ -122,6 +126,7 @@ impl Shading for Unlit {
 impl Shading for Flat {
     type Paint = SolidPaint;
     const PER_VERTEX: bool = false;
+    const FACE_LIGHTING: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
         SolidPaint(flat_color(
             face.base,
