@@ -182,6 +182,18 @@ pub(crate) const fn mul_wide(a: i32, b: i32) -> i64 {
     }
 }
 
+/// [`mul_wide`] for `|b| < 2¹⁵`: on cores without a long multiply two 32-bit products (of
+/// `b` by `a`'s halves, each within ±2³¹) in line, instead of the four of [`mul_halves`].
+#[inline(always)]
+pub(crate) const fn mul_short(a: i32, b: i32) -> i64 {
+    if NARROW_CORE {
+        let (ah, al) = (a >> 16, a & 0xFFFF);
+        ((ah.wrapping_mul(b) as i64) << 16) + al.wrapping_mul(b) as i64
+    } else {
+        a as i64 * b as i64
+    }
+}
+
 /// `a · b` exactly for unsigned factors: [`mul_wide`]'s unsigned twin (UMULL on Cortex-M3/M4).
 #[inline(always)]
 pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
@@ -251,6 +263,26 @@ mod tests {
                 assert_eq!(shr_words(v, s), (v >> s) as i32, "{v} >> {s}");
                 assert_eq!(shr_low_word(v, s), (v >> s) as i32, "{v} >> {s}");
             }
+        }
+    }
+
+    /// The short product is the product for any `a` and `|b| < 2¹⁵` (in its narrow form,
+    /// which the host does not otherwise run).
+    #[test]
+    fn short_products_are_the_products() {
+        let narrow = |a: i32, b: i32| ((((a >> 16) * b) as i64) << 16) + ((a & 0xFFFF) * b) as i64;
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let bs = [-32_767, -1, 0, 1, 2560, 16_384, 32_767];
+        for a in [i32::MIN, i32::MIN + 1, -65_536, -1, 0, 1, 65_535, i32::MAX] {
+            for b in bs {
+                assert_eq!(narrow(a, b), a as i64 * b as i64, "{a} {b}");
+                assert_eq!(mul_short(a, b), a as i64 * b as i64, "{a} {b}");
+            }
+        }
+        for _ in 0..200_000 {
+            let x = rng.next_u64();
+            let (a, b) = (x as i32, ((x >> 32) as i32) >> 17);
+            assert_eq!(narrow(a, b), a as i64 * b as i64, "{a} {b}");
         }
     }
 

@@ -7,7 +7,7 @@
 //! nothing is shifted.
 
 use super::Precision;
-use crate::math::{div_round, magnitude_bits, mul_wide, shr_round, DivideBy, DEPTH_ONE};
+use crate::math::{div_round, magnitude_bits, mul_short, shr_round, DivideBy, DEPTH_ONE};
 use crate::projection::Viewport;
 use crate::raster::ScreenPoint;
 
@@ -80,13 +80,13 @@ impl ScreenMap {
         }
     }
 
-    /// `x·half_w` and `y·half_h` of reduced coordinates (below 2³¹; half sizes at most 2¹⁴):
-    /// 32-bit factors.
+    /// `x·half_w` and `y·half_h` of reduced coordinates (below 2³¹; half sizes at most 2¹⁴,
+    /// viewports being at most 2048 pixels): 32-bit factors, the second short.
     #[inline(always)]
     fn viewport_products(&self, x: i64, y: i64) -> (i64, i64) {
         (
-            mul_wide(x as i32, self.half_w as i32),
-            mul_wide(y as i32, self.half_h as i32),
+            mul_short(x as i32, self.half_w as i32),
+            mul_short(y as i32, self.half_h as i32),
         )
     }
 }
