@@ -104,7 +104,7 @@ $stages
   and remainder each), clips the span to the target, and moves the depth start and the row's
   place in both buffers; a row with pixels also checks the span against the buffers (one
   bounds check for both), takes the depth at its first pixel from the row's plane value (one
-  32-bit product; on cores without 64-bit arithmetic 32-bit words only) and counts fragments
+  product; on cores without 64-bit arithmetic two, in 32-bit words) and counts fragments
   and writes. On x86-64 the edges step out of line, which leaves the pixel loop its registers
   (4% of the frame); on Cortex-M the call costs more than it frees.
 - **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
