@@ -299,29 +299,41 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
         // Callers pass den ≥ 1; the guard keeps a wrong call from dividing by zero.
         let den = den.max(1);
         let (q, r) = floor_divmod(n0, den);
-        // Now n0 = q·den + r with 0 ≤ r < den.
-        let (value, rem) = if CEIL && r != 0 {
-            (q + 1, den - r)
-        } else {
-            (q, r)
-        };
-        // For ceil the step subtracts from rem (rem = qD − N), for floor it adds. The step and
-        // the denominator fit i32 (see below).
-        let (sq, sr) = floor_divmod32(step as i32, den as i32);
         // Callers keep coordinates within ±COORD_LIMIT (2²⁴ sub-pixels): the denominator is
         // below 2²⁹, remainders below it, quotients (pixel coordinates) below 2²¹ and steps below
         // 2²⁹, so every value fits i32 and the casts are exact.
+        Self::from_quotient(q as i32, r as i32, den as i32, step as i32)
+    }
+
+    /// [`new`](Self::new) of 32-bit operands (where 64-bit division is a library routine, the
+    /// numerator of an edge started within its top pixel fits 32 bits).
+    pub(crate) fn new32(n0: i32, den: i32, step: i32) -> Self {
+        let den = den.max(1);
+        let (q, r) = floor_divmod32(n0, den);
+        Self::from_quotient(q, r, den, step)
+    }
+
+    /// The stepper at `n0 = q·den + r` (`0 ≤ r < den`).
+    #[inline(always)]
+    fn from_quotient(q: i32, r: i32, den: i32, step: i32) -> Self {
+        let (value, rem) = if CEIL && r != 0 {
+            (q.wrapping_add(1), den.wrapping_sub(r))
+        } else {
+            (q, r)
+        };
+        // For ceil the step subtracts from rem (rem = qD − N), for floor it adds.
+        let (step_q, step_r) = floor_divmod32(step, den);
         RationalStepper {
-            value: value as i32,
-            rem: rem as i32,
-            den: den as i32,
-            step_q: sq,
-            step_r: sr,
+            value,
+            rem,
+            den,
+            step_q,
+            step_r,
         }
     }
 
-    /// Advances `k` by one; true when the value moved by one more than
-    /// [`step_quotient`](Self::step_quotient).
+    /// Advances `k` by one; true when the value moved by one more than the whole part of the
+    /// step.
     #[inline(always)]
     pub(crate) fn step_carry(&mut self) -> bool {
         self.value = self.value.wrapping_add(self.step_q);

@@ -2,7 +2,7 @@
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
 use super::ScreenPoint;
-use crate::math::{mul_wide, DivideBy, SUBPIXEL_SCALE};
+use crate::math::{is_short, mul_short, mul_wide, DivideBy, NARROW_CORE, SUBPIXEL_SCALE};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels.
 ///
@@ -45,8 +45,17 @@ impl Plane {
         let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
         let (dx2, dy2) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
         let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
-        let nx = mul_wide(dv1, dy2).wrapping_sub(mul_wide(dv2, dy1));
-        let ny = mul_wide(dx1, dv2).wrapping_sub(mul_wide(dx2, dv1));
+        // On Cortex-M0 a side within ±2¹⁵ (every side of an on-screen triangle) takes the
+        // two-multiply product.
+        let times = |v: i32, side: i32| {
+            if NARROW_CORE && is_short(side) {
+                mul_short(v, side)
+            } else {
+                mul_wide(v, side)
+            }
+        };
+        let nx = times(dv1, dy2).wrapping_sub(times(dv2, dy1));
+        let ny = times(dv2, dx1).wrapping_sub(times(dv1, dx2));
         let v0 = (v[0] as i64) << shift;
         Plane::from_numerators(a, v0, nx << shift, ny << shift, area2)
     }

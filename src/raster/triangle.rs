@@ -130,22 +130,21 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32) -> CeilStepper {
         .wrapping_mul(S as i32)
         .wrapping_add(HALF as i32)
         .wrapping_sub(p.y);
-    let (k, n0) = if NARROW_CORE {
+    let (den, step) = (S * dy as i64, S * dx as i64);
+    if NARROW_CORE {
         let (k, m) = (x >> SUBPIXEL_BITS, x & (S as i32 - 1));
         // Started within its top pixel (0 ≤ t < 16, the usual case) both products are below
-        // 2²⁹ (sides below 2²⁵): 32-bit, where a 64-bit product is a library call.
-        let n0 = if (0..S as i32).contains(&t) {
-            (m * dy + dx * t) as i64
+        // 2²⁹ (sides below 2²⁵), and so is the denominator: 32-bit operands throughout, where
+        // 64-bit products and divisions are library calls.
+        let mut e = if (0..S as i32).contains(&t) {
+            CeilStepper::new32(m * dy + dx * t, den as i32, step as i32)
         } else {
-            mul_wide(m, dy) + mul_wide(dx, t)
+            CeilStepper::new(mul_wide(m, dy) + mul_wide(dx, t), den, step)
         };
-        (k, n0)
-    } else {
-        (0, mul_wide(x, dy) + mul_wide(dx, t))
-    };
-    let mut e = CeilStepper::new(n0, S * dy as i64, S * dx as i64);
-    e.value = e.value.wrapping_add(k);
-    e
+        e.value = e.value.wrapping_add(k);
+        return e;
+    }
+    CeilStepper::new(mul_wide(x, dy) + mul_wide(dx, t), den, step)
 }
 
 /// The points sorted by y, and whether the sort was an odd permutation (one or three swaps).
