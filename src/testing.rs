@@ -13,4 +13,10 @@ impl XorShift {
         self.0 = x;
         x
     }
+
+    /// A value in `[−range, range]` (`range ≥ 0`).
+    pub(crate) fn within(&mut self, range: i32) -> i32 {
+        let x = self.next_u64();
+        ((x % (2 * range as u64 + 1)) as i64 - range as i64) as i32
+    }
 }

@@ -279,16 +279,12 @@ mod tests {
     #[test]
     fn scaled_equals_new() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let mut next = |range: i64| {
-            let x = rng.next_u64();
-            ((x % (2 * range as u64 + 1)) as i64 - range) as i32
-        };
+        let mut next = |range: i32| rng.within(range);
         let mut planes = 0;
         for _ in 0..200_000 {
             let scale = [1 << 5, 1 << 10, 1 << 15][next(1).unsigned_abs() as usize];
             let p = [(); 3].map(|_| ScreenPoint::new(next(scale), next(scale)));
-            let area = (p[1].x as i64 - p[0].x as i64) * (p[2].y as i64 - p[0].y as i64)
-                - (p[2].x as i64 - p[0].x as i64) * (p[1].y as i64 - p[0].y as i64);
+            let area = crate::raster::doubled_area(p[0], p[1], p[2]);
             if area == 0 {
                 continue;
             }

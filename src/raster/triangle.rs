@@ -284,23 +284,19 @@ mod tests {
     /// `for_each_row` visits the rows the iterator yields (and the empty ones between), and
     /// the row walks of a plane give `Plane::at` at each first pixel: `PlaneRows` bit for bit,
     /// `ShortRows` the u16 loop's start `⌊(v + 2²⁷) / 2¹³⌋` wherever that fits 31 bits.
-    /// Triangles of every shape and size (taller than a batch), partly off every side of the
-    /// clip rectangle, steep and flat gradients.
+    /// Triangles of every shape and size, partly off every side of the clip rectangle, steep
+    /// and flat gradients.
     #[test]
     fn row_walks_equal_the_iterator_and_plane_at() {
         use crate::raster::{RowStarts, ShortRows, WideRows};
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let mut next = |range: i32| {
-            let x = rng.next_u64();
-            (x % (2 * range as u64 + 1)) as i32 - range
-        };
+        let mut next = |range: i32| rng.within(range);
         let clip = PixelRect::new(3, 5, 60, 144);
         let (mut spans_seen, mut short_seen) = (0, 0);
         for _ in 0..20_000 {
             let scale = [40, 400, 1200, 16_000][next(1).unsigned_abs() as usize];
             let p = [(); 3].map(|_| ScreenPoint::new(500 + next(scale), 1200 + next(scale)));
-            let area = (p[1].x as i64 - p[0].x as i64) * (p[2].y as i64 - p[0].y as i64)
-                - (p[2].x as i64 - p[0].x as i64) * (p[1].y as i64 - p[0].y as i64);
+            let area = doubled_area(p[0], p[1], p[2]);
             if area == 0 {
                 continue;
             }

@@ -333,10 +333,7 @@ mod model_space_tests {
         let lighting = lighting();
         let base = Rgb888::new(255, 160, 64);
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let mut next = |range: i32| {
-            let x = rng.next_u64();
-            (x % (2 * range as u64 + 1)) as i32 - range
-        };
+        let mut next = |range: i32| rng.within(range);
         let mut compared = 0;
         for k in 0..200 {
             let turn = |d: i32| Angle::from_degrees(d);
