@@ -35,13 +35,13 @@ impl Plane {
         Plane::from_numerators(a, v[0], nx, ny, area2)
     }
 
-    /// [`new`](Self::new) for values `v[i] << shift` with `|v[i]| ≤ 2³⁰` (depth, colour
-    /// channels): the numerators from 32-bit differences and products, shifted once, the same
-    /// values (exact, as their true values fit).
+    /// [`new`](Self::new) for values `v[i] << shift` with every `v[i]` in [0, 2³⁰] (depth in
+    /// Q1.30, colour channels): the numerators from 32-bit differences and products, shifted
+    /// once, the same values (exact, as their true values fit).
     #[inline]
     pub(crate) fn scaled(p: &[ScreenPoint; 3], v: [i32; 3], shift: u32, area2: i64) -> Plane {
         let [a, b, c] = *p;
-        // Coordinates within ±2¹⁵ and values within ±2³⁰: every difference fits i32.
+        // Coordinates within ±2¹⁵ and values in [0, 2³⁰]: every difference fits i32.
         let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
         let (dx2, dy2) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
         let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
@@ -275,7 +275,7 @@ mod tests {
     use super::*;
 
     /// `scaled` is `new` of the shifted values, bit for bit: coordinates across ±2¹⁵, values
-    /// across ±2³⁰, both signs of area, the shifts the pipeline uses.
+    /// across [0, 2³⁰], both signs of area, the shifts the pipeline uses.
     #[test]
     fn scaled_equals_new() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
@@ -288,7 +288,7 @@ mod tests {
             if area == 0 {
                 continue;
             }
-            let v = [(); 3].map(|_| next(1 << 30));
+            let v = [(); 3].map(|_| next(1 << 29) + (1 << 29));
             for shift in [14, 28] {
                 let wide = Plane::new(&p, v.map(|v| (v as i64) << shift), area);
                 let short = Plane::scaled(&p, v, shift, area);
