@@ -109,12 +109,12 @@ pub(crate) fn flat_color<const N: usize>(
     lambert(base, unit, lighting)
 }
 
-/// The face normal of a model-space triangle, counter-clockwise front, at some scale below
-/// 2³⁰ per component (so in 32-bit words), in world space through `normal_matrix` (in model space without one);
-/// zero for a zero-area triangle. Edges of any length: the cross product is exact in i64 after
-/// the edges are shifted below 2³⁰ (case T33). `extent` bounds every coordinate's magnitude (the
-/// mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹ the edges need no shifting, and
-/// are not even checked.
+/// The face normal of a model-space triangle, counter-clockwise front, at some scale that fits
+/// 32-bit words (every component within ±2³⁰), in world space through `normal_matrix` (in
+/// model space without one); zero for a zero-area triangle. Edges of any length: the cross
+/// product is exact in i64 after the edges are shifted below 2³⁰ (case T33). `extent` bounds
+/// every coordinate's magnitude (the mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹
+/// the edges need no shifting, and are not even checked.
 fn face_direction(
     p: [[i32; 3]; 3],
     normal_matrix: Option<&[[i32; 3]; 3]>,
@@ -142,7 +142,7 @@ fn face_direction(
         Some(m) => shrink(apply(m, n)),
         None => n,
     };
-    // Below 2³⁰ after `shrink`.
+    // Within ±2³⁰ after `shrink`.
     map3(n, |c| c as i32)
 }
 
