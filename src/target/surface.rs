@@ -177,12 +177,13 @@ where
             if x0 < x1 {
                 let first = row.wrapping_add(x0 as u32 as usize);
                 let end = row.wrapping_add(x1 as u32 as usize);
-                if let (Some(cs), Some(ds)) =
-                    (colors.get_mut(first..end), depths.get_mut(first..end))
-                {
-                    fragments = fragments.wrapping_add(cs.len() as u32);
-                    let g = colors_for(Span { y, x0, x1 });
-                    written = written.wrapping_add(test_span(ds, cs, depth.at(x0), g));
+                // One check: both buffers are `n` long, so the second range is the first's.
+                if let Some(cs) = colors.get_mut(first..end) {
+                    if let Some(ds) = depths.get_mut(first..end) {
+                        fragments = fragments.wrapping_add(cs.len() as u32);
+                        let g = colors_for(Span { y, x0, x1 });
+                        written = written.wrapping_add(test_span(ds, cs, depth.at(x0), g));
+                    }
                 }
             }
             depth.next_row();
