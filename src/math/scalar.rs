@@ -187,11 +187,24 @@ pub(crate) const fn mul_wide(a: i32, b: i32) -> i64 {
 #[inline(always)]
 pub(crate) const fn mul_short(a: i32, b: i32) -> i64 {
     if NARROW_CORE {
-        let (ah, al) = (a >> 16, a & 0xFFFF);
-        ((ah.wrapping_mul(b) as i64) << 16) + al.wrapping_mul(b) as i64
+        short_by_halves(a, b)
     } else {
         a as i64 * b as i64
     }
+}
+
+/// [`mul_short`] on cores without a long multiply (tested on every host).
+#[inline(always)]
+const fn short_by_halves(a: i32, b: i32) -> i64 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    // a·b = (ah·b)·2¹⁶ + al·b, both products within ±2³¹, added into the result's words
+    // (written so, the compiler does not turn it back into a 64-bit product call).
+    let (high, low) = (ah.wrapping_mul(b), al.wrapping_mul(b));
+    let (lo, carry) = ((high as u32) << 16).overflowing_add(low as u32);
+    let hi = (high >> 16)
+        .wrapping_add(low >> 31)
+        .wrapping_add(carry as i32);
+    ((hi as i64) << 32) | lo as i64
 }
 
 /// `a · b` exactly for unsigned factors: [`mul_wide`]'s unsigned twin (UMULL on Cortex-M3/M4).
@@ -270,7 +283,7 @@ mod tests {
     /// which the host does not otherwise run).
     #[test]
     fn short_products_are_the_products() {
-        let narrow = |a: i32, b: i32| ((((a >> 16) * b) as i64) << 16) + ((a & 0xFFFF) * b) as i64;
+        let narrow = short_by_halves;
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let bs = [-32_767, -1, 0, 1, 2560, 16_384, 32_767];
         for a in [i32::MIN, i32::MIN + 1, -65_536, -1, 0, 1, 65_535, i32::MAX] {

@@ -142,7 +142,9 @@ pub(crate) fn inside(k: u32, d: i64) -> bool {
 /// [`distance`] and [`inside`] for each plane, written out.
 #[inline(always)]
 fn outcode_reduced(z: i64, w: i64, xh: i64, yh: i64) -> u8 {
-    let g = GUARD * w;
+    // w is reduced (within 31 bits) and the guard below 2¹⁵: the short product (on Cortex-M0
+    // two multiplies, where the compiler would call the library's 64-bit product).
+    let g = mul_short(w as i32, GUARD as i32);
     (z <= 0) as u8
         | ((w - z < 0) as u8) << 1
         | ((g + xh < 0) as u8) << 2
