@@ -197,14 +197,20 @@ pub(crate) const fn mul_short(a: i32, b: i32) -> i64 {
 #[inline(always)]
 const fn short_by_halves(a: i32, b: i32) -> i64 {
     let (ah, al) = (a >> 16, a & 0xFFFF);
-    // a·b = (ah·b)·2¹⁶ + al·b, both products within ±2³¹, added into the result's words
-    // (written so, the compiler does not turn it back into a 64-bit product call).
-    let (high, low) = (ah.wrapping_mul(b), al.wrapping_mul(b));
-    let (lo, carry) = ((high as u32) << 16).overflowing_add(low as u32);
-    let hi = (high >> 16)
-        .wrapping_add(low >> 31)
-        .wrapping_add(carry as i32);
+    // a·b = al·b + (ah·b)·2¹⁶, both products within ±2³¹, the second added into the first's
+    // words (written so, the compiler does not turn it back into a 64-bit product call).
+    let low = al.wrapping_mul(b);
+    let (lo, hi) = add_shifted16(low as u32, low >> 31, ah.wrapping_mul(b));
     ((hi as i64) << 32) | lo as i64
+}
+
+/// `hi·2³² + lo + m·2¹⁶` as words (`lo`, `hi`), for a signed 32-bit `m`: the low half of `m`
+/// with a carry into the high word, its high half by an arithmetic shift (32-bit operations
+/// only, where a 64-bit sum of a shifted product takes twice as many on Cortex-M0).
+#[inline(always)]
+const fn add_shifted16(lo: u32, hi: i32, m: i32) -> (u32, i32) {
+    let (lo, carry) = lo.overflowing_add((m as u32) << 16);
+    (lo, hi.wrapping_add(m >> 16).wrapping_add(carry as i32))
 }
 
 /// `a · b` exactly for unsigned factors: [`mul_wide`]'s unsigned twin (UMULL on Cortex-M3/M4).
@@ -223,19 +229,11 @@ pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
 const fn mul_halves(a: i32, b: i32) -> i64 {
     let (ah, al) = (a >> 16, (a & 0xFFFF) as u32);
     let (bh, bl) = (b >> 16, (b & 0xFFFF) as u32);
-    // Low halves below 2¹⁶, high halves within ±2¹⁵: each product fits 32 bits. The two
-    // middle products are added into the words of the result one at a time (their low half
-    // with a carry into the high word, their high half by an arithmetic shift): 32-bit
-    // operations only, where a 64-bit sum of shifted products takes twice as many.
+    // Low halves below 2¹⁶, high halves within ±2¹⁵: each product fits 32 bits. The outer
+    // products are the words of a start; the two middle ones are added into them.
     let (m1, m2) = (ah.wrapping_mul(bl as i32), bh.wrapping_mul(al as i32));
-    let (lo, c1) = (al * bl).overflowing_add((m1 as u32) << 16);
-    let (lo, c2) = lo.overflowing_add((m2 as u32) << 16);
-    let hi = ah
-        .wrapping_mul(bh)
-        .wrapping_add(m1 >> 16)
-        .wrapping_add(m2 >> 16)
-        .wrapping_add(c1 as i32)
-        .wrapping_add(c2 as i32);
+    let (lo, hi) = add_shifted16(al * bl, ah.wrapping_mul(bh), m1);
+    let (lo, hi) = add_shifted16(lo, hi, m2);
     ((hi as i64) << 32) | lo as i64
 }
 
