@@ -368,6 +368,28 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
 mod tests {
     use super::*;
 
+    /// The 32-bit stepper set-up (Cortex-M0's, so not on the host otherwise) starts where the
+    /// 64-bit one does, and both step alike: numerators and steps within ±2²⁹ (an edge started
+    /// within its top pixel), every denominator size.
+    #[test]
+    fn stepper_set_up_in_32_bits_equals_64() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let fields = |s: &CeilStepper| (s.value, s.rem, s.den, s.step_q, s.step_r);
+        for _ in 0..200_000 {
+            let x = rng.next_u64();
+            let den = (((x >> 40) as i32) >> (x % 24)).max(1);
+            let (n0, step) = (rng.within(1 << 29), rng.within(1 << 29));
+            let (mut a, mut b) = (
+                CeilStepper::new32(n0, den, step),
+                CeilStepper::new(n0 as i64, den as i64, step as i64),
+            );
+            assert_eq!(fields(&a), fields(&b), "{n0} {den} {step}");
+            a.step();
+            b.step();
+            assert_eq!(fields(&a), fields(&b), "{n0} {den} {step}");
+        }
+    }
+
     /// The division-free quotients (used where division is a library routine, so not on the
     /// host) equal floor division wherever they answer, and answer for quotients −1, 0, 1
     /// (−8 to 7 for 32-bit operands).
