@@ -7,7 +7,9 @@
 //! nothing is shifted.
 
 use super::Precision;
-use crate::math::{div_round, magnitude_bits, mul_short, shr_round, DivideBy, DEPTH_ONE};
+use crate::math::{
+    below_bits, div_round, magnitude_bits, mul_short, shr_round, DivideBy, DEPTH_ONE,
+};
 use crate::projection::Viewport;
 use crate::raster::ScreenPoint;
 
@@ -98,10 +100,9 @@ fn reduce_shift(c: &[i64; 4]) -> u32 {
 
 #[inline]
 pub(crate) fn reduce(c: [i64; 4]) -> [i64; 4] {
-    // The common case, coordinates below 2³¹, needs nothing: `v + 2³¹ − 1` lies in
-    // [0, 2³² − 1) exactly then (four comparisons without a branch between them).
-    let lim = 1u64 << 31;
-    let fits = |v: i64| (v as u64).wrapping_add(lim - 1) < 2 * lim - 1;
+    // The common case, coordinates below 2³¹, needs nothing (four comparisons without a
+    // branch between them).
+    let fits = |v: i64| below_bits(v, 31);
     if fits(c[0]) & fits(c[1]) & fits(c[2]) & fits(c[3]) {
         return c;
     }

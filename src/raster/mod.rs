@@ -332,10 +332,10 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
         }
     }
 
-    /// Advances `k` by one; true when the value moved by one more than the whole part of the
-    /// step.
+    /// Advances `k` by one: the value moves by the whole part of the step, or by one more when
+    /// the remainder wraps.
     #[inline(always)]
-    pub(crate) fn step_carry(&mut self) -> bool {
+    pub(crate) fn step(&mut self) {
         self.value = self.value.wrapping_add(self.step_q);
         let carry = if CEIL {
             // rem = value·D − N stays in [0, D): a negative rem borrows one more.
@@ -354,13 +354,6 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
             };
             self.value = self.value.wrapping_add(1);
         }
-        carry
-    }
-
-    /// Advances `k` by one.
-    #[inline(always)]
-    pub(crate) fn step(&mut self) {
-        self.step_carry();
     }
 }
 
