@@ -5,7 +5,7 @@
 
 use super::angle::Angle;
 use super::scalar::{
-    leading_zeros32, magnitude_bits, map3, shr_low_word, shr_round, NARROW_CORE, UNIT_ONE,
+    leading_zeros32, magnitude_bits, map3, mul_short_u32, shr_low_word, shr_round, UNIT_ONE,
 };
 use super::sqrt::rsqrt_q45;
 use super::vector::normalize;
@@ -203,28 +203,10 @@ fn newton_unit(c: [i64; 3]) -> Option<[i32; 3]> {
     // shifts by constants: a 64-bit shift by a variable amount is a library call on Cortex-M0).
     let y = rsqrt_q45(m);
     Some(map3(c, |x| {
-        let u = short_times_u32(x, y) >> 15;
+        let u = mul_short_u32(x as i32, y) >> 15;
         let u = if quartered { u >> 1 } else { u };
         u.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
     }))
-}
-
-/// `x · y` for `|x| ≤ 2¹⁵`: on cores without a long multiply two 32-bit products of `x` by
-/// the halves of `y` (each within ±2³¹), instead of the library's 64-bit product.
-#[inline(always)]
-fn short_times_u32(x: i64, y: u32) -> i64 {
-    if NARROW_CORE {
-        short_times_halves(x as i32, y)
-    } else {
-        x * y as i64
-    }
-}
-
-/// [`short_times_u32`] by the halves of `y` (tested on every host).
-#[inline(always)]
-fn short_times_halves(x: i32, y: u32) -> i64 {
-    let (high, low) = ((y >> 16) as i32, (y & 0xFFFF) as i32);
-    ((x.wrapping_mul(high) as i64) << 16) + x.wrapping_mul(low) as i64
 }
 
 #[cfg(test)]
@@ -243,25 +225,6 @@ mod tests {
                 .max((c.to_num::<f64>() - t.cos()).abs());
         }
         worst
-    }
-
-    /// The product by halves is the product, for factors within the bounds it is used at.
-    #[test]
-    fn short_times_halves_is_the_product() {
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let xs = [-(1 << 15), -(1 << 15) + 1, -1, 0, 1, (1 << 15) - 1, 1 << 15];
-        let ys = [0, 1, 0xFFFF, 0x1_0000, u32::MAX - 1, u32::MAX];
-        for x in xs {
-            for y in ys {
-                assert_eq!(short_times_halves(x, y), x as i64 * y as i64, "{x} {y}");
-            }
-        }
-        for _ in 0..100_000 {
-            let r = rng.next_u64();
-            let x = ((r as i32) >> 16).clamp(-(1 << 15), 1 << 15);
-            let y = (r >> 32) as u32;
-            assert_eq!(short_times_halves(x, y), x as i64 * y as i64, "{x} {y}");
-        }
     }
 
     /// M9 for every trig method over the whole circle.

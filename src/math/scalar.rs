@@ -196,11 +196,29 @@ pub(crate) const fn mul_short(a: i32, b: i32) -> i64 {
 /// [`mul_short`] on cores without a long multiply (tested on every host).
 #[inline(always)]
 const fn short_by_halves(a: i32, b: i32) -> i64 {
-    let (ah, al) = (a >> 16, a & 0xFFFF);
-    // a·b = al·b + (ah·b)·2¹⁶, both products within ±2³¹, the second added into the first's
-    // words (written so, the compiler does not turn it back into a 64-bit product call).
-    let low = al.wrapping_mul(b);
-    let (lo, hi) = add_shifted16(low as u32, low >> 31, ah.wrapping_mul(b));
+    halves_times(a >> 16, a & 0xFFFF, b)
+}
+
+/// `a · b` exactly for `|a| ≤ 2¹⁵` and `b` of any 32 bits unsigned: on cores without a long
+/// multiply two 32-bit products of `a` by `b`'s halves, each within ±2³¹, instead of the
+/// library's 64-bit product.
+#[inline(always)]
+pub(crate) const fn mul_short_u32(a: i32, b: u32) -> i64 {
+    if NARROW_CORE {
+        halves_times((b >> 16) as i32, (b & 0xFFFF) as i32, a)
+    } else {
+        a as i64 * b as i64
+    }
+}
+
+/// `(high·2¹⁶ + low) · b` for halves `high`, `low` (`0 ≤ low < 2¹⁶`) of a long factor and a
+/// short `b`, whose products with each half lie within ±2³¹: the low product's words, the high
+/// product added into them (written so, the compiler does not turn it back into a 64-bit
+/// product call).
+#[inline(always)]
+const fn halves_times(high: i32, low: i32, b: i32) -> i64 {
+    let low = low.wrapping_mul(b);
+    let (lo, hi) = add_shifted16(low as u32, low >> 31, high.wrapping_mul(b));
     ((hi as i64) << 32) | lo as i64
 }
 
@@ -274,6 +292,29 @@ mod tests {
                 assert_eq!(shr_words(v, s), (v >> s) as i32, "{v} >> {s}");
                 assert_eq!(shr_low_word(v, s), (v >> s) as i32, "{v} >> {s}");
             }
+        }
+    }
+
+    /// The product of a short factor by the halves of a long unsigned one (what Cortex-M0's
+    /// normalisation takes, so not run on the host otherwise) is the product, for factors
+    /// within the bounds it is used at.
+    #[test]
+    fn short_times_halves_of_u32_is_the_product() {
+        let narrow = |x: i32, y: u32| halves_times((y >> 16) as i32, (y & 0xFFFF) as i32, x);
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let xs = [-(1 << 15), -(1 << 15) + 1, -1, 0, 1, (1 << 15) - 1, 1 << 15];
+        let ys = [0, 1, 0xFFFF, 0x1_0000, u32::MAX - 1, u32::MAX];
+        for x in xs {
+            for y in ys {
+                assert_eq!(narrow(x, y), x as i64 * y as i64, "{x} {y}");
+                assert_eq!(mul_short_u32(x, y), x as i64 * y as i64, "{x} {y}");
+            }
+        }
+        for _ in 0..100_000 {
+            let r = rng.next_u64();
+            let x = ((r as i32) >> 16).clamp(-(1 << 15), 1 << 15);
+            let y = (r >> 32) as u32;
+            assert_eq!(narrow(x, y), x as i64 * y as i64, "{x} {y}");
         }
     }
 
