@@ -26,9 +26,7 @@ mod plane;
 mod triangle;
 
 pub use line::{line_pixels, LinePixels};
-pub(crate) use plane::{DepthRows, Plane, RowStarts};
-#[cfg(test)]
-pub(crate) use plane::{ShortRows, WideRows};
+pub(crate) use plane::{Plane, PlaneRows, RowStarts};
 pub(crate) use triangle::spans_in_range;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 

@@ -119,8 +119,10 @@ impl Plane {
     }
 }
 
-/// Walks a [`Plane`] down the rows: [`at`](RowStarts::at) is [`Plane::at`] on the current row,
-/// bit for bit (modulo 2⁶⁴), [`next_row`](RowStarts::next_row) moves down one row.
+/// Walks a [`Plane`] down the rows, for a span loop that starts each row's span from the
+/// plane's value at its first pixel: [`at`](RowStarts::at) is that value on the current row
+/// (in the form the loop takes: [`PlaneRows`] gives [`Plane::at`] itself, bit for bit modulo
+/// 2⁶⁴), [`next_row`](RowStarts::next_row) moves down one row.
 pub(crate) trait RowStarts {
     /// What the span loop starts from.
     type Start: Copy;
@@ -140,6 +142,15 @@ pub(crate) struct PlaneRows {
     x_base: i32,
 }
 
+impl PlaneRows {
+    /// The same walk of the plane plus the constant `c`.
+    #[inline]
+    pub(crate) fn plus(mut self, c: i64) -> PlaneRows {
+        self.at_row = self.at_row.wrapping_add(c);
+        self
+    }
+}
+
 impl RowStarts for PlaneRows {
     type Start = i64;
 
@@ -152,121 +163,6 @@ impl RowStarts for PlaneRows {
     #[inline(always)]
     fn next_row(&mut self) {
         self.at_row = self.at_row.wrapping_add(self.gy);
-    }
-}
-
-/// Fraction bits the u16 depth loop drops from the plane's values: it keeps 15 of their 28.
-const DROPPED: u32 = 13;
-
-/// The u16 depth loop's 32-bit start `⌊(v + 2²⁷) / 2¹³⌋` row after row: [`WideRows`] where
-/// 64-bit arithmetic is native, [`ShortRows`] (32-bit words only) elsewhere.
-#[cfg(target_pointer_width = "64")]
-pub(crate) type DepthRows = WideRows;
-/// The u16 depth loop's 32-bit start `⌊(v + 2²⁷) / 2¹³⌋` row after row: [`WideRows`] where
-/// 64-bit arithmetic is native, [`ShortRows`] (32-bit words only) elsewhere.
-#[cfg(not(target_pointer_width = "64"))]
-pub(crate) type DepthRows = ShortRows;
-
-/// [`RowStarts`] of `⌊(v + 2²⁷) / 2¹³⌋` (modulo 2³²) in 64-bit arithmetic: one product and a
-/// shift per row.
-#[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct WideRows(PlaneRows);
-
-#[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
-impl WideRows {
-    /// Starts at row `y`, for columns from `x_base` on.
-    #[inline]
-    pub(crate) fn new(plane: &Plane, x_base: i32, y: i32) -> WideRows {
-        let mut rows = plane.rows(x_base, y);
-        rows.at_row = rows.at_row.wrapping_add(1 << 27);
-        WideRows(rows)
-    }
-}
-
-impl RowStarts for WideRows {
-    type Start = i32;
-
-    #[inline(always)]
-    fn at(&self, x: i32) -> i32 {
-        (self.0.at(x) >> DROPPED) as i32
-    }
-
-    #[inline(always)]
-    fn next_row(&mut self) {
-        self.0.next_row();
-    }
-}
-
-/// `v` as `(⌊v / 2¹³⌋ mod 2³², v mod 2¹³)`: exact pieces of a 64-bit value in 32-bit words.
-#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
-#[inline(always)]
-const fn split(v: i64) -> (i32, u32) {
-    ((v >> DROPPED) as i32, v as u32 & ((1 << DROPPED) - 1))
-}
-
-/// [`RowStarts`] of `⌊(v + 2²⁷) / 2¹³⌋`, the u16 depth loop's 32-bit start, in 32-bit
-/// arithmetic only (no 64-bit product or sum per row, which Cortex-M0 lacks).
-///
-/// With the row's value `A = a·2¹³ + α` and the pixel step `G = g·2¹³ + γ` (`0 ≤ α, γ < 2¹³`)
-/// the value `dx` pixels along is `⌊(A + G·dx) / 2¹³⌋ = a + g·dx + ⌊(α + γ·dx) / 2¹³⌋`, and the
-/// last term's sum stays below 2³² for `dx < 2¹⁹` (the caller's columns lie within 2¹⁶ of the
-/// base). Every term is exact modulo 2³², so wherever the true value fits 31 bits (the u16
-/// loop's precondition) the result is that value, bit for bit. Rows advance the same way.
-#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct ShortRows {
-    a: i32,
-    alpha: u32,
-    g: i32,
-    gamma: u32,
-    row: i32,
-    row_frac: u32,
-    x_base: i32,
-}
-
-#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
-impl ShortRows {
-    /// Starts `⌊(plane + 2²⁷) / 2¹³⌋` at row `y`, for columns from `x_base` to less than
-    /// `x_base + 2¹⁹`.
-    #[inline]
-    pub(crate) fn new(plane: &Plane, x_base: i32, y: i32) -> ShortRows {
-        let (gx, gy) = plane.pixel_steps();
-        let (a, alpha) = split(plane.at(x_base, y).wrapping_add(1 << 27));
-        let (g, gamma) = split(gx);
-        let (row, row_frac) = split(gy);
-        ShortRows {
-            a,
-            alpha,
-            g,
-            gamma,
-            row,
-            row_frac,
-            x_base,
-        }
-    }
-}
-
-impl RowStarts for ShortRows {
-    type Start = i32;
-
-    #[inline(always)]
-    fn at(&self, x: i32) -> i32 {
-        let dx = x.wrapping_sub(self.x_base);
-        let carry = self.alpha.wrapping_add(self.gamma.wrapping_mul(dx as u32)) >> DROPPED;
-        self.a
-            .wrapping_add(self.g.wrapping_mul(dx))
-            .wrapping_add(carry as i32)
-    }
-
-    #[inline(always)]
-    fn next_row(&mut self) {
-        let sum = self.alpha.wrapping_add(self.row_frac);
-        self.a = self
-            .a
-            .wrapping_add(self.row)
-            .wrapping_add((sum >> DROPPED) as i32);
-        self.alpha = sum & ((1 << DROPPED) - 1);
     }
 }
 

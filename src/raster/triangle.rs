@@ -288,7 +288,8 @@ mod tests {
     /// and flat gradients.
     #[test]
     fn row_walks_equal_the_iterator_and_plane_at() {
-        use crate::raster::{RowStarts, ShortRows, WideRows};
+        use crate::raster::RowStarts;
+        use crate::target::{ShortRows, WideRows};
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let mut next = |range: i32| rng.within(range);
         let clip = PixelRect::new(3, 5, 60, 144);

@@ -1,6 +1,15 @@
 //! Depth buffers: per-pixel depth in a caller-supplied `&mut [u16]` or `&mut [u32]`.
 
 use super::grid::{BufferError, Grid};
+use crate::raster::{Plane, PlaneRows, RowStarts};
+
+/// The interpolator's fraction bits below one u16 step (its Q1.44 value has 2¹⁶ steps).
+const U16_STEP_BITS: u32 = 28;
+/// Of those, the u16 span loop drops these and keeps the other 15: depth is bits 15 to 30 of
+/// its 32-bit value.
+const DROPPED: u32 = 13;
+/// Half a u16 step in the interpolator's units: added once, truncation then rounds to nearest.
+const HALF_STEP: i64 = 1 << (U16_STEP_BITS - 1);
 
 mod sealed {
     pub trait Sealed {}
@@ -42,8 +51,15 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         next_color: impl FnMut() -> C,
     ) -> u32 {
         // Formats without a fast path never hand out a step; this only keeps the contract.
-        let start = ((start as i64) << 13).wrapping_sub(1 << 27);
-        Self::test_span(depths, colors, start, (step as i64) << 13, test, next_color)
+        let start = ((start as i64) << DROPPED).wrapping_sub(HALF_STEP);
+        Self::test_span(
+            depths,
+            colors,
+            start,
+            (step as i64) << DROPPED,
+            test,
+            next_color,
+        )
     }
 
     /// Depth-tests one span: `start` and `step` are the interpolator's values at the first
@@ -97,7 +113,7 @@ impl DepthFormat for u16 {
     const FAR: u16 = u16::MAX;
     #[inline(always)]
     fn from_interpolated(acc: i64) -> u16 {
-        (acc.saturating_add(1 << 27) >> 28).clamp(0, u16::MAX as i64) as u16
+        (acc.saturating_add(HALF_STEP) >> U16_STEP_BITS).clamp(0, u16::MAX as i64) as u16
     }
 
     /// The span loop in 32 bits: depth in u16 units with 15 fraction bits. The start is rounded
@@ -114,8 +130,8 @@ impl DepthFormat for u16 {
         next_color: impl FnMut() -> C,
     ) -> u32 {
         let n = depths.len().min(colors.len());
-        let a = start.saturating_add(1 << 27) >> 13;
-        let st = step.saturating_add(1 << 12) >> 13;
+        let a = start.saturating_add(HALF_STEP) >> DROPPED;
+        let st = loop_step(step);
         let last = a.saturating_add(st.saturating_mul(n.saturating_sub(1) as i64));
         let in_range = |v: i64| (0..=i32::MAX as i64).contains(&v);
         if !(in_range(a) && in_range(last) && i32::try_from(st).is_ok()) {
@@ -130,9 +146,8 @@ impl DepthFormat for u16 {
     /// with every vertex at most 2⁴⁴ − 2²⁸, every value of the loop lies in [0, 2³¹).
     #[inline(always)]
     fn unclamped_step(max: i64, step: i64) -> Option<i32> {
-        let st = step.saturating_add(1 << 12) >> 13;
-        (max <= (1 << 44) - (1 << 28))
-            .then(|| i32::try_from(st).ok())
+        (max <= (1 << 44) - (1 << U16_STEP_BITS))
+            .then(|| i32::try_from(loop_step(step)).ok())
             .flatten()
     }
 
@@ -167,7 +182,7 @@ fn unclamped_u16<C: Copy, const LE: bool>(
     let (mut acc, st) = (acc as u32, st as u32);
     let mut written = 0;
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
-        let z = (acc >> 15) as Compared;
+        let z = (acc >> (U16_STEP_BITS - DROPPED)) as Compared;
         acc = acc.wrapping_add(st);
         let color = next_color();
         let old = Compared::from(*d);
@@ -189,6 +204,122 @@ type Compared = u16;
 /// The width the u16 loop compares depths in (see the 64-bit definition).
 #[cfg(not(target_pointer_width = "64"))]
 type Compared = u32;
+
+/// The u16 span loop's step from the interpolator's, rounded to its unit.
+#[inline(always)]
+fn loop_step(step: i64) -> i64 {
+    step.saturating_add(1 << (DROPPED - 1)) >> DROPPED
+}
+
+/// The u16 depth loop's 32-bit start `⌊(v + 2²⁷) / 2¹³⌋` row after row: [`WideRows`] where
+/// 64-bit arithmetic is native, [`ShortRows`] (32-bit words only) elsewhere.
+#[cfg(target_pointer_width = "64")]
+pub(crate) type DepthRows = WideRows;
+/// The u16 depth loop's 32-bit start `⌊(v + 2²⁷) / 2¹³⌋` row after row: [`WideRows`] where
+/// 64-bit arithmetic is native, [`ShortRows`] (32-bit words only) elsewhere.
+#[cfg(not(target_pointer_width = "64"))]
+pub(crate) type DepthRows = ShortRows;
+
+/// [`RowStarts`] of `⌊(v + 2²⁷) / 2¹³⌋` (modulo 2³²) in 64-bit arithmetic: one product and a
+/// shift per row.
+#[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct WideRows(PlaneRows);
+
+#[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
+impl WideRows {
+    /// Starts at row `y`, for columns from `x_base` on.
+    #[inline]
+    pub(crate) fn new(plane: &Plane, x_base: i32, y: i32) -> WideRows {
+        WideRows(plane.rows(x_base, y).plus(HALF_STEP))
+    }
+}
+
+impl RowStarts for WideRows {
+    type Start = i32;
+
+    #[inline(always)]
+    fn at(&self, x: i32) -> i32 {
+        (self.0.at(x) >> DROPPED) as i32
+    }
+
+    #[inline(always)]
+    fn next_row(&mut self) {
+        self.0.next_row();
+    }
+}
+
+/// `v` as `(⌊v / 2¹³⌋ mod 2³², v mod 2¹³)`: exact pieces of a 64-bit value in 32-bit words.
+#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
+#[inline(always)]
+const fn split(v: i64) -> (i32, u32) {
+    ((v >> DROPPED) as i32, v as u32 & ((1 << DROPPED) - 1))
+}
+
+/// [`RowStarts`] of `⌊(v + 2²⁷) / 2¹³⌋`, the u16 depth loop's 32-bit start, in 32-bit
+/// arithmetic only (no 64-bit product or sum per row, which Cortex-M0 lacks).
+///
+/// With the row's value `A = a·2¹³ + α` and the pixel step `G = g·2¹³ + γ` (`0 ≤ α, γ < 2¹³`)
+/// the value `dx` pixels along is `⌊(A + G·dx) / 2¹³⌋ = a + g·dx + ⌊(α + γ·dx) / 2¹³⌋`, and the
+/// last term's sum stays below 2³² for `dx < 2¹⁹` (the caller's columns lie within 2¹⁶ of the
+/// base). Every term is exact modulo 2³², so wherever the true value fits 31 bits (the u16
+/// loop's precondition) the result is that value, bit for bit. Rows advance the same way.
+#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ShortRows {
+    a: i32,
+    alpha: u32,
+    g: i32,
+    gamma: u32,
+    row: i32,
+    row_frac: u32,
+    x_base: i32,
+}
+
+#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
+impl ShortRows {
+    /// Starts `⌊(plane + 2²⁷) / 2¹³⌋` at row `y`, for columns from `x_base` to less than
+    /// `x_base + 2¹⁹`.
+    #[inline]
+    pub(crate) fn new(plane: &Plane, x_base: i32, y: i32) -> ShortRows {
+        let (gx, gy) = plane.pixel_steps();
+        let (a, alpha) = split(plane.at(x_base, y).wrapping_add(HALF_STEP));
+        let (g, gamma) = split(gx);
+        let (row, row_frac) = split(gy);
+        ShortRows {
+            a,
+            alpha,
+            g,
+            gamma,
+            row,
+            row_frac,
+            x_base,
+        }
+    }
+}
+
+impl RowStarts for ShortRows {
+    type Start = i32;
+
+    #[inline(always)]
+    fn at(&self, x: i32) -> i32 {
+        let dx = x.wrapping_sub(self.x_base);
+        let carry = self.alpha.wrapping_add(self.gamma.wrapping_mul(dx as u32)) >> DROPPED;
+        self.a
+            .wrapping_add(self.g.wrapping_mul(dx))
+            .wrapping_add(carry as i32)
+    }
+
+    #[inline(always)]
+    fn next_row(&mut self) {
+        let sum = self.alpha.wrapping_add(self.row_frac);
+        self.a = self
+            .a
+            .wrapping_add(self.row)
+            .wrapping_add((sum >> DROPPED) as i32);
+        self.alpha = sum & ((1 << DROPPED) - 1);
+    }
+}
 
 /// 32-bit depth: `round(z · 2³²)`, clamped to `u32::MAX`; its resolution is that of the
 /// pipeline's Q1.30 depth (30 significant bits).

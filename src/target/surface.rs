@@ -5,12 +5,12 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 
-use super::depth::{DepthBuffer, DepthFormat, DepthTest};
+use super::depth::{DepthBuffer, DepthFormat, DepthRows, DepthTest};
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::pipeline::Stats;
-use crate::raster::{DepthRows, PixelRect, Plane, RowStarts, Span, TriangleSpans};
+use crate::raster::{PixelRect, Plane, RowStarts, Span, TriangleSpans};
 use crate::shade::Paint;
 
 /// Depth across one triangle: the plane through its snapped vertices and the largest of their
