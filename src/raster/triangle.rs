@@ -221,10 +221,8 @@ impl TriangleSpans {
                 self.y_end
             };
             while self.y < end {
-                f(
-                    self.left.value.max(self.x_min),
-                    self.right.value.min(self.x_max),
-                );
+                let (x0, x1) = self.ends();
+                f(x0, x1);
                 self.step_edges();
             }
             if self.y >= self.y_end {
@@ -232,6 +230,15 @@ impl TriangleSpans {
             }
             self.switch_at_split();
         }
+    }
+
+    /// The current row's pixels `x0..x1`, clipped to the clip rectangle's columns.
+    #[inline(always)]
+    fn ends(&self) -> (i32, i32) {
+        (
+            self.left.value.max(self.x_min),
+            self.right.value.min(self.x_max),
+        )
     }
 
     /// Moves both edges down one row. Out of line on 64-bit hosts: the row loop's edges then
@@ -261,13 +268,8 @@ impl Iterator for TriangleSpans {
     fn next(&mut self) -> Option<Span> {
         while self.y < self.y_end {
             self.switch_at_split();
-            let (l, r) = (self.left.value, self.right.value);
-            let y = self.y;
-            self.left.step();
-            self.right.step();
-            self.y += 1;
-            let x0 = l.max(self.x_min);
-            let x1 = r.min(self.x_max);
+            let (y, (x0, x1)) = (self.y, self.ends());
+            self.step_edges();
             if x0 < x1 {
                 return Some(Span { y, x0, x1 });
             }
