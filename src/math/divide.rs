@@ -1,6 +1,6 @@
 //! Divisions. [`div_round`] rounds to nearest on every core; where 64-bit division is a long
-//! library routine (32-bit cores) it runs as 32-bit divisions of 16-bit digits. On Armv6-M
-//! every division is a library routine of a hundred and more instructions, and the pipeline
+//! library routine (32-bit cores) it runs as 32-bit divisions of digits (14 bits for short
+//! divisors, 16 otherwise). On Armv6-M every division is a library routine of a hundred and more instructions, and the pipeline
 //! often divides several numerators by the same number: a vertex's x, y and depth by its `w`,
 //! a triangle's two depth gradients by its doubled area. [`DivideBy`] then pays for one
 //! reciprocal of the divisor and divides with a widening multiply and a few corrections
@@ -19,8 +19,8 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
     }
     let half = d / 2;
     // Where 64-bit division is a long library routine (32-bit cores), the same quotient by a
-    // 32-bit division when the operands fit (most divisions of the pipeline), else by two or
-    // three when the divisor fits 32 bits (the depth divisions).
+    // 32-bit division when the operands fit (most divisions of the pipeline), else by a few
+    // when the divisor fits 32 bits (the depth divisions: see `div_round_u64_u32`).
     if cfg!(target_pointer_width = "32") {
         if let Some(q) = div_round_u32(n, d) {
             return q;
@@ -104,8 +104,9 @@ const fn with_sign_of(n: i64, q: u64) -> i64 {
     }
 }
 
-/// [`div_round`] for `d` that fits 32 bits, by [`div_u64_u32`]: twice for a quotient below
-/// 2³², once more for its high word (the depth gradients of small triangles).
+/// [`div_round`] for `d` that fits 32 bits: with a divide instruction and `d` below 2¹⁸ (the
+/// depth gradients of small triangles) by [`div_by_short`], otherwise by [`div_u64_u32`], once
+/// for a quotient below 2³², once more for its high word.
 const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
     if d <= 0 || d > u32::MAX as i64 {
         return None;
@@ -113,13 +114,39 @@ const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
     let d = d as u32;
     let a = rounded_magnitude(n, d);
     let hi = (a >> 32) as u32;
-    let q = if hi < d {
+    let q = if !NARROW_CORE && d < 1 << SHORT_DIVISOR_BITS {
+        div_by_short(a, d)
+    } else if hi < d {
         div_u64_u32(a, d) as u64
     } else {
         let (qh, rh) = (hi / d, hi % d);
         ((qh as u64) << 32) | div_u64_u32(((rh as u64) << 32) | (a & 0xFFFF_FFFF), d) as u64
     };
     Some(with_sign_of(n, q))
+}
+
+/// Divisors below `2^SHORT_DIVISOR_BITS` leave room for a 14-bit digit beside any remainder in
+/// a 32-bit word: [`div_by_short`] applies.
+const SHORT_DIVISOR_BITS: u32 = 18;
+
+/// `⌊a / d⌋` for `0 < d < 2¹⁸` by four 32-bit divisions, one per 14-bit digit of `a` below its
+/// top 22 bits (schoolbook long division: each partial remainder is below `d`, so it and the
+/// next digit fit 32 bits). With a hardware divide (Cortex-M3/M4) about half the cost of
+/// [`div_u64_u32`]'s normalised 16-bit digits, and any quotient size: the depth gradients of
+/// small triangles (doubled areas below 2¹⁸ square sub-pixels) divide so.
+#[inline(always)]
+const fn div_by_short(a: u64, d: u32) -> u64 {
+    const DIGIT: u32 = 14;
+    const MASK: u64 = (1 << DIGIT) - 1;
+    let top = (a >> (3 * DIGIT)) as u32;
+    let (q3, r) = (top / d, top % d);
+    let n2 = (r << DIGIT) | ((a >> (2 * DIGIT)) & MASK) as u32;
+    let (q2, r) = (n2 / d, n2 % d);
+    let n1 = (r << DIGIT) | ((a >> DIGIT) & MASK) as u32;
+    let (q1, r) = (n1 / d, n1 % d);
+    let n0 = (r << DIGIT) | (a & MASK) as u32;
+    let q0 = n0 / d;
+    ((q3 as u64) << (3 * DIGIT)) | ((q2 as u64) << (2 * DIGIT)) | ((q1 as u64) << DIGIT) | q0 as u64
 }
 
 /// [`div_round`] by a 32-bit division, when `|n| + d/2` and `d > 0` fit 32 bits.
@@ -340,6 +367,26 @@ mod tests {
         }
         assert_eq!(div_round_u64_u32(5, 1 << 32), None);
         assert_eq!(div_round_u64_u32(5, 0), None);
+    }
+
+    /// The division by a short divisor gives the 128-bit quotient for divisors of every size
+    /// below 2¹⁸ and numerators of every size, the ends of the range included.
+    #[test]
+    fn division_by_a_short_divisor_is_exact() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        for i in 0..400_000u32 {
+            let x = rng.next_u64();
+            let d = ((x >> 40) as u32 >> (6 + i % 18)).max(1);
+            let a = match i % 1000 {
+                0 => u64::MAX,
+                1 => 0,
+                2 => (d as u64) << 50,
+                _ => rng.next_u64() >> (i % 64),
+            };
+            assert_eq!(div_by_short(a, d), a / d as u64, "{a} / {d}");
+        }
+        let top = (1u32 << SHORT_DIVISOR_BITS) - 1;
+        assert_eq!(div_by_short(u64::MAX, top), u64::MAX / top as u64);
     }
 
     /// The two-digit 64/32 division gives the 64-bit quotient wherever it applies: divisors
