@@ -1,12 +1,12 @@
 //! Divisions. [`div_round`] rounds to nearest on every core; where 64-bit division is a long
 //! library routine (32-bit cores) it runs as 32-bit divisions of digits (14 bits for short
-//! divisors, 16 otherwise). On Armv6-M every division is a library routine of a hundred and more instructions, and the pipeline
-//! often divides several numerators by the same number: a vertex's x, y and depth by its `w`,
-//! a triangle's two depth gradients by its doubled area. [`DivideBy`] then pays for one
-//! reciprocal of the divisor and divides with a widening multiply and a few corrections
-//! (Möller and Granlund, "Improved division by invariant integers", IEEE Trans. Computers
-//! 60(2), 2011: the reciprocal `v = ⌊(2⁶⁴ − 1)/d⌋ − 2³²` of the normalised divisor `d`, and
-//! their two-by-one division, algorithm 4). Every path returns the same quotients, which the
+//! divisors, 16 otherwise). On Armv6-M every division is a library routine of a hundred and more
+//! instructions, and the pipeline often divides several numerators by the same number: a vertex's
+//! x, y and depth by its `w`, a triangle's two depth gradients by its doubled area. [`DivideBy`]
+//! then pays for one reciprocal of the divisor and divides with a widening multiply and a few
+//! corrections (Möller and Granlund, "Improved division by invariant integers", IEEE Trans.
+//! Computers 60(2), 2011: the reciprocal `v = ⌊(2⁶⁴ − 1)/d⌋ − 2³²` of the normalised divisor `d`,
+//! and their two-by-one division, algorithm 4). Every path returns the same quotients, which the
 //! tests check against 128-bit arithmetic.
 
 use super::scalar::{leading_zeros32, mul_wide, mul_wide_u32, shl_words, NARROW_CORE};
