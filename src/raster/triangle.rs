@@ -190,16 +190,15 @@ impl TriangleSpans {
             return false;
         }
         let [_, b, c] = self.v;
-        let lower = edge(b, c, self.y);
         // The split row is never reached again.
         self.y_split = i32::MIN;
-        if self.long_is_left {
-            self.right = lower;
-            false
+        let (short, left_changed) = if self.long_is_left {
+            (&mut self.right, false)
         } else {
-            self.left = lower;
-            true
-        }
+            (&mut self.left, true)
+        };
+        *short = edge(b, c, self.y);
+        left_changed
     }
 
     /// The row the next span lies on.
