@@ -174,8 +174,20 @@ pub(crate) fn outcode_and_project(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoin
     if code != 0 {
         return (code, ScreenPoint::default(), 0);
     }
-    let (p, depth) = project_reduced(xh, yh, z, w, m).unwrap_or_default();
-    (code, p, depth)
+    if m.snap != 0 {
+        let (p, depth) = project_reduced(xh, yh, z, w, m).unwrap_or_default();
+        return (code, p, depth);
+    }
+    // Inside every plane: 0 < z ≤ w, and |x·half_w|, |y·half_h| ≤ GUARD·w, so both offsets
+    // from the centre are at most GUARD (below 2¹⁴) and the depth lies in [0, 2³⁰]: the
+    // results and their clamps fit 32-bit words (the clamps keep `project`'s contract).
+    let by_w = DivideBy::new(w);
+    let lim = 1 << 15;
+    let sx = (m.half_w as i32).wrapping_add(by_w.round_short(xh) as i32);
+    let sy = (m.half_h as i32).wrapping_sub(by_w.round_short(yh) as i32);
+    let sz = by_w.round(z << 30) as i32;
+    let p = ScreenPoint::new(sx.clamp(-lim, lim), sy.clamp(-lim, lim));
+    (code, p, sz.clamp(0, DEPTH_ONE))
 }
 
 /// [`project`] of reduced coordinates, from `x·half_w`, `y·half_h`, `z` and `w`.
@@ -228,5 +240,34 @@ mod tests {
             });
             assert_eq!(outcode_and_project(c, &map).0, expected, "{c:?}");
         }
+    }
+
+    /// A vertex inside every plane projects in 32-bit words where `project` takes 64: the
+    /// same point and depth, for vertices all over the guard band and the depth range, at
+    /// every scale of w.
+    #[test]
+    fn inside_vertices_project_as_project_does() {
+        let map = ScreenMap::new(
+            &Viewport::new(320, 240).unwrap_or_else(|_| unreachable!()),
+            &Precision::DEFAULT,
+        );
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let mut inside = 0;
+        for i in 0..200_000u32 {
+            let w = (rng.next_u64() >> (34 + i % 30)) as i64 + 1;
+            let mut coordinate = |range: i64| {
+                let x = rng.next_u64() as i64;
+                x.rem_euclid(2 * range + 1) - range
+            };
+            let (x, y) = (coordinate(w * 7), coordinate(w * 9));
+            let z = coordinate(w).abs();
+            let c = [x, y, z, w];
+            let (code, p, depth) = outcode_and_project(c, &map);
+            if code == 0 {
+                assert_eq!(project(c, &map), Some((p, depth)), "{c:?}");
+                inside += 1;
+            }
+        }
+        assert!(inside > 50_000, "{inside}");
     }
 }
