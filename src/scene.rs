@@ -116,6 +116,9 @@ pub(crate) struct PreparedLight {
 pub struct Lighting<const N: usize> {
     ambient: LightColor,
     lights: heapless::Vec<PreparedLight, N>,
+    /// True while the ambient colour and every light are grey (equal channels): Lambert then
+    /// sums one channel for all three.
+    grey: bool,
 }
 
 impl<const N: usize> Lighting<N> {
@@ -125,6 +128,8 @@ impl<const N: usize> Lighting<N> {
         Lighting {
             ambient,
             lights: heapless::Vec::new(),
+            grey: ambient.r.to_bits() == ambient.g.to_bits()
+                && ambient.g.to_bits() == ambient.b.to_bits(),
         }
     }
 
@@ -136,7 +141,10 @@ impl<const N: usize> Lighting<N> {
             direction,
             color: light.color.channels(),
         };
-        self.lights.push(prepared).map_err(|_| LightError::Full)
+        self.lights.push(prepared).map_err(|_| LightError::Full)?;
+        let [r, g, b] = prepared.color;
+        self.grey &= r == g && g == b;
+        Ok(())
     }
 
     /// The ambient colour.
@@ -161,6 +169,11 @@ impl<const N: usize> Lighting<N> {
         &self.lights
     }
 
+    /// True when the ambient colour and every light have three equal channels.
+    pub(crate) fn is_grey(&self) -> bool {
+        self.grey
+    }
+
     /// The same lights seen from an object's model space, for an object whose normal matrix
     /// (world from model, see [`Mat4::normal_matrix`](crate::math::Mat4)) is a rotation times a
     /// scale: then `n · l` in world space equals `n' · Rᵀl` in model space for the model-space
@@ -183,6 +196,7 @@ impl<const N: usize> Lighting<N> {
         Some(Lighting {
             ambient: self.ambient,
             lights,
+            grey: self.grey,
         })
     }
 }

@@ -7,7 +7,7 @@ use crate::math::normalize;
 use crate::math::{
     below_bits, cross_wide, dot_unit, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE,
 };
-use crate::scene::Lighting;
+use crate::scene::{Lighting, PreparedLight};
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
 /// Per channel: `floor(base · clamp(ambient + Σ light · max(0, n·l), 0, 1))`.
@@ -16,35 +16,60 @@ pub(crate) fn lambert<const N: usize>(
     n: Option<[i32; 3]>,
     lighting: &Lighting<N>,
 ) -> Rgb888 {
+    if !lighting.is_grey() {
+        return lambert_colored(base, n, lighting);
+    }
+    // Grey ambient and lights (the usual kind): one sum serves the three channels.
+    let ambient = lighting.ambient().channels()[0];
+    let s = lighting.lights().iter().fold(ambient, |s, light| {
+        s.wrapping_add(term(light.color[0], facing(n, light)))
+    });
+    let s = intensity(s);
+    Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s))
+}
+
+/// [`lambert`] for coloured lights or ambient: a sum per channel.
+#[inline(never)]
+fn lambert_colored<const N: usize>(
+    base: Rgb888,
+    n: Option<[i32; 3]>,
+    lighting: &Lighting<N>,
+) -> Rgb888 {
     let mut sum = lighting.ambient().channels();
-    if let Some(n) = n {
-        for light in lighting.lights() {
-            let d = dot_unit(n, light.direction).max(0);
-            // Q16.16 · Q2.30 → Q16.16 (the channel is a Scalar's bits: it fits i32), each term
-            // within ±2³¹: no count of lights a memory can hold overflows the sum.
-            let term = |c: i64| mul_wide(c as i32, d) >> 30;
-            let [r, g, b] = light.color;
-            if r == g && g == b {
-                // A grey light (the usual kind): one product for the three channels.
-                let t = term(r);
-                for s in &mut sum {
-                    *s = s.wrapping_add(t);
-                }
-            } else {
-                for (s, c) in sum.iter_mut().zip(light.color) {
-                    *s = s.wrapping_add(term(c));
-                }
-            }
+    for light in lighting.lights() {
+        let d = facing(n, light);
+        for (s, c) in sum.iter_mut().zip(light.color) {
+            *s = s.wrapping_add(term(c, d));
         }
     }
-    let one = 1i64 << 16;
-    // 255 · 2¹⁶ fits 32 bits.
-    let ch = |b: u8, s: i64| ((b as i32 * s.clamp(0, one) as i32) >> 16) as u8;
-    Rgb888::new(
-        ch(base.r(), sum[0]),
-        ch(base.g(), sum[1]),
-        ch(base.b(), sum[2]),
-    )
+    let [r, g, b] = sum.map(intensity);
+    Rgb888::new(lit(base.r(), r), lit(base.g(), g), lit(base.b(), b))
+}
+
+/// `max(0, n·l)` (Q2.30) for unit normal `n` and a light (no normal: 0).
+#[inline(always)]
+fn facing(n: Option<[i32; 3]>, light: &PreparedLight) -> i32 {
+    n.map_or(0, |n| dot_unit(n, light.direction).max(0))
+}
+
+/// One channel's term of a light that `facing` gave `d`: Q16.16 · Q2.30 → Q16.16 (the channel
+/// is a Scalar's bits: it fits i32), within ±2³¹: no count of lights a memory can hold
+/// overflows a sum of them.
+#[inline(always)]
+fn term(channel: i64, d: i32) -> i64 {
+    mul_wide(channel as i32, d) >> 30
+}
+
+/// A channel's sum clamped to [0, 1] (Q16.16).
+#[inline(always)]
+fn intensity(s: i64) -> i32 {
+    s.clamp(0, 1 << 16) as i32
+}
+
+/// `⌊base · intensity⌋` (255 · 2¹⁶ fits 32 bits).
+#[inline(always)]
+fn lit(base: u8, intensity: i32) -> u8 {
+    ((base as i32 * intensity) >> 16) as u8
 }
 
 /// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough
@@ -302,6 +327,53 @@ mod tests {
         ))
         .unwrap();
         assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &hot), base);
+    }
+}
+
+#[cfg(test)]
+mod grey_tests {
+    use super::*;
+    use crate::math::{normalize, Scalar, Vec3};
+    use crate::scene::{DirectionalLight, LightColor};
+
+    /// The grey shortcut (one sum for three channels) gives what the sum per channel gives, for
+    /// one to three grey lights, overbright ones included; a coloured light or ambient turns
+    /// the shortcut off.
+    #[test]
+    fn grey_lighting_equals_the_sum_per_channel() {
+        let gray = |v: f64| LightColor::gray(Scalar::from_num(v));
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let base = Rgb888::new(255, 160, 64);
+        for (k, ambient) in [0.0, 0.2, 0.9].into_iter().enumerate() {
+            let mut lighting = Lighting::<3>::new(gray(ambient));
+            for (d, c) in [((-1, 1, 1), 0.8), ((2, -1, 3), 0.5), ((0, 0, -1), 2.5)]
+                .into_iter()
+                .take(k + 1)
+            {
+                let light = DirectionalLight::new(Vec3::from_int(d.0, d.1, d.2), gray(c));
+                lighting.push(light).unwrap();
+            }
+            assert!(lighting.is_grey());
+            for _ in 0..5_000 {
+                let v = [(); 3].map(|_| rng.within(1 << 20) as i64);
+                let n = normalize(v);
+                assert_eq!(
+                    lambert(base, n, &lighting),
+                    lambert_colored(base, n, &lighting),
+                    "{v:?}"
+                );
+            }
+        }
+        let mut tinted = Lighting::<1>::new(gray(0.2));
+        let warm = LightColor::new(Scalar::ONE, Scalar::ONE, Scalar::from_num(0.5));
+        tinted.push(DirectionalLight::new(Vec3::Y, warm)).unwrap();
+        assert!(!tinted.is_grey());
+        assert_eq!(
+            lambert(base, Some([0, 1 << 30, 0]), &tinted),
+            Rgb888::new(255, 160, 44)
+        );
+        let blue = LightColor::new(Scalar::ZERO, Scalar::ZERO, Scalar::ONE);
+        assert!(!Lighting::<1>::new(blue).is_grey());
     }
 }
 
