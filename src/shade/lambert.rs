@@ -5,7 +5,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 #[cfg(test)]
 use crate::math::normalize;
 use crate::math::{
-    below_bits, cross_wide, dot_unit, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE,
+    below_bits, cross_wide, facing_unit, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE,
 };
 use crate::scene::{Lighting, PreparedLight};
 
@@ -49,7 +49,7 @@ fn lambert_colored<const N: usize>(
 /// `max(0, n·l)` (Q2.30) for unit normal `n` and a light (no normal: 0).
 #[inline(always)]
 fn facing(n: Option<[i32; 3]>, light: &PreparedLight) -> i32 {
-    n.map_or(0, |n| dot_unit(n, light.direction).max(0))
+    n.map_or(0, |n| facing_unit(n, light.direction))
 }
 
 /// One channel's term of a light that `facing` gave `d`: Q16.16 · Q2.30 → Q16.16 (the channel
