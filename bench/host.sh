@@ -99,27 +99,43 @@ $stages
 - **Pixels**: a shift, a compare, two stores and a count each (x86-64: about 9 instructions;
   Cortex-M4 and M0 about 13: on the M4 the pixel loop's colour and step do not fit in
   registers beside the row loop's state, and depths are compared in 32 bits so that the
-  stored halfword needs no masking). The floor of the scene is about 0.4 M on x86-64.
+  stored halfword needs no masking). The floor of the scene is about 0.4 M on x86-64. On
+  the M4 the same loop out of line takes 12 per pixel (predicated, every register its own),
+  but the call and its arguments cost each span more than that saves (measured: 2% more
+  per frame), so the loop's own floor there is about 0.37 M.
 - **Rows and span entries**: every row steps two edge steppers (an exact Bresenham quotient
   and remainder each), clips the span to the target, and moves the depth start and the row's
   place in both buffers; a row with pixels also checks the span against the buffers (one
-  bounds check serves both: same length), takes the depth at its first pixel from the row's plane value (one
-  product; on cores without 64-bit arithmetic two, in 32-bit words) and counts fragments
-  and writes. On x86-64 the edges step out of line, which leaves the pixel loop its registers
-  (4% of the frame); on Cortex-M the call costs more than it frees.
+  bounds check serves both: same length), takes the depth at its first pixel from the
+  row's plane value (one product; on 32-bit cores two, in 32-bit words, which measured
+  cheaper on the M4 too) and counts fragments and writes. About 100 instructions per row
+  with pixels on the M4, where the arithmetic needs about 40: the rest moves the row's state
+  (two steppers of five words, the depth walk, the clip columns, the buffers) between
+  registers and the stack around the pixel loop. On x86-64 the edges step out of line,
+  which leaves the pixel loop its registers (4% of the frame); on Cortex-M the call costs
+  more than it frees.
 - **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
-  on Cortex-M0 through one reciprocal, on the M4 by 32-bit divides of 16-bit digits) and three
-  edge steppers (two divisions each), then flat shading: the face normal (a cross product of
-  32-bit edges), its Newton normalisation in 32-bit words (skipped for faces turned from every
-  light: ambient only) and Lambert against the lights, which are turned into model space once
-  per object when the model matrix is a rotation times a scale (no normal matrix per face).
-  What would go further changes rounding (lighting in 16-bit arithmetic, depth relative to
-  the triangle in 32 bits) or the scene's definition (face normals kept in the mesh instead of
-  computed every frame), so \`docs/accuracy.md\` would have to show it loses nothing.
+  on Cortex-M0 through one reciprocal, on the M4 by four 32-bit divides of 14-bit digits for
+  doubled areas below 2¹⁸, of 16-bit digits otherwise) and three edge steppers (two
+  divisions each), then flat shading: the face normal (a cross product of 32-bit edges), its
+  Newton normalisation in 32-bit words (skipped for faces turned from every light: ambient
+  only) and Lambert against the lights (grey ones: one sum for the three channels), which
+  are turned into model space once per object when the model matrix is a rotation times a
+  scale (no normal matrix per face).
 - **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once), then the
   outcode and the projection from one reduction (three divisions by \`w\`: on Cortex-M0 one
-  reciprocal and three multiplications). On Cortex-M0, whose products of 32-bit factors are
-  routines of four multiplies, it is the largest stage.
+  reciprocal and three multiplications; inside the guard band the screen offsets and their
+  clamps in 32-bit words). On Cortex-M0, whose products of 32-bit factors are routines of
+  four multiplies, it is the largest stage.
+- **The goals**: with the pixels at their floor (0.37 M on the M4), 1.0 M leaves 0.63 M for
+  1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500 rows, a
+  third of what they take now. The largest excess found, the rows' register traffic, is
+  worth at most about 0.45 M on the M4 (rows and span entries at the 40 instructions their
+  arithmetic needs); the rest would need less work per stage rather than tighter code: a
+  cheaper rule (lighting in 16-bit arithmetic, depth relative to the triangle in 32 bits,
+  coarser sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show
+  costs nothing) or a different scene (face normals kept in the mesh instead of computed
+  every frame).
 - \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or \`thumbv7em-none-eabihf\`)
   lists the instructions by function and the library calls by the line that makes them, and
   \`ASM=fill_face\` prints a function's instructions with their counts.

@@ -5,7 +5,8 @@ with one early return, behind `core::hint::black_box` so that nothing before it 
 away) and `run.sh` counts the instructions per frame of each cut; a stage's cost is the
 difference between consecutive cuts. The working tree is never touched: the crate is copied to a
 temporary directory first. Each cut changes the code around it a little (inlining, registers),
-so a stage's figure is good to a few per cent of the frame.
+so a stage's figure is good to a few per cent of the frame; a stage smaller than that error
+(its difference negative on a core) is reported together with the next one.
 
     python3 bench/mcu/stages.py            # prints a Markdown table (about 3 minutes)
 """
@@ -120,13 +121,23 @@ def main():
     whole = totals[0][2]
     print("| stage | Cortex-M4F | share | Cortex-M0 | share |")
     print("|---|---:|---:|---:|---:|")
-    for i, (stage, _, here) in enumerate(totals):
-        after = totals[i + 1][2] if i + 1 < len(totals) else {t: 0 for t in TARGETS}
+    nothing = {t: 0 for t in TARGETS}
+    i = 0
+    while i < len(totals):
+        stage, _, here = totals[i]
+        # A stage so small that cutting it moved the code around it by more than it costs
+        # would come out negative: it is reported together with the next one.
+        j = i + 1
+        while j < len(totals) and any(here.get(t, 0) < totals[j][2].get(t, 0) for t in TARGETS):
+            stage += "; " + totals[j][0]
+            j += 1
+        after = totals[j][2] if j < len(totals) else nothing
         cells = []
         for t in TARGETS:
             v = here.get(t, 0) - after.get(t, 0)
             cells += [f"{v:,}", f"{100 * v / max(whole.get(t, 1), 1):.1f}%"]
         print(f"| {stage} | " + " | ".join(cells) + " |")
+        i = j
     print("| whole frame | " + " | ".join(
         [f"{whole.get(t, 0):,} | 100%" for t in TARGETS]) + " |")
 
