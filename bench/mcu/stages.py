@@ -8,7 +8,7 @@ temporary directory first. Each cut changes the code around it a little (inlinin
 so a stage's figure is good to a few per cent of the frame; a stage smaller than that error
 (its difference negative on a core) is reported together with the next one.
 
-    python3 bench/mcu/stages.py            # prints a Markdown table (about 3 minutes)
+    python3 bench/mcu/stages.py            # prints a Markdown table (about a minute)
 """
 
 import os
