@@ -133,7 +133,9 @@ const SHORT_DIVISOR_BITS: u32 = 18;
 /// top 22 bits (schoolbook long division: each partial remainder is below `d`, so it and the
 /// next digit fit 32 bits). With a hardware divide (Cortex-M3/M4) about half the cost of
 /// [`div_u64_u32`]'s normalised 16-bit digits, and any quotient size: the depth gradients of
-/// small triangles (doubled areas below 2¹⁸ square sub-pixels) divide so.
+/// small triangles (doubled areas below 2¹⁸ square sub-pixels) divide so, and so does a
+/// vertex's depth by its `w` at unit scale (Q16.16 clip coordinates: `w` below 2¹⁸ within
+/// four units of the camera).
 #[inline(always)]
 const fn div_by_short(a: u64, d: u32) -> u64 {
     const DIGIT: u32 = 14;
