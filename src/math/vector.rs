@@ -242,6 +242,8 @@ impl Neg for Vec3 {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+
     /// The cosine of two unit vectors is the rounded dot product's positive part, at every
     /// sign and at the rounding boundaries.
     #[test]
@@ -260,8 +262,6 @@ mod tests {
             assert_eq!(facing_unit(a, b) as i64, rounded.max(0), "{a:?} {b:?}");
         }
     }
-
-    use super::*;
 
     #[test]
     fn fast_normalize_agrees() {
