@@ -201,7 +201,7 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
 /// cosine. Only positive sums need rounding (a sum at or below zero gives zero either way), so
 /// one addition and a shift do it, without a sign test.
 #[inline]
-pub(crate) fn facing_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
+pub(crate) fn cosine_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
     // Components within ±2³⁰: products within ±2⁶⁰, three sum within ±2⁶².
     let s: i64 = a.iter().zip(b.iter()).map(|(x, y)| mul_wide(*x, *y)).sum();
     ((s + (1 << 29)) >> 30).clamp(0, 2 * UNIT_ONE as i64 - 1) as i32
@@ -247,7 +247,7 @@ mod tests {
     /// The cosine of two unit vectors is the rounded dot product's positive part, at every
     /// sign and at the rounding boundaries.
     #[test]
-    fn facing_unit_is_the_positive_part_of_the_rounded_dot() {
+    fn cosine_unit_is_the_positive_part_of_the_rounded_dot() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let one = UNIT_ONE;
         let edges = [0, 1, -1, 1 << 29, -(1 << 29), (1 << 29) - 1, one, -one];
@@ -259,7 +259,7 @@ mod tests {
             let (a, b) = ([pick(0), pick(1), pick(2)], [one, pick(3), pick(5)]);
             let s: i64 = (0..3).map(|k| a[k] as i64 * b[k] as i64).sum();
             let rounded = shr_round(s, 30).clamp(-(2 * one as i64), 2 * one as i64 - 1);
-            assert_eq!(facing_unit(a, b) as i64, rounded.max(0), "{a:?} {b:?}");
+            assert_eq!(cosine_unit(a, b) as i64, rounded.max(0), "{a:?} {b:?}");
         }
     }
 

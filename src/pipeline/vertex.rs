@@ -216,13 +216,16 @@ fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(S
 mod tests {
     use super::*;
 
+    /// The screen map of a 320x240 viewport at the default precision.
+    fn map_320x240() -> ScreenMap {
+        let viewport = Viewport::new(320, 240).unwrap_or_else(|_| unreachable!());
+        ScreenMap::new(&viewport, &Precision::DEFAULT)
+    }
+
     /// The written-out outcode is the one `distance` and `inside` define, plane by plane.
     #[test]
     fn outcode_matches_the_plane_definitions() {
-        let map = ScreenMap::new(
-            &Viewport::new(320, 240).unwrap_or_else(|_| unreachable!()),
-            &Precision::DEFAULT,
-        );
+        let map = map_320x240();
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         for _ in 0..100_000 {
             let mut c = [0i64; 4];
@@ -247,10 +250,7 @@ mod tests {
     /// every scale of w.
     #[test]
     fn inside_vertices_project_as_project_does() {
-        let map = ScreenMap::new(
-            &Viewport::new(320, 240).unwrap_or_else(|_| unreachable!()),
-            &Precision::DEFAULT,
-        );
+        let map = map_320x240();
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let mut inside = 0;
         for i in 0..200_000u32 {

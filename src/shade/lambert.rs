@@ -5,7 +5,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 #[cfg(test)]
 use crate::math::normalize;
 use crate::math::{
-    below_bits, cross_wide, facing_unit, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE,
+    below_bits, cosine_unit, cross_wide, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE,
 };
 use crate::scene::{Lighting, PreparedLight};
 
@@ -22,7 +22,7 @@ pub(crate) fn lambert<const N: usize>(
     // Grey ambient and lights (the usual kind): one sum serves the three channels.
     let ambient = lighting.ambient().channels()[0];
     let s = lighting.lights().iter().fold(ambient, |s, light| {
-        s.wrapping_add(term(light.color[0], facing(n, light)))
+        s.wrapping_add(term(light.color[0], cosine(n, light)))
     });
     let s = intensity(s);
     Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s))
@@ -37,7 +37,7 @@ fn lambert_colored<const N: usize>(
 ) -> Rgb888 {
     let mut sum = lighting.ambient().channels();
     for light in lighting.lights() {
-        let d = facing(n, light);
+        let d = cosine(n, light);
         for (s, c) in sum.iter_mut().zip(light.color) {
             *s = s.wrapping_add(term(c, d));
         }
@@ -48,11 +48,11 @@ fn lambert_colored<const N: usize>(
 
 /// `max(0, n·l)` (Q2.30) for unit normal `n` and a light (no normal: 0).
 #[inline(always)]
-fn facing(n: Option<[i32; 3]>, light: &PreparedLight) -> i32 {
-    n.map_or(0, |n| facing_unit(n, light.direction))
+fn cosine(n: Option<[i32; 3]>, light: &PreparedLight) -> i32 {
+    n.map_or(0, |n| cosine_unit(n, light.direction))
 }
 
-/// One channel's term of a light that `facing` gave `d`: Q16.16 · Q2.30 → Q16.16 (the channel
+/// One channel's term of a light whose `cosine` is `d`: Q16.16 · Q2.30 → Q16.16 (the channel
 /// is a Scalar's bits: it fits i32), within ±2³¹: no count of lights a memory can hold
 /// overflows a sum of them.
 #[inline(always)]
