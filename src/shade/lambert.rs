@@ -20,7 +20,7 @@ pub(crate) fn lambert<const N: usize>(
         return lambert_colored(base, n, lighting);
     }
     // Grey ambient and lights (the usual kind): one sum serves the three channels.
-    let ambient = lighting.ambient().channels()[0];
+    let ambient = i64::from(lighting.ambient().r.to_bits());
     let s = lighting.lights().iter().fold(ambient, |s, light| {
         s.wrapping_add(term(light.color[0], cosine(n, light)))
     });
