@@ -167,7 +167,8 @@ fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
 /// that fit 32 bits: [`shrink_to_15_bits`] in 32-bit words (the same values); `None` for zero.
 #[inline]
 fn shrink_to_15_bits32(v: [i32; 3]) -> Option<[i64; 3]> {
-    let max = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+    let [a, b, c] = v.map(i32::unsigned_abs);
+    let max = a.max(b).max(c);
     let bits = 32 - leading_zeros32(max);
     if bits == 0 {
         return None;
@@ -193,7 +194,8 @@ fn normalize_newton(v: [i64; 3]) -> Option<[i32; 3]> {
 #[inline(always)]
 fn newton_unit(c: [i64; 3]) -> Option<[i32; 3]> {
     // The sum of squares lies in [2²⁸, 3·2³⁰): 32-bit squares and sum (components below 2¹⁵).
-    let s = c.iter().map(|&x| (x as i32 * x as i32) as u32).sum::<u32>();
+    let [s0, s1, s2] = map3(c, |x| (x as i32 * x as i32) as u32);
+    let s = s0 + s1 + s2;
     let (m, quartered) = if s >= 1 << 30 {
         (s >> 2, true)
     } else {

@@ -197,13 +197,23 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
     }))
 }
 
+/// `a·b` exactly, for components whose products sum within ±2⁶³ (written out: at
+/// `opt-level = "s"` an iterator's sum stays a loop).
+#[inline(always)]
+pub(crate) fn dot_wide(a: [i32; 3], b: [i32; 3]) -> i64 {
+    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
+    mul_wide(a0, b0)
+        .wrapping_add(mul_wide(a1, b1))
+        .wrapping_add(mul_wide(a2, b2))
+}
+
 /// `max(0, a·b)` of two Q2.30 unit vectors, Q2.30, the dot product rounded to nearest: Lambert's
 /// cosine. Only positive sums need rounding (a sum at or below zero gives zero either way), so
 /// one addition and a shift do it, without a sign test.
 #[inline]
 pub(crate) fn cosine_unit(a: [i32; 3], b: [i32; 3]) -> i32 {
     // Components within ±2³⁰: products within ±2⁶⁰, three sum within ±2⁶².
-    let s: i64 = a.iter().zip(b.iter()).map(|(x, y)| mul_wide(*x, *y)).sum();
+    let s = dot_wide(a, b);
     ((s + (1 << 29)) >> 30).clamp(0, 2 * UNIT_ONE as i64 - 1) as i32
 }
 

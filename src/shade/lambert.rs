@@ -5,7 +5,8 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 #[cfg(test)]
 use crate::math::normalize;
 use crate::math::{
-    below_bits, cosine_unit, cross_wide, magnitude_bits, map3, mul_wide, Normalize, UNIT_ONE,
+    below_bits, cosine_unit, cross_wide, dot_wide, magnitude_bits, map3, mul_wide, Normalize,
+    UNIT_ONE,
 };
 use crate::scene::{Lighting, PreparedLight};
 
@@ -125,7 +126,7 @@ pub(crate) fn flat_color<const N: usize>(
 ) -> Rgb888 {
     let n = face_direction(p, normal_matrix, extent);
     // Components below 2³⁰ and unit directions: products below 2⁶⁰, sums below 2⁶².
-    let faces = |l: &[i32; 3]| (0..3).map(|i| mul_wide(n[i], l[i])).sum::<i64>() > 0;
+    let faces = |l: &[i32; 3]| dot_wide(n, *l) > 0;
     let unit = if lighting.lights().iter().any(|l| faces(&l.direction)) {
         method.unit32(n)
     } else {
