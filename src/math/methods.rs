@@ -167,7 +167,7 @@ fn shrink_to_15_bits(v: [i64; 3]) -> Option<[i64; 3]> {
 /// that fit 32 bits: [`shrink_to_15_bits`] in 32-bit words (the same values); `None` for zero.
 #[inline]
 fn shrink_to_15_bits32(v: [i32; 3]) -> Option<[i64; 3]> {
-    let [a, b, c] = v.map(i32::unsigned_abs);
+    let [a, b, c] = map3(v, i32::unsigned_abs);
     let max = a.max(b).max(c);
     let bits = 32 - leading_zeros32(max);
     if bits == 0 {
