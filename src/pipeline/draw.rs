@@ -184,16 +184,15 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                         continue;
                     }
                     // Vertex colours matter only to per-vertex shading.
-                    let rgb = if S::PER_VERTEX {
-                        [a, b, c].map(|v| v.rgb.map(|c| (c as i32) << 8))
-                    } else {
-                        [[0; 3]; 3]
+                    let vertex = |v: &ScreenVertex| {
+                        let rgb = if S::PER_VERTEX {
+                            map3(v.rgb, |c| (c as i32) << 8)
+                        } else {
+                            [0; 3]
+                        };
+                        (v.point(), v.z, rgb)
                     };
-                    let v = [
-                        (a.point(), a.z, rgb[0]),
-                        (b.point(), b.z, rgb[1]),
-                        (c.point(), c.z, rgb[2]),
-                    ];
+                    let v = [vertex(a), vertex(b), vertex(c)];
                     self.fill_face(target, &setup, tri, v, area, &mut stats)?;
                     continue;
                 }
