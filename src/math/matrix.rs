@@ -4,7 +4,7 @@
 use core::ops::Mul;
 
 use super::angle::Angle;
-use super::scalar::{magnitude_bits, mul_wide, shr_round, Scalar};
+use super::scalar::{magnitude_bits, mul_wide, mul_wide_inline, shr_round, Scalar};
 use super::vector::{cross_wide, saturate, Vec3};
 
 /// A 4x4 matrix of [`Scalar`] (Q16.16) entries.
@@ -178,9 +178,9 @@ impl Mat4 {
     fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
         let [x, y, z] = p;
         let row = |r: &[i32; 4]| {
-            let s = mul_wide(r[0], x)
-                .wrapping_add(mul_wide(r[1], y))
-                .wrapping_add(mul_wide(r[2], z))
+            let s = mul_wide_inline(r[0], x)
+                .wrapping_add(mul_wide_inline(r[1], y))
+                .wrapping_add(mul_wide_inline(r[2], z))
                 .wrapping_add((r[3] as i64) << 16);
             (s + (1 << 15)) >> 16
         };
