@@ -151,6 +151,18 @@ const fn div_by_short(a: u64, d: u32) -> u64 {
     ((q3 as u64) << (3 * DIGIT)) | ((q2 as u64) << (2 * DIGIT)) | ((q1 as u64) << DIGIT) | q0 as u64
 }
 
+/// [`div_round`]`(n · 2³⁰, d)` by [`div_by_short`] for `0 < d < 2¹⁸` and `0 ≤ n ≤ d`; `None`
+/// otherwise. `n·2³⁰ + ⌊d/2⌋ < 2⁴⁹` is the magnitude `div_round` rounds, and the quotient is
+/// at most 2³⁰.
+#[inline(always)]
+const fn fraction_by_short(n: i64, d: i64) -> Option<i64> {
+    // Unsigned comparisons: d − 1 in [0, 2¹⁸ − 1) and n in [0, d], one test each.
+    if d.wrapping_sub(1) as u64 >= (1 << SHORT_DIVISOR_BITS) - 1 || n as u64 > d as u64 {
+        return None;
+    }
+    Some(div_by_short(((n as u64) << 30) + (d / 2) as u64, d as u32) as i64)
+}
+
 /// [`div_round`] by a 32-bit division, when `|n| + d/2` and `d > 0` fit 32 bits.
 const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
     if d <= 0 || d > u32::MAX as i64 {
@@ -205,6 +217,19 @@ impl DivideBy {
             }
         }
         self.round(n)
+    }
+
+    /// [`round`](Self::round)`(n · 2³⁰)` for `0 ≤ n ≤ d` (a vertex's depth `z / w` in Q1.30): on
+    /// 32-bit cores with a divide instruction and `d` below 2¹⁸ (unit-scale clip coordinates)
+    /// [`div_by_short`] in line, where [`div_round`] is a call that first sorts its operands.
+    #[inline(always)]
+    pub(crate) fn round_fraction(&self, n: i64) -> i64 {
+        if !NARROW_CORE && cfg!(target_pointer_width = "32") {
+            if let Some(q) = fraction_by_short(n, self.d) {
+                return q;
+            }
+        }
+        self.round(n << 30)
     }
 
     /// [`div_round`]`(n, d)`.
@@ -422,6 +447,27 @@ mod tests {
         }
         let top = (1u32 << SHORT_DIVISOR_BITS) - 1;
         assert_eq!(div_by_short(u64::MAX, top), u64::MAX / top as u64);
+    }
+
+    /// A depth's division by `w` through short digits equals `div_round(n · 2³⁰, d)` wherever
+    /// it applies (`0 < d < 2¹⁸`, `0 ≤ n ≤ d`, the ends included) and declines elsewhere.
+    #[test]
+    fn fraction_by_short_equals_div_round() {
+        let mut rng = crate::testing::XorShift(0x5DEE_CE66_D1CE_4E5Bu64);
+        let top = (1i64 << SHORT_DIVISOR_BITS) - 1;
+        for i in 0..200_000u32 {
+            let d = ((rng.next_u64() >> 46) as i64 >> (i % 18)).max(1);
+            let n = match i % 100 {
+                0 => 0,
+                1 => d,
+                _ => (rng.next_u64() % (d as u64 + 1)) as i64,
+            };
+            assert_eq!(fraction_by_short(n, d), Some(div_round(n << 30, d)), "{n} / {d}");
+        }
+        assert_eq!(fraction_by_short(top, top), Some(1 << 30));
+        for (n, d) in [(0, 0), (1, 0), (-1, 5), (6, 5), (1, top + 1), (0, -3)] {
+            assert_eq!(fraction_by_short(n, d), None, "{n} / {d}");
+        }
     }
 
     /// The two-digit 64/32 division gives the 64-bit quotient wherever it applies: divisors

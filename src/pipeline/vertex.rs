@@ -185,7 +185,7 @@ pub(crate) fn outcode_and_project(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoin
     let lim = 1 << 15;
     let sx = (m.half_w as i32).wrapping_add(by_w.round_short(xh) as i32);
     let sy = (m.half_h as i32).wrapping_sub(by_w.round_short(yh) as i32);
-    let sz = by_w.round(z << 30) as i32;
+    let sz = by_w.round_fraction(z) as i32;
     let p = ScreenPoint::new(sx.clamp(-lim, lim), sy.clamp(-lim, lim));
     (code, p, sz.clamp(0, DEPTH_ONE))
 }
