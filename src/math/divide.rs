@@ -112,17 +112,25 @@ const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
         return None;
     }
     let d = d as u32;
+    if !NARROW_CORE && d < 1 << SHORT_DIVISOR_BITS {
+        return Some(div_round_by_short(n, d));
+    }
     let a = rounded_magnitude(n, d);
     let hi = (a >> 32) as u32;
-    let q = if !NARROW_CORE && d < 1 << SHORT_DIVISOR_BITS {
-        div_by_short(a, d)
-    } else if hi < d {
+    let q = if hi < d {
         div_u64_u32(a, d) as u64
     } else {
         let (qh, rh) = (hi / d, hi % d);
         ((qh as u64) << 32) | div_u64_u32(((rh as u64) << 32) | (a & 0xFFFF_FFFF), d) as u64
     };
     Some(with_sign_of(n, q))
+}
+
+/// [`div_round`] for `0 < d < 2¹⁸` by [`div_by_short`] (tested through
+/// [`div_round_u64_u32`], which takes it on every core with a divide instruction).
+#[inline(always)]
+const fn div_round_by_short(n: i64, d: u32) -> i64 {
+    with_sign_of(n, div_by_short(rounded_magnitude(n, d), d))
 }
 
 /// Divisors below `2^SHORT_DIVISOR_BITS` leave room for a 14-bit digit beside any remainder in
@@ -230,6 +238,20 @@ impl DivideBy {
             }
         }
         self.round(n << 30)
+    }
+
+    /// [`round`](Self::round) for the depth gradients of small triangles: on 32-bit cores with
+    /// a divide instruction and `d` below 2¹⁸, [`div_by_short`] in line.
+    #[inline(always)]
+    pub(crate) fn round_by_short(&self, n: i64) -> i64 {
+        if !NARROW_CORE
+            && cfg!(target_pointer_width = "32")
+            && self.d > 0
+            && self.d < 1 << SHORT_DIVISOR_BITS
+        {
+            return div_round_by_short(n, self.d as u32);
+        }
+        self.round(n)
     }
 
     /// [`div_round`]`(n, d)`.
@@ -462,7 +484,11 @@ mod tests {
                 1 => d,
                 _ => (rng.next_u64() % (d as u64 + 1)) as i64,
             };
-            assert_eq!(fraction_by_short(n, d), Some(div_round(n << 30, d)), "{n} / {d}");
+            assert_eq!(
+                fraction_by_short(n, d),
+                Some(div_round(n << 30, d)),
+                "{n} / {d}"
+            );
         }
         assert_eq!(fraction_by_short(top, top), Some(1 << 30));
         for (n, d) in [(0, 0), (1, 0), (-1, 5), (6, 5), (1, top + 1), (0, -3)] {

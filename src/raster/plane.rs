@@ -69,7 +69,7 @@ impl Plane {
             (nx, ny, area2)
         };
         let by_area = DivideBy::new(den);
-        let (gx, gy) = (by_area.round(nx), by_area.round(ny));
+        let (gx, gy) = (by_area.round_by_short(nx), by_area.round_by_short(ny));
         Plane {
             x0: a.x,
             y0: a.y,
