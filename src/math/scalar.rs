@@ -242,7 +242,7 @@ pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
 }
 
 /// [`mul_wide`] in line on every core: for the vertex transform, whose twelve products per
-/// vertex are the most frequent on Cortex-M0 (where a call costs them a sixth more).
+/// vertex are the most frequent on Cortex-M0 (in line there: 1% of the frame for 470 bytes).
 #[inline(always)]
 pub(crate) const fn mul_wide_inline(a: i32, b: i32) -> i64 {
     if NARROW_CORE {
