@@ -229,7 +229,8 @@ impl DivideBy {
 
     /// [`round`](Self::round)`(n · 2³⁰)` for `0 ≤ n ≤ d` (a vertex's depth `z / w` in Q1.30): on
     /// 32-bit cores with a divide instruction and `d` below 2¹⁸ (unit-scale clip coordinates)
-    /// [`div_by_short`] in line, where [`div_round`] is a call that first sorts its operands.
+    /// [`div_by_short`] in line, where [`div_round`] is a call that first chooses a path by the
+    /// operands' sizes.
     #[inline(always)]
     pub(crate) fn round_fraction(&self, n: i64) -> i64 {
         if !NARROW_CORE && cfg!(target_pointer_width = "32") {
@@ -240,8 +241,8 @@ impl DivideBy {
         self.round(n << 30)
     }
 
-    /// [`round`](Self::round) for the depth gradients of small triangles: on 32-bit cores with
-    /// a divide instruction and `d` below 2¹⁸, [`div_by_short`] in line.
+    /// [`round`](Self::round) with [`div_by_short`] in line on 32-bit cores with a divide
+    /// instruction when `d` lies below 2¹⁸: the depth gradients of small triangles.
     #[inline(always)]
     pub(crate) fn round_by_short(&self, n: i64) -> i64 {
         if !NARROW_CORE
