@@ -201,6 +201,9 @@ const fn div_round_i32(n: i32, d: i32) -> i32 {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct DivideBy {
     d: i64,
+    /// `d` where it is a positive i32 and the core divides words in one instruction, else 0:
+    /// checked once for [`round_short`](Self::round_short)'s divisions.
+    d32: i32,
     by: Option<Divisor>,
 }
 
@@ -209,7 +212,11 @@ impl DivideBy {
     #[inline(always)]
     pub(crate) fn new(d: i64) -> DivideBy {
         let by = if NARROW_CORE { Divisor::new(d) } else { None };
-        DivideBy { d, by }
+        let d32 = match i32::try_from(d) {
+            Ok(d32) if d32 > 0 && !NARROW_CORE && cfg!(target_pointer_width = "32") => d32,
+            _ => 0,
+        };
+        DivideBy { d, d32, by }
     }
 
     /// [`round`](Self::round) for numerators that usually fit 32 bits (a vertex's x and y):
@@ -217,11 +224,9 @@ impl DivideBy {
     /// words, one divide and a few instructions instead of a call and 64-bit signs.
     #[inline(always)]
     pub(crate) fn round_short(&self, n: i64) -> i64 {
-        if !NARROW_CORE && cfg!(target_pointer_width = "32") {
-            if let (Ok(n), Ok(d)) = (i32::try_from(n), i32::try_from(self.d)) {
-                if d > 0 {
-                    return div_round_i32(n, d) as i64;
-                }
+        if self.d32 > 0 {
+            if let Ok(n) = i32::try_from(n) {
+                return div_round_i32(n, self.d32) as i64;
             }
         }
         self.round(n)
