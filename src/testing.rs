@@ -19,4 +19,23 @@ impl XorShift {
         let x = self.next_u64();
         ((x % (2 * range as u64 + 1)) as i64 - range as i64) as i32
     }
+
+    /// One of `items`, each as likely (`items` not empty).
+    pub(crate) fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        let i = self.next_u64() % items.len() as u64;
+        items[i as usize]
+    }
+
+    /// Three points within `scale` sub-pixels of `centre` on each axis: a random triangle,
+    /// perhaps of zero area.
+    pub(crate) fn triangle(
+        &mut self,
+        centre: crate::raster::ScreenPoint,
+        scale: i32,
+    ) -> [crate::raster::ScreenPoint; 3] {
+        [(); 3].map(|_| {
+            let (dx, dy) = (self.within(scale), self.within(scale));
+            crate::raster::ScreenPoint::new(centre.x + dx, centre.y + dy)
+        })
+    }
 }

@@ -175,16 +175,15 @@ mod tests {
     #[test]
     fn scaled_equals_new() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let mut next = |range: i32| rng.within(range);
         let mut planes = 0;
         for _ in 0..200_000 {
-            let scale = [1 << 5, 1 << 10, 1 << 15][next(1).unsigned_abs() as usize];
-            let p = [(); 3].map(|_| ScreenPoint::new(next(scale), next(scale)));
+            let scale = rng.pick(&[1 << 5, 1 << 10, 1 << 15]);
+            let p = rng.triangle(ScreenPoint::default(), scale);
             let area = crate::raster::doubled_area(p[0], p[1], p[2]);
             if area == 0 {
                 continue;
             }
-            let v = [(); 3].map(|_| next(1 << 29) + (1 << 29));
+            let v = [(); 3].map(|_| rng.within(1 << 29) + (1 << 29));
             for shift in [14, 28] {
                 let wide = Plane::new(&p, v.map(|v| (v as i64) << shift), area);
                 let short = Plane::scaled(&p, v, shift, area);

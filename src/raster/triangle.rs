@@ -292,17 +292,16 @@ mod tests {
         use crate::raster::RowStarts;
         use crate::target::{ShortRows, WideRows};
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let mut next = |range: i32| rng.within(range);
         let clip = PixelRect::new(3, 5, 60, 144);
         let (mut spans_seen, mut short_seen) = (0, 0);
         for _ in 0..20_000 {
-            let scale = [40, 400, 1200, 16_000][next(1).unsigned_abs() as usize];
-            let p = [(); 3].map(|_| ScreenPoint::new(500 + next(scale), 1200 + next(scale)));
+            let scale = rng.pick(&[40, 400, 1200, 16_000]);
+            let p = rng.triangle(ScreenPoint::new(500, 1200), scale);
             let area = doubled_area(p[0], p[1], p[2]);
             if area == 0 {
                 continue;
             }
-            let z = [(); 3].map(|_| (next(1 << 30) as i64) << 14);
+            let z = [(); 3].map(|_| (rng.within(1 << 30) as i64) << 14);
             let plane = Plane::new(&p, z, area);
             let expected: Vec<(Span, i64)> = triangle_spans(p, clip)
                 .map(|s| (s, plane.at(s.x0, s.y)))
