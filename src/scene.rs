@@ -8,7 +8,7 @@ use core::fmt;
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-use crate::math::{normalize, Scalar, Vec3};
+use crate::math::{is_scaled_rotation, normalize, Scalar, Vec3};
 use crate::mesh::Object;
 
 /// The colour and intensity of a light: one [`Scalar`] per channel, 1.0 is full strength
@@ -199,22 +199,6 @@ impl<const N: usize> Lighting<N> {
             grey: self.grey,
         })
     }
-}
-
-/// True when `m` is a rotation times a scale, within 2⁻¹²: its columns orthogonal and of one
-/// length, `mᵀm = s²·I`. (A Q16.16 rotation is one within about 2⁻¹⁶; treating a matrix 2⁻¹²
-/// away as one moves a lit colour by at most a sixteenth of an 8-bit level.) Entries within
-/// ±2³⁰ (a normal matrix): every product below 2⁶⁰, every sum of three below 2⁶².
-fn is_scaled_rotation(m: &[[i32; 3]; 3]) -> bool {
-    let dot = |a: usize, b: usize| -> i64 { (0..3).map(|i| m[i][a] as i64 * m[i][b] as i64).sum() };
-    let s2 = dot(0, 0);
-    let tolerance = s2 >> 12;
-    s2 > 0
-        && (dot(1, 1) - s2).abs() <= tolerance
-        && (dot(2, 2) - s2).abs() <= tolerance
-        && dot(0, 1).abs() <= tolerance
-        && dot(0, 2).abs() <= tolerance
-        && dot(1, 2).abs() <= tolerance
 }
 
 /// The objects of a frame and their lighting.

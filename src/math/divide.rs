@@ -168,6 +168,8 @@ const fn fraction_by_short(n: i64, d: i64) -> Option<i64> {
     if d.wrapping_sub(1) as u64 >= (1 << SHORT_DIVISOR_BITS) - 1 || n as u64 > d as u64 {
         return None;
     }
+    // `div_round_by_short(n << 30, d)` without its sign and saturation, which n ≥ 0 and the
+    // bound need not (measured: 0.5% of the M4's frame).
     Some(div_by_short(((n as u64) << 30) + (d / 2) as u64, d as u32) as i64)
 }
 
@@ -202,7 +204,7 @@ const fn div_round_i32(n: i32, d: i32) -> i32 {
 pub(crate) struct DivideBy {
     d: i64,
     /// `d` where it is a positive i32 and the core divides words in one instruction, else 0:
-    /// checked once for [`round_short`](Self::round_short)'s divisions.
+    /// checked once for [`round_i32`](Self::round_i32)'s divisions.
     d32: i32,
     by: Option<Divisor>,
 }
@@ -223,7 +225,7 @@ impl DivideBy {
     /// on 32-bit cores with a divide instruction (Cortex-M3/M4) that case in line and in 32-bit
     /// words, one divide and a few instructions instead of a call and 64-bit signs.
     #[inline(always)]
-    pub(crate) fn round_short(&self, n: i64) -> i64 {
+    pub(crate) fn round_i32(&self, n: i64) -> i64 {
         if self.d32 > 0 {
             if let Ok(n) = i32::try_from(n) {
                 return div_round_i32(n, self.d32) as i64;

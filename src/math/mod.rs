@@ -15,8 +15,8 @@ mod sqrt;
 mod vector;
 
 pub use angle::Angle;
-pub(crate) use matrix::product3;
 pub use matrix::Mat4;
+pub(crate) use matrix::{is_scaled_rotation, product3};
 pub use methods::{Normalize, Trig};
 pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;

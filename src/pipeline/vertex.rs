@@ -183,8 +183,8 @@ pub(crate) fn outcode_and_project(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoin
     // results and their clamps fit 32-bit words (the clamps keep `project`'s contract).
     let by_w = DivideBy::new(w);
     let lim = 1 << 15;
-    let sx = (m.half_w as i32).wrapping_add(by_w.round_short(xh) as i32);
-    let sy = (m.half_h as i32).wrapping_sub(by_w.round_short(yh) as i32);
+    let sx = (m.half_w as i32).wrapping_add(by_w.round_i32(xh) as i32);
+    let sy = (m.half_h as i32).wrapping_sub(by_w.round_i32(yh) as i32);
     let sz = by_w.round_fraction(z) as i32;
     let p = ScreenPoint::new(sx.clamp(-lim, lim), sy.clamp(-lim, lim));
     (code, p, sz.clamp(0, DEPTH_ONE))
@@ -199,7 +199,7 @@ fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(S
     let lim = 1i64 << 15;
     let by_w = DivideBy::new(w);
     let (sx, sy) = if m.snap == 0 {
-        (by_w.round_short(xh), by_w.round_short(yh))
+        (by_w.round_i32(xh), by_w.round_i32(yh))
     } else {
         // One rounding to the coarser grid (no double rounding through sixteenths).
         let (g, wg) = (m.snap, w << m.snap);

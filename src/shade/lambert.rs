@@ -188,7 +188,7 @@ pub(crate) fn vertex_normal(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::{Scalar, Vec3};
+    use crate::math::{Angle, Mat4, Scalar, Vec3};
     use crate::scene::{DirectionalLight, LightColor, LightError};
 
     const IDENTITY: [[i32; 3]; 3] = [[1 << 16, 0, 0], [0, 1 << 16, 0], [0, 0, 1 << 16]];
@@ -329,13 +329,6 @@ mod tests {
         .unwrap();
         assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &hot), base);
     }
-}
-
-#[cfg(test)]
-mod grey_tests {
-    use super::*;
-    use crate::math::{normalize, Scalar, Vec3};
-    use crate::scene::{DirectionalLight, LightColor};
 
     /// The grey shortcut (one sum for three channels) gives what the sum per channel gives, for
     /// one to three grey lights, overbright ones included; a coloured light or ambient turns
@@ -376,13 +369,6 @@ mod grey_tests {
         let blue = LightColor::new(Scalar::ZERO, Scalar::ZERO, Scalar::ONE);
         assert!(!Lighting::<1>::new(blue).is_grey());
     }
-}
-
-#[cfg(test)]
-mod model_space_tests {
-    use super::*;
-    use crate::math::{Angle, Mat4, Scalar, Vec3};
-    use crate::scene::{DirectionalLight, LightColor};
 
     fn lighting() -> Lighting<2> {
         let mut l = Lighting::<2>::new(LightColor::gray(Scalar::from_num(0.2)));
