@@ -39,7 +39,7 @@ report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$
     -v fc="${face:-0}" -v fl="${fill:-0}" -v sp="${spans:-0}" -v sh="${shading:-0}" 'BEGIN {
     f = 1 / n;
     printf "draw_scene: %.3f M instructions per frame, %.1f per covered pixel (clear_buffers: %.3f M)\n\n", h*f/1e6, h*f/px, c*f/1e6;
-    printf "Where they go, in the default release build (%.3f M per frame: several codegen units, no LTO, the stages\x27 functions kept apart):\n\n", d*f/1e6;
+    printf "Where they go, in the default release build (%.3f M per frame: several codegen units, no\nLTO, the stages\x27 functions kept apart):\n\n", d*f/1e6;
     printf "| stage | instructions per frame | share |\n|---|---:|---:|\n";
     row("vertex stage (transform, outcodes, projection), once per vertex", pr);
     row("triangle walk (fetch, trivial reject, culling, clipping)", wk - fc);
@@ -68,8 +68,9 @@ repeatable, wall times are not) and \`bench/mcu/run.sh\` (emulated Cortex-M, see
 the Rust peer below was: fat LTO, one codegen unit (Cargo profile \`bench-lto\`). The default
 release build splits the crate into several codegen units and links without LTO; its count is
 given beside the stage breakdown, which needs the function boundaries it keeps, and it moves by
-about 1% when code moves between modules (what is inlined depends on the split). The scene is bench/SCENE.md's tilted torus at 320x240: flat
-Lambert, u16 depth, back faces culled; one frame is the drawing, clears excluded.
+about 1% when code moves between modules (what is inlined depends on the split). The scene is
+bench/SCENE.md's tilted torus at 320x240: flat Lambert, u16 depth, back faces culled; one frame
+is the drawing, clears excluded.
 
 ## x86-64
 
