@@ -128,8 +128,10 @@ $stages
   12 instructions off each such row on the M4, but needs a second copy of the row loop:
   measured, no gain on the M4, 1.8% more on x86-64 and 850 bytes more flash.
 - **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
-  on Cortex-M0 through one reciprocal, on the M4 by four 32-bit divides of 14-bit digits for
-  doubled areas below 2¹⁸, of 16-bit digits otherwise) and three edge steppers (two
+  on Cortex-M0 through one reciprocal; on the M4, for doubled areas below 2¹⁷ and numerators
+  below 2³² before their shift by 14 (three in four of the torus's), by two 32-bit divides,
+  otherwise by four of 14-bit digits for doubled areas below 2¹⁸, of 16-bit digits beyond)
+  and three edge steppers (two
   divisions each), then flat shading: the face normal (a cross product of 32-bit edges), its
   Newton normalisation in 32-bit words (skipped for faces turned from every light: ambient
   only) and Lambert against the lights (grey ones: one sum for the three channels), which

@@ -32,7 +32,7 @@ impl Plane {
         let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
         let nx = dv1.wrapping_mul(dy2).wrapping_sub(dv2.wrapping_mul(dy1));
         let ny = dx1.wrapping_mul(dv2).wrapping_sub(dx2.wrapping_mul(dv1));
-        Plane::from_numerators(a, v[0], nx, ny, area2)
+        Plane::from_numerators(a, v[0], nx, ny, 0, area2)
     }
 
     /// [`new`](Self::new) for values `v[i] << shift` with every `v[i]` in [0, 2³⁰] (depth in
@@ -57,19 +57,23 @@ impl Plane {
         let nx = times(dv1, dy2).wrapping_sub(times(dv2, dy1));
         let ny = times(dv2, dx1).wrapping_sub(times(dv1, dx2));
         let v0 = (v[0] as i64) << shift;
-        Plane::from_numerators(a, v0, nx << shift, ny << shift, area2)
+        Plane::from_numerators(a, v0, nx, ny, shift, area2)
     }
 
-    /// The plane through `a` (value `v0`) with gradient numerators `nx`, `ny` over `area2`.
+    /// The plane through `a` (value `v0`) with gradient numerators `nx << shift`, `ny << shift`
+    /// over `area2`.
     #[inline(always)]
-    fn from_numerators(a: ScreenPoint, v0: i64, nx: i64, ny: i64, area2: i64) -> Plane {
+    fn from_numerators(a: ScreenPoint, v0: i64, nx: i64, ny: i64, shift: u32, area2: i64) -> Plane {
         let (nx, ny, den) = if area2 < 0 {
             (nx.wrapping_neg(), ny.wrapping_neg(), area2.wrapping_neg())
         } else {
             (nx, ny, area2)
         };
         let by_area = DivideBy::new(den);
-        let (gx, gy) = (by_area.round_by_short(nx), by_area.round_by_short(ny));
+        let (gx, gy) = (
+            by_area.round_shifted(nx, shift),
+            by_area.round_shifted(ny, shift),
+        );
         Plane {
             x0: a.x,
             y0: a.y,
