@@ -49,6 +49,7 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         step: i32,
         test: DepthTest,
         next_color: impl FnMut() -> C,
+        written: u32,
     ) -> u32 {
         // Formats without a fast path never hand out a step; this only keeps the contract.
         let start = ((start as i64) << DROPPED).wrapping_sub(HALF_STEP);
@@ -59,12 +60,14 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
             (step as i64) << DROPPED,
             test,
             next_color,
+            written,
         )
     }
 
     /// Depth-tests one span: `start` and `step` are the interpolator's values at the first
     /// pixel and from pixel to pixel. `next_color` is called once per pixel, in order; its
-    /// colour is stored where the fragment passes. Returns how many passed.
+    /// colour is stored where the fragment passes. Returns `written` (the count so far) plus
+    /// how many passed: the pixel loop counts on from it, so the count needs no sum per span.
     #[doc(hidden)]
     #[inline(always)]
     fn test_span<C: Copy>(
@@ -74,8 +77,9 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         step: i64,
         test: DepthTest,
         next_color: impl FnMut() -> C,
+        written: u32,
     ) -> u32 {
-        clamped_span(depths, colors, start, step, test, next_color)
+        clamped_span(depths, colors, start, step, test, next_color, written)
     }
 }
 
@@ -88,9 +92,9 @@ fn clamped_span<D: DepthFormat, C: Copy>(
     step: i64,
     test: DepthTest,
     mut next_color: impl FnMut() -> C,
+    mut written: u32,
 ) -> u32 {
     let mut acc = start;
-    let mut written = 0;
     let le = test == DepthTest::LessOrEqual;
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = D::from_interpolated(acc);
@@ -99,7 +103,7 @@ fn clamped_span<D: DepthFormat, C: Copy>(
         if z < *d || (le && z == *d) {
             *d = z;
             *c = color;
-            written += 1;
+            written = written.wrapping_add(1);
         }
     }
     written
@@ -128,6 +132,7 @@ impl DepthFormat for u16 {
         step: i64,
         test: DepthTest,
         next_color: impl FnMut() -> C,
+        written: u32,
     ) -> u32 {
         let n = depths.len().min(colors.len());
         let a = start.saturating_add(HALF_STEP) >> DROPPED;
@@ -136,9 +141,11 @@ impl DepthFormat for u16 {
         let in_range = |v: i64| (0..=i32::MAX as i64).contains(&v);
         if !(in_range(a) && in_range(last) && i32::try_from(st).is_ok()) {
             // Ends outside [0, 65536): clamp pixel by pixel.
-            return clamped_span(depths, colors, start, step, test, next_color);
+            return clamped_span(depths, colors, start, step, test, next_color, written);
         }
-        Self::test_span_unclamped(depths, colors, a as i32, st as i32, test, next_color)
+        Self::test_span_unclamped(
+            depths, colors, a as i32, st as i32, test, next_color, written,
+        )
     }
 
     /// Pixel centres inside a triangle have depths between its vertices', and the plane errs
@@ -159,11 +166,16 @@ impl DepthFormat for u16 {
         st: i32,
         test: DepthTest,
         next_color: impl FnMut() -> C,
+        written: u32,
     ) -> u32 {
         // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
         match test {
-            DepthTest::Less => unclamped_u16::<C, false>(depths, colors, acc, st, next_color),
-            DepthTest::LessOrEqual => unclamped_u16::<C, true>(depths, colors, acc, st, next_color),
+            DepthTest::Less => {
+                unclamped_u16::<C, false>(depths, colors, acc, st, next_color, written)
+            }
+            DepthTest::LessOrEqual => {
+                unclamped_u16::<C, true>(depths, colors, acc, st, next_color, written)
+            }
         }
     }
 }
@@ -177,10 +189,10 @@ fn unclamped_u16<C: Copy, const LE: bool>(
     acc: i32,
     st: i32,
     mut next_color: impl FnMut() -> C,
+    mut written: u32,
 ) -> u32 {
     // Every value lies in [0, 2³¹): the depth is its bits 15 to 30.
     let (mut acc, st) = (acc as u32, st as u32);
-    let mut written = 0;
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = (acc >> (U16_STEP_BITS - DROPPED)) as Compared;
         acc = acc.wrapping_add(st);
@@ -189,7 +201,7 @@ fn unclamped_u16<C: Copy, const LE: bool>(
         if z < old || (LE && z == old) {
             *d = z as u16;
             *c = color;
-            written += 1;
+            written = written.wrapping_add(1);
         }
     }
     written
