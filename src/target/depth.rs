@@ -193,6 +193,8 @@ fn unclamped_u16<C: Copy, const LE: bool>(
 ) -> u32 {
     // Every value lies in [0, 2³¹): the depth is its bits 15 to 30.
     let (mut acc, st) = (acc as u32, st as u32);
+    // Counted on from the span's length down by the fragments that fail (fewer than pass).
+    written = written.wrapping_add(depths.len().min(colors.len()) as u32);
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = (acc >> (U16_STEP_BITS - DROPPED)) as Compared;
         acc = acc.wrapping_add(st);
@@ -201,7 +203,8 @@ fn unclamped_u16<C: Copy, const LE: bool>(
         if z < old || (LE && z == old) {
             *d = z as u16;
             *c = color;
-            written = written.wrapping_add(1);
+        } else {
+            written = written.wrapping_sub(1);
         }
     }
     written
