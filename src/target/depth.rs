@@ -49,7 +49,7 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         step: i32,
         test: DepthTest,
         next_color: impl FnMut() -> C,
-        written: u32,
+        failed: u32,
     ) -> u32 {
         // Formats without a fast path never hand out a step; this only keeps the contract.
         let start = ((start as i64) << DROPPED).wrapping_sub(HALF_STEP);
@@ -60,14 +60,15 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
             (step as i64) << DROPPED,
             test,
             next_color,
-            written,
+            failed,
         )
     }
 
     /// Depth-tests one span: `start` and `step` are the interpolator's values at the first
     /// pixel and from pixel to pixel. `next_color` is called once per pixel, in order; its
-    /// colour is stored where the fragment passes. Returns `written` (the count so far) plus
-    /// how many passed: the pixel loop counts on from it, so the count needs no sum per span.
+    /// colour is stored where the fragment passes. Returns `failed` (the count so far) plus
+    /// how many failed: the pixel loop counts on from it, so the count needs no sum per span
+    /// (and counts the fragments that fail, fewer than those that pass).
     #[doc(hidden)]
     #[inline(always)]
     fn test_span<C: Copy>(
@@ -77,9 +78,9 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         step: i64,
         test: DepthTest,
         next_color: impl FnMut() -> C,
-        written: u32,
+        failed: u32,
     ) -> u32 {
-        clamped_span(depths, colors, start, step, test, next_color, written)
+        clamped_span(depths, colors, start, step, test, next_color, failed)
     }
 }
 
@@ -92,7 +93,7 @@ fn clamped_span<D: DepthFormat, C: Copy>(
     step: i64,
     test: DepthTest,
     mut next_color: impl FnMut() -> C,
-    mut written: u32,
+    mut failed: u32,
 ) -> u32 {
     let mut acc = start;
     let le = test == DepthTest::LessOrEqual;
@@ -103,10 +104,11 @@ fn clamped_span<D: DepthFormat, C: Copy>(
         if z < *d || (le && z == *d) {
             *d = z;
             *c = color;
-            written = written.wrapping_add(1);
+        } else {
+            failed = failed.wrapping_add(1);
         }
     }
-    written
+    failed
 }
 
 impl sealed::Sealed for u16 {}
@@ -132,7 +134,7 @@ impl DepthFormat for u16 {
         step: i64,
         test: DepthTest,
         next_color: impl FnMut() -> C,
-        written: u32,
+        failed: u32,
     ) -> u32 {
         let n = depths.len().min(colors.len());
         let a = start.saturating_add(HALF_STEP) >> DROPPED;
@@ -141,10 +143,10 @@ impl DepthFormat for u16 {
         let in_range = |v: i64| (0..=i32::MAX as i64).contains(&v);
         if !(in_range(a) && in_range(last) && i32::try_from(st).is_ok()) {
             // Ends outside [0, 65536): clamp pixel by pixel.
-            return clamped_span(depths, colors, start, step, test, next_color, written);
+            return clamped_span(depths, colors, start, step, test, next_color, failed);
         }
         Self::test_span_unclamped(
-            depths, colors, a as i32, st as i32, test, next_color, written,
+            depths, colors, a as i32, st as i32, test, next_color, failed,
         )
     }
 
@@ -166,15 +168,15 @@ impl DepthFormat for u16 {
         st: i32,
         test: DepthTest,
         next_color: impl FnMut() -> C,
-        written: u32,
+        failed: u32,
     ) -> u32 {
         // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
         match test {
             DepthTest::Less => {
-                unclamped_u16::<C, false>(depths, colors, acc, st, next_color, written)
+                unclamped_u16::<C, false>(depths, colors, acc, st, next_color, failed)
             }
             DepthTest::LessOrEqual => {
-                unclamped_u16::<C, true>(depths, colors, acc, st, next_color, written)
+                unclamped_u16::<C, true>(depths, colors, acc, st, next_color, failed)
             }
         }
     }
@@ -189,12 +191,10 @@ fn unclamped_u16<C: Copy, const LE: bool>(
     acc: i32,
     st: i32,
     mut next_color: impl FnMut() -> C,
-    mut written: u32,
+    mut failed: u32,
 ) -> u32 {
     // Every value lies in [0, 2³¹): the depth is its bits 15 to 30.
     let (mut acc, st) = (acc as u32, st as u32);
-    // Counted on from the span's length down by the fragments that fail (fewer than pass).
-    written = written.wrapping_add(depths.len().min(colors.len()) as u32);
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = (acc >> (U16_STEP_BITS - DROPPED)) as Compared;
         acc = acc.wrapping_add(st);
@@ -204,10 +204,10 @@ fn unclamped_u16<C: Copy, const LE: bool>(
             *d = z as u16;
             *c = color;
         } else {
-            written = written.wrapping_sub(1);
+            failed = failed.wrapping_add(1);
         }
     }
-    written
+    failed
 }
 
 /// The width the u16 loop compares depths in: 16 bits on x86-64, where a compare takes the
