@@ -30,15 +30,17 @@ CUTS = [
     ("pixels (depth test and writes)", "everything", []),
     ("span entry (bounds check, depth start, counts)", "no pixel loops", [(
         "src/target/depth.rs",
-        "    let mut written = 0;\n    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {",
-        f"    let mut written = 0;\n    if {BB}(true) {{ let _ = (&mut next_color, st, acc); "
-        f"return {BB}(depths.len().min(colors.len())) as u32; }}\n"
+        "    let (mut acc, st) = (acc as u32, st as u32);\n"
+        "    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {",
+        "    let (mut acc, st) = (acc as u32, st as u32);\n"
+        f"    if {BB}(true) {{ let _ = (&mut next_color, st, acc, depths.len(), colors.len()); "
+        f"return {BB}(failed); }}\n"
         "    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {",
     )]),
     ("rows (edge stepping, clipping, depth walk)", "no spans", [(
         "src/target/surface.rs",
-        "written = written.wrapping_add(test_span(ds, cs, depth.at(x0), g));",
-        f"written = written.wrapping_add({BB}((ds.len(), cs.len(), depth.at(x0))).0 as u32);"
+        "failed = test_span(ds, cs, depth.at(x0), g, failed);",
+        f"failed = {BB}((ds.len(), cs.len(), depth.at(x0), failed)).3;"
         " let _ = (&mut test_span, g);",
     )]),
     ("fill set-up (colour, depth test choice, first row)", "no rows", [(
