@@ -99,17 +99,23 @@ $timing
 The same frame on the emulated cores of [footprint.md](footprint.md), cut short after each
 stage in turn by \`bench/mcu/stages.py\` (a copy of the crate with one early return; each
 stage is the difference between two cuts, good to a few per cent of the frame since every cut
-moves the code around it a little; the copy's whole frame can differ from \`run.sh\`'s by a
-few thousandths):
+moves the code around it a little). The copy lives at another path than the checkout, and
+Cortex-M counts depend on the path: symbol names carry a hash of it, and with them the
+register allocation of the big \`fill_face\` changes. The M4's whole frame measured 2.32 M in
+one checkout path and 2.32 to 2.34 M in others for the same code (this table's copy may
+differ from footprint.md by that much); the M0's by 0.2%, x86-64's not at all. A change of
+less than about 2% on the M4 is measured in two checkouts before it is kept:
 
 $stages
 
 ## Where the rest goes, and what would take it
 
-- **Pixels**: a shift, a compare, two stores and a count each (x86-64: about 9 instructions;
-  Cortex-M4 and M0 about 13: on the M4 the pixel loop's colour and step do not fit in
-  registers beside the row loop's state, and depths are compared in 32 bits so that the
-  stored halfword needs no masking). The floor of the scene is about 0.4 M on x86-64. On
+- **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
+  Cortex-M4 and M0 about 13: on the M4 the pixel loop's colour does not fit in a register
+  beside the row loop's state, and depths are compared in 32 bits so that the stored
+  halfword needs no masking). Only the fragments that fail are counted, one count carried
+  through every span of a triangle (writes are the fragments less the failures): a count of
+  the writes from zero for each span cost the M4 3.3% of its frame. The floor of the scene is about 0.4 M on x86-64. On
   the M4 the same loop out of line takes 12 per pixel (predicated, every register its own),
   but the call and its arguments cost each span more than that saves (measured: 2% more
   per frame), so the loop's own floor there is about 0.37 M.
@@ -147,9 +153,13 @@ $stages
   the frame for 470 bytes).
 - **The goals**: with the pixels at their floor (0.37 M on the M4), 1.0 M leaves 0.63 M for
   1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500 rows, a
-  third of what they take now. The largest excess found, the rows' register traffic, is
-  worth at most about 0.45 M on the M4 (rows and span entries at the 40 instructions their
-  arithmetic needs); the rest would need less work per stage rather than tighter code: a
+  third of what they take now. The largest excess found is per drawn triangle: on the M4
+  about 870 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
+  the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
+  product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
+  of pieces of 5 to 25 instructions: about 0.5 M. Next come the rows' register traffic, worth
+  at most about 0.4 M on the M4 (rows and span entries at the 40 instructions their
+  arithmetic needs). The rest would need less work per stage rather than tighter code: a
   cheaper rule (lighting in 16-bit arithmetic, depth relative to the triangle in 32 bits,
   coarser sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show
   costs nothing) or a different scene (face normals kept in the mesh instead of computed
