@@ -171,6 +171,23 @@ impl Mat4 {
         }
     }
 
+    /// True when [`transform_within`](Self::transform_within) of every point within ±`extent`
+    /// has all four coordinates strictly within ±2³¹ (so the vertex stage need not check
+    /// them): from a bound on each row's sum, `Σ|m_j|·extent + |m_3|·2¹⁶ + 2¹⁵ < 2⁴⁷`, for
+    /// meshes that take [`transform_short`](Self::transform_short).
+    pub(crate) fn short_results(&self, extent: u32) -> bool {
+        if extent >= 1 << 29 {
+            return false;
+        }
+        let e = extent as u64;
+        self.m.iter().all(|r| {
+            let a = |k: usize| r.get(k).map_or(0, |v| v.unsigned_abs() as u64);
+            // Below 3·2³¹·2²⁹ + 2⁴⁷ + 2¹⁵: no overflow.
+            let bound = (a(0) + a(1) + a(2)) * e + (a(3) << 16) + (1 << 15);
+            bound < 1 << 47
+        })
+    }
+
     /// [`transform_wide`](Self::transform_wide) of a point whose coordinates lie within ±2²⁹:
     /// each product is then below 2⁶⁰ and the sum needs no halving, so it is rounded once
     /// (half up), exactly.
@@ -332,6 +349,44 @@ mod tests {
                 assert!((wide[i] as i128 - rounded).abs() <= 1, "{m:?} {p:?}");
             }
         }
+    }
+
+    /// Where `short_results` holds, every point within the extent (its corners, where the
+    /// sums are largest, and random ones) transforms to coordinates strictly within ±2³¹; it
+    /// holds for a unit-scale scene and fails where they could be larger.
+    #[test]
+    fn short_results_bound_the_transform() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let below_31 = |c: [i64; 4]| c.iter().all(|v| -(1 << 31) < *v && *v < 1 << 31);
+        let (mut held, mut failed) = (0, 0);
+        for _ in 0..20_000 {
+            let mut next = |bits: u64| {
+                let x = rng.next_u64();
+                (x as i64 >> (x % bits + 64 - bits)) as i32
+            };
+            let m = Mat4::from_bits([[0; 4]; 4].map(|r| r.map(|_: i32| next(32))));
+            let extent = (next(30).unsigned_abs()).min((1 << 29) - 1);
+            if !m.short_results(extent) {
+                failed += 1;
+                continue;
+            }
+            held += 1;
+            let e = extent as i32;
+            for k in 0..8 {
+                let corner = [k & 1, k & 2, k & 4].map(|b| if b == 0 { e } else { -e });
+                assert!(below_31(m.transform_within(corner, extent)), "{m:?} {e}");
+            }
+            for _ in 0..8 {
+                let p = [0; 3].map(|_: i32| next(31).clamp(-e, e));
+                assert!(below_31(m.transform_within(p, extent)), "{m:?} {p:?}");
+            }
+        }
+        assert!(held > 1000 && failed > 1000, "{held} {failed}");
+        let unit =
+            Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::scaling(Vec3::from_int(3, 3, 3));
+        assert!(unit.short_results(2 << 16));
+        assert!(!unit.short_results(1 << 29));
+        assert!(!Mat4::scaling(Vec3::from_int(30000, 1, 1)).short_results(30000 << 16));
     }
 
     #[test]

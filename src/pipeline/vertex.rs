@@ -165,10 +165,15 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 
 /// The vertex stage's hot path: the planes a clip-space vertex is outside of (one bit each,
 /// in [`distance`]'s order) and, when there are none, its [`project`]ion; the reduction and
-/// the viewport products are done once for both.
+/// the viewport products are done once for both. `short` says that every coordinate is
+/// known to lie strictly within ±2³¹ (see `Mat4::short_results`): nothing to reduce.
 #[inline]
-pub(crate) fn outcode_and_project(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoint, i32) {
-    let [x, y, z, w] = reduce(c);
+pub(crate) fn outcode_and_project(
+    c: [i64; 4],
+    m: &ScreenMap,
+    short: bool,
+) -> (u8, ScreenPoint, i32) {
+    let [x, y, z, w] = if short { c } else { reduce(c) };
     let (xh, yh) = m.viewport_products(x, y);
     let code = outcode_reduced(z, w, xh, yh);
     if code != 0 {
@@ -241,7 +246,10 @@ mod tests {
                     code | (1 << k)
                 }
             });
-            assert_eq!(outcode_and_project(c, &map).0, expected, "{c:?}");
+            assert_eq!(outcode_and_project(c, &map, false).0, expected, "{c:?}");
+            if c.iter().all(|v| below_bits(*v, 31)) {
+                assert_eq!(outcode_and_project(c, &map, true).0, expected, "{c:?}");
+            }
         }
     }
 
@@ -262,7 +270,7 @@ mod tests {
             let (x, y) = (coordinate(w * 7), coordinate(w * 9));
             let z = coordinate(w).abs();
             let c = [x, y, z, w];
-            let (code, p, depth) = outcode_and_project(c, &map);
+            let (code, p, depth) = outcode_and_project(c, &map, false);
             if code == 0 {
                 assert_eq!(project(c, &map), Some((p, depth)), "{c:?}");
                 inside += 1;
