@@ -189,6 +189,10 @@ def disassembly(binary, part, runs, where):
     for line in out.splitlines():
         head = re.match(r"^([0-9a-f]+) <(.*)>:$", line)
         if head:
+            # Mapping symbols ($t, $d: code and literal pools) split a function's listing;
+            # they continue the function they lie in.
+            if head.group(2).startswith("$"):
+                continue
             inside = part in head.group(2)
             if inside:
                 print(f"\n{head.group(2)}")
