@@ -100,11 +100,12 @@ The same frame on the emulated cores of [footprint.md](footprint.md), cut short 
 stage in turn by \`bench/mcu/stages.py\` (a copy of the crate with one early return; each
 stage is the difference between two cuts, good to a few per cent of the frame since every cut
 moves the code around it a little). The copy lives at another path than the checkout, and
-Cortex-M counts depend on the path: symbol names carry a hash of it, and with them the
-register allocation of the big \`fill_face\` changes. The M4's whole frame measured 2.32 M in
-one checkout path and 2.32 to 2.34 M in others for the same code (this table's copy may
-differ from footprint.md by that much); the M0's by 0.2%, x86-64's not at all. A change of
-less than about 2% on the M4 is measured in two checkouts before it is kept:
+Cortex-M counts can depend on the path: symbol names carry a hash of it, and with them the
+register allocation of the big \`fill_face\` can change. At one commit of issue #7 the M4's
+whole frame measured 2.29 M in some checkouts and 2.34 M in others for the same code; at
+this one two checkouts agree on the M4 and differ by 0.1% on the M0 (this table's copy may
+differ from footprint.md by as much), x86-64 not at all. A change of less than about 2% on
+the M4 is measured in two checkouts before it is kept:
 
 $stages
 
