@@ -116,7 +116,7 @@ $stages
   beside the row loop's state, and depths are compared in 32 bits so that the stored
   halfword needs no masking). Only the fragments that fail are counted, one count carried
   through every span of a triangle (writes are the fragments less the failures): a count of
-  the writes from zero for each span cost the M4 3.3% of its frame. The floor of the scene is about 0.4 M on x86-64. On
+  the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0 1%. The floor of the scene is about 0.4 M on x86-64. On
   the M4 the same loop out of line takes 12 per pixel (predicated, every register its own),
   but the call and its arguments cost each span more than that saves (measured: 2% more
   per frame), so the loop's own floor there is about 0.37 M.

@@ -180,12 +180,11 @@ impl Mat4 {
             return false;
         }
         let e = extent as u64;
-        self.m.iter().all(|r| {
-            let a = |k: usize| r.get(k).map_or(0, |v| v.unsigned_abs() as u64);
-            // Below 3·2³¹·2²⁹ + 2⁴⁷ + 2¹⁵: no overflow.
-            let bound = (a(0) + a(1) + a(2)) * e + (a(3) << 16) + (1 << 15);
-            bound < 1 << 47
-        })
+        let a = |v: i32| v.unsigned_abs() as u64;
+        // Below 3·2³¹·2²⁹ + 2⁴⁷ + 2¹⁵: no overflow.
+        self.m
+            .iter()
+            .all(|r| (a(r[0]) + a(r[1]) + a(r[2])) * e + (a(r[3]) << 16) + (1 << 15) < 1 << 47)
     }
 
     /// [`transform_wide`](Self::transform_wide) of a point whose coordinates lie within ±2²⁹:
