@@ -112,20 +112,21 @@ $stages
 ## Where the rest goes, and what would take it
 
 - **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
-  Cortex-M4 and M0 about 13: on the M4 the pixel loop's colour does not fit in a register
-  beside the row loop's state, and depths are compared in 32 bits so that the stored
-  halfword needs no masking). Only the fragments that fail are counted, one count carried
-  through every span of a triangle (writes are the fragments less the failures): a count of
-  the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0 1%. The floor of the scene is about 0.4 M on x86-64. On
-  the M4 the same loop out of line takes 12 per pixel (predicated, every register its own),
-  but the call and its arguments cost each span more than that saves (measured: 2% more
-  per frame), so the loop's own floor there is about 0.37 M.
+  Cortex-M4 about 11, M0 about 12: on Cortex-M the pixel loop's colour does not fit in a
+  register beside the row loop's state, and depths are compared in 32 bits so that the
+  stored halfword needs no masking). Only the fragments that fail are counted, one count
+  carried through every span of a triangle (writes are the fragments less the failures): a
+  count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
+  1%. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
+  took 12 per pixel (predicated, every register its own), but the call and its arguments
+  cost each span more than that saved (measured before the failure count: 2% more per
+  frame); the pixels now take about 0.35 M there.
 - **Rows and span entries**: every row steps two edge steppers (an exact Bresenham quotient
   and remainder each), clips the span to the target, and moves the depth start and the row's
   place in both buffers; a row with pixels also checks the span against the buffers (one
   bounds check serves both: same length), takes the depth at its first pixel from the
-  row's plane value (one product; on 32-bit cores two, in 32-bit words, which measured
-  cheaper on the M4 too) and counts fragments and writes. About 100 instructions per row
+  row's plane value (one product; on Cortex-M0, which lacks a long multiply, two in 32-bit
+  words) and counts fragments and failures. About 100 instructions per row
   with pixels on the M4, where the arithmetic needs about 40: the rest moves the row's state
   (two steppers of five words, the depth walk, the clip columns, the buffers) between
   registers and the stack around the pixel loop. On x86-64 the edges step out of line,
@@ -152,9 +153,9 @@ $stages
   clamps in 32-bit words). On Cortex-M0, whose products of 32-bit factors are routines of
   four multiplies, it is the largest stage; its twelve products are in line there (1% of
   the frame for 470 bytes).
-- **The goals**: with the pixels at their floor (0.37 M on the M4), 1.0 M leaves 0.63 M for
-  1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500 rows, a
-  third of what they take now. The largest excess found is per drawn triangle: on the M4
+- **The goals**: with the pixels at what they take now (0.35 M on the M4), 1.0 M leaves
+  0.65 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
   about 870 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
   the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens

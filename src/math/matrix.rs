@@ -175,7 +175,7 @@ impl Mat4 {
     /// has all four coordinates strictly within ±2³¹ (so the vertex stage need not check
     /// them): from a bound on each row's sum, `Σ|m_j|·extent + |m_3|·2¹⁶ + 2¹⁵ < 2⁴⁷`, for
     /// meshes that take [`transform_short`](Self::transform_short).
-    pub(crate) fn short_results(&self, extent: u32) -> bool {
+    pub(crate) fn fits_32_bits(&self, extent: u32) -> bool {
         if extent >= 1 << 29 {
             return false;
         }
@@ -350,11 +350,11 @@ mod tests {
         }
     }
 
-    /// Where `short_results` holds, every point within the extent (its corners, where the
+    /// Where `fits_32_bits` holds, every point within the extent (its corners, where the
     /// sums are largest, and random ones) transforms to coordinates strictly within ±2³¹; it
     /// holds for a unit-scale scene and fails where they could be larger.
     #[test]
-    fn short_results_bound_the_transform() {
+    fn fits_32_bits_bounds_the_transform() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let below_31 = |c: [i64; 4]| c.iter().all(|v| -(1 << 31) < *v && *v < 1 << 31);
         let (mut held, mut failed) = (0, 0);
@@ -365,7 +365,7 @@ mod tests {
             };
             let m = Mat4::from_bits([[0; 4]; 4].map(|r| r.map(|_: i32| next(32))));
             let extent = (next(30).unsigned_abs()).min((1 << 29) - 1);
-            if !m.short_results(extent) {
+            if !m.fits_32_bits(extent) {
                 failed += 1;
                 continue;
             }
@@ -383,9 +383,9 @@ mod tests {
         assert!(held > 1000 && failed > 1000, "{held} {failed}");
         let unit =
             Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::scaling(Vec3::from_int(3, 3, 3));
-        assert!(unit.short_results(2 << 16));
-        assert!(!unit.short_results(1 << 29));
-        assert!(!Mat4::scaling(Vec3::from_int(30000, 1, 1)).short_results(30000 << 16));
+        assert!(unit.fits_32_bits(2 << 16));
+        assert!(!unit.fits_32_bits(1 << 29));
+        assert!(!Mat4::scaling(Vec3::from_int(30000, 1, 1)).fits_32_bits(30000 << 16));
     }
 
     #[test]

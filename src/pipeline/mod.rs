@@ -231,11 +231,11 @@ impl Frame {
             };
             let extent = object.mesh.extent();
             // Clip coordinates known to need no reduction (every unit-scale scene).
-            let short = clip_from_model.short_results(extent);
+            let fits = clip_from_model.fits_32_bits(extent);
             for (i, p) in object.mesh.positions().iter().enumerate() {
                 let Some(slot) = slots.next() else { break };
                 let c = clip_from_model.transform_within(p.to_bits(), extent);
-                let (code, pt, z) = outcode_and_project(c, &map, short);
+                let (code, pt, z) = outcode_and_project(c, &map, fits);
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
                         let lit = crate::shade::lambert(

@@ -165,15 +165,15 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 
 /// The vertex stage's hot path: the planes a clip-space vertex is outside of (one bit each,
 /// in [`distance`]'s order) and, when there are none, its [`project`]ion; the reduction and
-/// the viewport products are done once for both. `short` says that every coordinate is
-/// known to lie strictly within ±2³¹ (see `Mat4::short_results`): nothing to reduce.
+/// the viewport products are done once for both. `fits` says that every coordinate is known
+/// to lie strictly within ±2³¹ (see `Mat4::fits_32_bits`): nothing to reduce.
 #[inline]
 pub(crate) fn outcode_and_project(
     c: [i64; 4],
     m: &ScreenMap,
-    short: bool,
+    fits: bool,
 ) -> (u8, ScreenPoint, i32) {
-    let [x, y, z, w] = if short { c } else { reduce(c) };
+    let [x, y, z, w] = if fits { c } else { reduce(c) };
     let (xh, yh) = m.viewport_products(x, y);
     let code = outcode_reduced(z, w, xh, yh);
     if code != 0 {

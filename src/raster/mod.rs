@@ -161,6 +161,13 @@ pub(crate) const fn first_centre_from(v: i64) -> i64 {
     (v + (SUBPIXEL_SCALE as i64 / 2 - 1)) >> crate::math::SUBPIXEL_BITS
 }
 
+/// [`first_centre_from`] in 32-bit words, for coordinates within ±2²⁴ (where a 64-bit sum and
+/// shift take twice the instructions).
+#[inline(always)]
+pub(crate) const fn first_centre_from32(v: i32) -> i32 {
+    v.wrapping_add(SUBPIXEL_SCALE / 2 - 1) >> crate::math::SUBPIXEL_BITS
+}
+
 /// `ceil(n / d)` for `d > 0`.
 pub(crate) const fn ceil_div(n: i64, d: i64) -> i64 {
     let q = n.div_euclid(d);

@@ -12,7 +12,7 @@
 
 #[cfg(test)]
 use super::Plane;
-use super::{doubled_area, CeilStepper, PixelRect, ScreenPoint};
+use super::{doubled_area, first_centre_from32, CeilStepper, PixelRect, ScreenPoint};
 use crate::math::{mul_wide, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
@@ -79,9 +79,8 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) ->
         return empty();
     }
     let ([a, b, c], odd) = sort_by_y(v);
-    // Coordinates within ±2²⁴: the first row at or below each, `ceil((y − 8) / 16)`, in
-    // 32-bit words (where a 64-bit sum and shift take twice the instructions).
-    let first_row = |y: i32| y.wrapping_add(HALF as i32 - 1) >> SUBPIXEL_BITS;
+    // Coordinates within ±2²⁴: the first row at or below each in 32-bit words.
+    let first_row = first_centre_from32;
     let y_start = first_row(a.y).max(clip.y0);
     let y_end = first_row(c.y).min(clip.y1);
     if y_start >= y_end {
