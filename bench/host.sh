@@ -100,12 +100,11 @@ The same frame on the emulated cores of [footprint.md](footprint.md), cut short 
 stage in turn by \`bench/mcu/stages.py\` (a copy of the crate with one early return; each
 stage is the difference between two cuts, good to a few per cent of the frame since every cut
 moves the code around it a little). The copy lives at another path than the checkout, and
-Cortex-M counts can depend on the path: symbol names carry a hash of it, and with them the
-register allocation of the big \`fill_face\` can change. At one commit of issue #7 the M4's
-whole frame measured 2.29 M in some checkouts and 2.34 M in others for the same code; at
-this one two checkouts agree on the M4 and differ by 0.1% on the M0 (this table's copy may
-differ from footprint.md by as much), x86-64 not at all. A change of less than about 2% on
-the M4 is measured in two checkouts before it is kept:
+counts the same: the firmware benchmark is a member of the crate's workspace, so that the
+firmware no longer depends on where a checkout lies (a path dependency outside the workspace
+was hashed by its absolute path into every symbol name, and at one commit of issue #7 the
+M4's frame measured 2.29 M in some checkouts and 2.34 M in others for the same source):
+
 
 $stages
 
