@@ -205,9 +205,13 @@ fn newton_unit(c: [i64; 3]) -> Option<[i32; 3]> {
     // shifts by constants: a 64-bit shift by a variable amount is a library call on Cortex-M0).
     let y = rsqrt_q45(m);
     Some(map3(c, |x| {
-        let u = mul_short_u32(x as i32, y) >> 15;
-        let u = if quartered { u >> 1 } else { u };
-        u.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
+        // |x| ≤ sqrt(s) and y ≤ 2⁴⁵ / sqrt(m)·(1 + 10⁻⁶): the unit component (halved again
+        // when s was quartered) lies within ±2³⁰·(1 + 10⁻⁶), so it fits a 32-bit word before
+        // its clamp (one shift of the product's words, where a 64-bit clamp takes twice the
+        // instructions on 32-bit cores).
+        let p = mul_short_u32(x as i32, y);
+        let u = if quartered { p >> 16 } else { p >> 15 } as i32;
+        u.clamp(-UNIT_ONE, UNIT_ONE)
     }))
 }
 
@@ -269,6 +273,57 @@ mod tests {
                 Normalize::Newton.unit(v.map(i64::from))
             );
         }
+    }
+
+    /// `newton_unit` shifts and clamps each component in a 32-bit word: the same values as in
+    /// 64 bits, for every shrunk vector the method hands it (largest component in [2¹⁴, 2¹⁵)),
+    /// sums of squares quartered (s ≥ 2³⁰) or not, and units along an axis (within 2⁻¹⁸ of
+    /// 1, where the clamp to 2³⁰ would act).
+    #[test]
+    fn newton_unit_in_words_equals_64_bits() {
+        let wide = |c: [i64; 3]| {
+            let s: u32 = c.iter().map(|x| (x * x) as u32).sum();
+            let (m, quartered) = if s >= 1 << 30 {
+                (s >> 2, true)
+            } else {
+                (s, false)
+            };
+            let y = crate::math::sqrt::rsqrt_q45(m);
+            c.map(|x| {
+                let u = (x * y as i64) >> 15;
+                let u = if quartered { u >> 1 } else { u };
+                u.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
+            })
+        };
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let (mut quartered, mut clamped) = (0, 0);
+        let edge = [1 << 14, (1 << 15) - 1, -(1 << 14), 1 - (1 << 15)];
+        let fixed = edge.iter().flat_map(|&a| {
+            [
+                [a, 0, 0],
+                [0, a, 0],
+                [0, 0, a],
+                [a, a, a],
+                [a, -a, 1],
+                [a, (1 << 15) - 1, 0],
+            ]
+        });
+        let random = (0..300_000).map(|_| {
+            let big = rng.within(1 << 14);
+            let big = big.signum().max(1) * ((1 << 14) + big.abs());
+            let mut v = [big, rng.within(big.abs() + 1), rng.within(big.abs() + 1)];
+            v.rotate_left(rng.pick(&[0, 1, 2]));
+            v
+        });
+        for v in fixed.chain(random) {
+            let c = v.map(i64::from);
+            let expected = wide(c);
+            assert_eq!(newton_unit(c), Some(expected), "{v:?}");
+            quartered += (c.iter().map(|x| x * x).sum::<i64>() >= 1 << 30) as u32;
+            // Components at the top of the range, where the clamp would act.
+            clamped += expected.iter().any(|u| u.abs() > UNIT_ONE - (1 << 12)) as u32;
+        }
+        assert!(quartered > 50_000 && clamped >= 12, "{quartered} {clamped}");
     }
 
     /// M9 for every normalisation method, over many scales.
