@@ -22,10 +22,10 @@ pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
 pub(crate) use scalar::{
-    below_bits, is_short, magnitude_bits, map3, mul_short, mul_wide, narrow_cross, shr_round,
-    DEPTH_ONE, NARROW_CORE, UNIT_ONE,
+    below_bits, below_bits32, is_short, magnitude_bits, map3, mul_short, mul_wide, narrow_cross,
+    shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 
 pub(crate) use divide::{div_round, DivideBy};
 pub(crate) use sqrt::isqrt_u64;
-pub(crate) use vector::{cosine_unit, cross_wide, dot_wide, normalize};
+pub(crate) use vector::{cosine_unit, cross_short, cross_wide, dot_wide, normalize};

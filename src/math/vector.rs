@@ -3,7 +3,7 @@
 use core::ops::{Add, Neg, Sub};
 
 use super::scalar::{
-    magnitude_bits, mul_wide, narrow_cross, shr_round, Scalar, NARROW_CORE, UNIT_ONE,
+    is_short, magnitude_bits, map3, mul_wide, shr_round, Scalar, NARROW_CORE, UNIT_ONE,
 };
 use super::sqrt::isqrt_u64;
 
@@ -144,23 +144,30 @@ pub(crate) fn saturate(v: i64) -> Scalar {
 /// Exact cross product of raw vectors whose components fit in i32 (each term < 2⁶³).
 #[inline]
 pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
-    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     if NARROW_CORE {
         // Short components (the edges of most triangles): 32-bit products, where a 64-bit
         // product is a library call.
-        if let (Some(x), Some(y), Some(z)) = (
-            narrow_cross(a1, a2, b1, b2),
-            narrow_cross(a2, a0, b2, b0),
-            narrow_cross(a0, a1, b0, b1),
-        ) {
-            return [x, y, z];
+        if let Some(n) = cross_short(a, b) {
+            return map3(n, i64::from);
         }
     }
+    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     [
         mul_wide(a1, b2).saturating_sub(mul_wide(a2, b1)),
         mul_wide(a2, b0).saturating_sub(mul_wide(a0, b2)),
         mul_wide(a0, b1).saturating_sub(mul_wide(a1, b0)),
     ]
+}
+
+/// [`cross_wide`] in 32-bit words, for vectors whose six components all lie in [−2¹⁵, 2¹⁵)
+/// ([`is_short`]: the edges of most triangles): every product lies within ±2³⁰ and every
+/// difference of two within ±2³¹, so each component is exact in an i32. `None` otherwise.
+#[inline(always)]
+pub(crate) fn cross_short(a: [i32; 3], b: [i32; 3]) -> Option<[i32; 3]> {
+    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
+    let short =
+        is_short(a0) & is_short(a1) & is_short(a2) & is_short(b0) & is_short(b1) & is_short(b2);
+    short.then(|| [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
 }
 
 /// Unit vector (Q2.30) of any non-zero integer vector, whatever its scale: the components are
