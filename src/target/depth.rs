@@ -315,7 +315,7 @@ impl ShortRows {
     #[inline]
     pub(crate) fn new(plane: &Plane, x_base: i32, y: i32) -> ShortRows {
         let (gx, gy) = plane.pixel_steps();
-        let (a, alpha) = split(plane.at(x_base, y).wrapping_add(HALF_STEP));
+        let (a, alpha) = split(plane.at_near(x_base, y).wrapping_add(HALF_STEP));
         let (g, gamma) = split(gx);
         let (row, row_frac) = split(gy);
         ShortRows {
