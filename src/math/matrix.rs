@@ -4,7 +4,7 @@
 use core::ops::Mul;
 
 use super::angle::Angle;
-use super::scalar::{magnitude_bits, mul_wide, mul_wide_inline, shr_round, Scalar};
+use super::scalar::{magnitude_bits, mul_wide, shr_round, Scalar};
 use super::vector::{cross_wide, saturate, Vec3};
 
 /// A 4x4 matrix of [`Scalar`] (Q16.16) entries.
@@ -24,6 +24,54 @@ pub struct Mat4 {
 }
 
 const ONE: i32 = 1 << 16;
+
+/// `v = h·2¹⁶ + l` with `l` in [−2¹⁵, 2¹⁵) (its low 16 bits, signed) and `h` exact.
+#[inline(always)]
+const fn split16(v: i32) -> (i32, i32) {
+    let l = ((v as u32) << 16) as i32 >> 16;
+    ((v.wrapping_sub(l)) >> 16, l)
+}
+
+/// A matrix prepared for 32-bit vertex transforms (from [`Mat4::halves`]), for cores without
+/// a long multiply, where each of [`Mat4::transform_short`]'s twelve 64-bit products is four
+/// multiplies put back together. With `x = xh·2¹⁶ + xl` and `m = mh·2¹⁶ + ml` (low halves
+/// signed, below 2¹⁵), a row's `Σ m·x + t·2¹⁶ + 2¹⁵` is
+/// `2¹⁶·(t + Σ (m·xh + mh·xl + ⌊ml·xl / 2¹⁶⌋)) + Σ (ml·xl mod 2¹⁶) + 2¹⁵`: three 32-bit
+/// products a term, the first sum bounded below 2³¹ by `Mat4::halves` and the last below
+/// 3·2¹⁶, so shifted right by 16 it is the rounded row, exactly.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct HalvesTransform {
+    /// Each entry as `(m, mh, ml)`.
+    rows: [[(i32, i32, i32); 3]; 4],
+    t: [i32; 4],
+}
+
+impl HalvesTransform {
+    /// [`Mat4::transform_within`] of a point within the extent it was made for.
+    #[inline(always)]
+    pub(crate) fn transform(&self, p: [i32; 3]) -> [i64; 4] {
+        let [x0, x1, x2] = [split16(p[0]), split16(p[1]), split16(p[2])];
+        // One term of a row's sums (written out: at opt-level "s" a loop over three stays a
+        // loop).
+        let term = |(mid, low): (i32, u32), (m, mh, ml): (i32, i32, i32), (xh, xl): (i32, i32)| {
+            let p = ml.wrapping_mul(xl);
+            (
+                mid.wrapping_add(m.wrapping_mul(xh))
+                    .wrapping_add(mh.wrapping_mul(xl))
+                    .wrapping_add(p >> 16),
+                low.wrapping_add(p as u32 & 0xFFFF),
+            )
+        };
+        let row = |r: &[(i32, i32, i32); 3], t: i32| {
+            let [m0, m1, m2] = *r;
+            let (mid, low) = term(term(term((t, 0), m0, x0), m1, x1), m2, x2);
+            (mid as i64).wrapping_add(((low + (1 << 15)) >> 16) as i64)
+        };
+        let [r0, r1, r2, r3] = &self.rows;
+        let [t0, t1, t2, t3] = self.t;
+        [row(r0, t0), row(r1, t1), row(r2, t2), row(r3, t3)]
+    }
+}
 
 impl Default for Mat4 {
     fn default() -> Self {
@@ -189,19 +237,59 @@ impl Mat4 {
 
     /// [`transform_wide`](Self::transform_wide) of a point whose coordinates lie within ±2²⁹:
     /// each product is then below 2⁶⁰ and the sum needs no halving, so it is rounded once
-    /// (half up), exactly.
-    #[inline]
+    /// (half up), exactly. Out of line on cores without a long multiply, whose vertex stage
+    /// takes a [`HalvesTransform`] instead: there it serves clipping, and matrices too large
+    /// for the halves.
+    #[cfg_attr(
+        all(target_pointer_width = "32", not(target_has_atomic = "32")),
+        inline(never)
+    )]
+    #[cfg_attr(
+        not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
+        inline
+    )]
     fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
         let [x, y, z] = p;
         let row = |r: &[i32; 4]| {
-            let s = mul_wide_inline(r[0], x)
-                .wrapping_add(mul_wide_inline(r[1], y))
-                .wrapping_add(mul_wide_inline(r[2], z))
+            let s = mul_wide(r[0], x)
+                .wrapping_add(mul_wide(r[1], y))
+                .wrapping_add(mul_wide(r[2], z))
                 .wrapping_add((r[3] as i64) << 16);
             (s + (1 << 15)) >> 16
         };
         let [r0, r1, r2, r3] = &self.m;
         [row(r0), row(r1), row(r2), row(r3)]
+    }
+
+    /// The matrix prepared for [`HalvesTransform::transform`], which equals
+    /// [`transform_within`](Self::transform_within) for points within ±`extent`; `None` where
+    /// its 32-bit sums could overflow (entries or meshes too large) or the mesh takes
+    /// [`transform_wide`](Self::transform_wide).
+    pub(crate) fn halves(&self, extent: u32) -> Option<HalvesTransform> {
+        if extent >= 1 << 29 {
+            return None;
+        }
+        // A coordinate's high half is at most (extent + 2¹⁵) / 2¹⁶ in magnitude.
+        let xh = ((extent as u64) + (1 << 15)) >> 16;
+        let mut rows = [[(0, 0, 0); 3]; 4];
+        for (out, r) in rows.iter_mut().zip(&self.m) {
+            // The translation starts the sum.
+            let mut sum = r[3].unsigned_abs() as u64;
+            for (o, &m) in out.iter_mut().zip(r) {
+                let (mh, ml) = split16(m);
+                *o = (m, mh, ml);
+                // |m·xh| + |mh·xl| + |⌊ml·xl / 2¹⁶⌋| with |xl|, |ml| ≤ 2¹⁵.
+                sum +=
+                    m.unsigned_abs() as u64 * xh + mh.unsigned_abs() as u64 * (1 << 15) + (1 << 14);
+            }
+            if sum >= 1 << 31 {
+                return None;
+            }
+        }
+        Some(HalvesTransform {
+            rows,
+            t: [self.m[0][3], self.m[1][3], self.m[2][3], self.m[3][3]],
+        })
     }
 
     /// The upper-left 3x3 block's cofactor matrix (`det · M⁻ᵀ`) times a power of two: it
@@ -386,6 +474,72 @@ mod tests {
         assert!(unit.fits_32_bits(2 << 16));
         assert!(!unit.fits_32_bits(1 << 29));
         assert!(!Mat4::scaling(Vec3::from_int(30000, 1, 1)).fits_32_bits(30000 << 16));
+    }
+
+    /// The 32-bit transform of the halves (Cortex-M0's, so not run on the host otherwise) is
+    /// `transform_within`, bit for bit, for every matrix `halves` accepts and every point
+    /// within the extent (its corners included); `halves` accepts the matrices of ordinary
+    /// scenes and turns away those whose 32-bit sums could overflow.
+    #[test]
+    fn halves_transform_equals_transform_within() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let (mut held, mut refused) = (0, 0);
+        for _ in 0..40_000 {
+            let mut next = |bits: u64| {
+                let x = rng.next_u64();
+                (x as i64 >> (x % bits + 64 - bits)) as i32
+            };
+            let m = Mat4::from_bits([[0; 4]; 4].map(|r| r.map(|_: i32| next(32))));
+            let extent = (next(30).unsigned_abs()).min((1 << 29) - 1);
+            let Some(h) = m.halves(extent) else {
+                refused += 1;
+                continue;
+            };
+            held += 1;
+            let e = extent as i32;
+            let corners =
+                (0..8).map(|k| [k & 1, k & 2, k & 4].map(|b| if b == 0 { e } else { -e }));
+            let inside: std::vec::Vec<[i32; 3]> = (0..8)
+                .map(|_| [0; 3].map(|_: i32| next(31).clamp(-e, e)))
+                .collect();
+            for p in corners.chain(inside) {
+                assert_eq!(h.transform(p), m.transform_within(p, extent), "{m:?} {p:?}");
+            }
+        }
+        assert!(held > 5000 && refused > 5000, "{held} {refused}");
+        // The reference scene's (bench/SCENE.md: its camera, the torus's extent of 1.4).
+        let viewport = crate::projection::Viewport::new(320, 240).unwrap();
+        let eye = Vec3::from_f32(0.0, 0.0, 2.6).unwrap();
+        let view = crate::camera::LookAt::new(eye, Vec3::ZERO, Vec3::Y)
+            .view()
+            .unwrap();
+        let s = Scalar::from_num;
+        let projection = crate::projection::Projection::perspective(
+            Angle::from_degrees(60),
+            viewport.aspect(),
+            s(1),
+            s(10),
+        )
+        .unwrap();
+        let extent = 92_000;
+        let frame = crate::pipeline::Frame::new(&view, &projection, viewport);
+        let m = frame.clip_from_model_within(&Mat4::IDENTITY, extent);
+        let h = m
+            .halves(extent)
+            .expect("the reference scene takes the halves");
+        for p in [
+            [extent as i32, -(extent as i32), 5],
+            [-1, 0, 1],
+            [60_000, 30_000, -91_999],
+        ] {
+            assert_eq!(h.transform(p), m.transform_within(p, extent), "{p:?}");
+        }
+        let big = Mat4::scaling(Vec3::from_int(30000, 1, 1));
+        assert!(big.halves(30000 << 16).is_none());
+        assert!(Mat4::IDENTITY.halves(1 << 29).is_none());
+        let unit =
+            Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::scaling(Vec3::from_int(3, 3, 3));
+        assert!(unit.halves(2 << 16).is_some());
     }
 
     #[test]

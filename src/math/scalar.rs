@@ -257,28 +257,11 @@ pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
     }
 }
 
-/// [`mul_wide`] in line on every core: for the vertex transform, whose twelve products per
-/// vertex are the most frequent on Cortex-M0 (in line there: 1% of the frame for 470 bytes).
-#[inline(always)]
-pub(crate) const fn mul_wide_inline(a: i32, b: i32) -> i64 {
-    if NARROW_CORE {
-        halves_product(a, b)
-    } else {
-        a as i64 * b as i64
-    }
-}
-
 /// [`mul_wide`] from 16-bit halves: every partial product fits 32 bits. Out of line: in line
-/// at every product the M0's frame measured 0.5% slower and 2 KB larger; only the vertex
-/// transform's twelve, the most frequent, are in line ([`mul_wide_inline`], 1% faster).
+/// at every product the M0's frame measured 0.5% slower and 2 KB larger (its vertex transform
+/// takes `HalvesTransform` instead, 32-bit sums of the halves' products).
 #[inline(never)]
 const fn mul_halves(a: i32, b: i32) -> i64 {
-    halves_product(a, b)
-}
-
-/// [`mul_halves`]'s body.
-#[inline(always)]
-const fn halves_product(a: i32, b: i32) -> i64 {
     let (ah, al) = (a >> 16, (a & 0xFFFF) as u32);
     let (bh, bl) = (b >> 16, (b & 0xFFFF) as u32);
     // Low halves below 2¹⁶, high halves within ±2¹⁵: each product fits 32 bits. The outer

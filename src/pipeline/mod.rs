@@ -25,7 +25,7 @@ pub use vertex::ScreenVertex;
 
 use core::fmt;
 
-use crate::math::Mat4;
+use crate::math::{Mat4, NARROW_CORE};
 use crate::projection::{Projection, Viewport};
 use crate::scene::Scene;
 use crate::shade::{vertex_normal, Shading};
@@ -232,9 +232,18 @@ impl Frame {
             let extent = object.mesh.extent();
             // Clip coordinates known to need no reduction (every unit-scale scene).
             let fits = clip_from_model.fits_32_bits(extent);
+            // Without a long multiply, the transform in 32-bit products where they suffice.
+            let halves = if NARROW_CORE {
+                clip_from_model.halves(extent)
+            } else {
+                None
+            };
             for (i, p) in object.mesh.positions().iter().enumerate() {
                 let Some(slot) = slots.next() else { break };
-                let c = clip_from_model.transform_within(p.to_bits(), extent);
+                let c = match &halves {
+                    Some(h) => h.transform(p.to_bits()),
+                    None => clip_from_model.transform_within(p.to_bits(), extent),
+                };
                 let (code, pt, z) = outcode_and_project(c, &map, fits);
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
