@@ -248,7 +248,7 @@ impl Mat4 {
         not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
         inline
     )]
-    fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
+    pub(crate) fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
         let [x, y, z] = p;
         let row = |r: &[i32; 4]| {
             let s = mul_wide(r[0], x)

@@ -240,11 +240,19 @@ impl Frame {
             };
             for (i, p) in object.mesh.positions().iter().enumerate() {
                 let Some(slot) = slots.next() else { break };
-                let c = match &halves {
-                    Some(h) => h.transform(p.to_bits()),
-                    None => clip_from_model.transform_within(p.to_bits(), extent),
+                let (code, pt, z) = if cfg!(target_pointer_width = "64") && fits {
+                    // Known short (`fits` implies the extent below 2²⁹): on 64-bit hosts one
+                    // path from the transform to the projection, whose coordinates then stay in
+                    // registers (0.7% of the frame; on the Cortex-M4 the projection then went
+                    // out of line, 0.5% more).
+                    outcode_and_project(clip_from_model.transform_short(p.to_bits()), &map, true)
+                } else {
+                    let c = match &halves {
+                        Some(h) => h.transform(p.to_bits()),
+                        None => clip_from_model.transform_within(p.to_bits(), extent),
+                    };
+                    outcode_and_project(c, &map, fits)
                 };
-                let (code, pt, z) = outcode_and_project(c, &map, fits);
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
                         let lit = crate::shade::lambert(
