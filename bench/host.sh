@@ -105,13 +105,12 @@ firmware no longer depends on where a checkout lies (a path dependency outside t
 was hashed by its absolute path into every symbol name, and at one commit of issue #7 the
 M4's frame measured 2.29 M in some checkouts and 2.34 M in others for the same source):
 
-
 $stages
 
 ## Where the rest goes, and what would take it
 
 - **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
-  Cortex-M4 about 11, M0 about 12: on Cortex-M the pixel loop's colour does not fit in a
+  Cortex-M4 and M0 about 12: on Cortex-M the pixel loop's colour does not fit in a
   register beside the row loop's state, and depths are compared in 32 bits so that the
   stored halfword needs no masking). Only the fragments that fail are counted, one count
   carried through every span of a triangle (writes are the fragments less the failures): a
@@ -119,7 +118,7 @@ $stages
   1%. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); the pixels now take about 0.35 M there.
+  frame); the pixels now take about 0.37 M there.
 - **Rows and span entries**: every row steps two edge steppers (an exact Bresenham quotient
   and remainder each), clips the span to the target, and moves the depth start and the row's
   place in both buffers; a row with pixels also checks the span against the buffers (one
@@ -133,13 +132,18 @@ $stages
   more than it frees. Walking the edges of small triangles in fixed point instead (one
   addition per edge and row, exact while rows × 16 × height ≤ 2¹⁶: tested, not kept) takes
   12 instructions off each such row on the M4, but needs a second copy of the row loop:
-  measured, no gain on the M4, 1.8% more on x86-64 and 850 bytes more flash.
+  measured, no gain on the M4, 1.8% more on x86-64 and 850 bytes more flash. Two passes
+  instead (the ends of up to 16 rows into a buffer, edge by edge, then their first depths,
+  then the spans) cut the spans' own traffic to about 18 instructions a row on the M4, but
+  the passes before them cost as much again, and the buffer's set-up per triangle more:
+  measured 5% to 15% more per frame.
 - **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
   on Cortex-M0 through one reciprocal; on the M4, for doubled areas below 2¹⁷ and numerators
   below 2³² before their shift by 14 (three in four of the torus's), by two 32-bit divides,
   otherwise by four of 14-bit digits for doubled areas below 2¹⁸, of 16-bit digits beyond)
   and three edge steppers (two
-  divisions each), then flat shading: the face normal (a cross product of 32-bit edges), its
+  divisions each), then flat shading: the face normal (a cross product of 32-bit edges; on
+  Cortex-M0, of edges within ±2¹⁵, in 32-bit words), its
   Newton normalisation in 32-bit words (skipped for faces turned from every light: ambient
   only) and Lambert against the lights (grey ones: one sum for the three channels), which
   are turned into model space once per object when the model matrix is a rotation times a
@@ -150,10 +154,13 @@ $stages
   outcode and the projection from one reduction (three divisions by \`w\`: on Cortex-M0 one
   reciprocal and three multiplications; inside the guard band the screen offsets and their
   clamps in 32-bit words). On Cortex-M0, whose products of 32-bit factors are routines of
-  four multiplies, it is the largest stage; its twelve products are in line there (1% of
-  the frame for 470 bytes).
-- **The goals**: with the pixels at what they take now (0.35 M on the M4), 1.0 M leaves
-  0.65 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  four multiplies, the transform takes three 32-bit multiplies a term with 32-bit sums
+  instead (\`HalvesTransform\`: the coordinate's high half times the whole entry, the
+  entry's halves times its low half, bounded once per object: 4.8% of the frame for 460
+  bytes); the stage is still the largest there, a quarter of the frame, most of it the
+  reciprocal of \`w\` and the three divisions by it.
+- **The goals**: with the pixels at what they take now (0.37 M on the M4), 1.0 M leaves
+  0.63 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
   about 870 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
   the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
