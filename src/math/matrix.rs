@@ -438,6 +438,29 @@ mod tests {
         }
     }
 
+    /// A number of about `bits` bits (at most 32), of either sign.
+    fn sized(rng: &mut crate::testing::XorShift, bits: u64) -> i32 {
+        let x = rng.next_u64();
+        (x as i64 >> (x % bits + 64 - bits)) as i32
+    }
+
+    /// A matrix of entries of every size and an extent below 2²⁹ for its points.
+    fn random_matrix(rng: &mut crate::testing::XorShift) -> (Mat4, u32) {
+        let m = Mat4::from_bits([[0; 4]; 4].map(|r| r.map(|_: i32| sized(rng, 32))));
+        (m, sized(rng, 30).unsigned_abs().min((1 << 29) - 1))
+    }
+
+    /// The corners of the cube of points within ±`extent` (where a transform's sums are
+    /// largest) and eight random points inside it.
+    fn points_within(rng: &mut crate::testing::XorShift, extent: u32) -> std::vec::Vec<[i32; 3]> {
+        let e = extent as i32;
+        let corners = (0..8).map(|k| [k & 1, k & 2, k & 4].map(|b| if b == 0 { e } else { -e }));
+        let inside: std::vec::Vec<[i32; 3]> = (0..8)
+            .map(|_| [0; 3].map(|_: i32| sized(rng, 31).clamp(-e, e)))
+            .collect();
+        corners.chain(inside).collect()
+    }
+
     /// Where `fits_32_bits` holds, every point within the extent (its corners, where the
     /// sums are largest, and random ones) transforms to coordinates strictly within ±2³¹; it
     /// holds for a unit-scale scene and fails where they could be larger.
@@ -447,24 +470,13 @@ mod tests {
         let below_31 = |c: [i64; 4]| c.iter().all(|v| -(1 << 31) < *v && *v < 1 << 31);
         let (mut held, mut failed) = (0, 0);
         for _ in 0..20_000 {
-            let mut next = |bits: u64| {
-                let x = rng.next_u64();
-                (x as i64 >> (x % bits + 64 - bits)) as i32
-            };
-            let m = Mat4::from_bits([[0; 4]; 4].map(|r| r.map(|_: i32| next(32))));
-            let extent = (next(30).unsigned_abs()).min((1 << 29) - 1);
+            let (m, extent) = random_matrix(&mut rng);
             if !m.fits_32_bits(extent) {
                 failed += 1;
                 continue;
             }
             held += 1;
-            let e = extent as i32;
-            for k in 0..8 {
-                let corner = [k & 1, k & 2, k & 4].map(|b| if b == 0 { e } else { -e });
-                assert!(below_31(m.transform_within(corner, extent)), "{m:?} {e}");
-            }
-            for _ in 0..8 {
-                let p = [0; 3].map(|_: i32| next(31).clamp(-e, e));
+            for p in points_within(&mut rng, extent) {
                 assert!(below_31(m.transform_within(p, extent)), "{m:?} {p:?}");
             }
         }
@@ -485,24 +497,13 @@ mod tests {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let (mut held, mut refused) = (0, 0);
         for _ in 0..40_000 {
-            let mut next = |bits: u64| {
-                let x = rng.next_u64();
-                (x as i64 >> (x % bits + 64 - bits)) as i32
-            };
-            let m = Mat4::from_bits([[0; 4]; 4].map(|r| r.map(|_: i32| next(32))));
-            let extent = (next(30).unsigned_abs()).min((1 << 29) - 1);
+            let (m, extent) = random_matrix(&mut rng);
             let Some(h) = m.halves(extent) else {
                 refused += 1;
                 continue;
             };
             held += 1;
-            let e = extent as i32;
-            let corners =
-                (0..8).map(|k| [k & 1, k & 2, k & 4].map(|b| if b == 0 { e } else { -e }));
-            let inside: std::vec::Vec<[i32; 3]> = (0..8)
-                .map(|_| [0; 3].map(|_: i32| next(31).clamp(-e, e)))
-                .collect();
-            for p in corners.chain(inside) {
+            for p in points_within(&mut rng, extent) {
                 assert_eq!(h.transform(p), m.transform_within(p, extent), "{m:?} {p:?}");
             }
         }
