@@ -219,8 +219,6 @@ mod tests {
         v.map(|c| c as f64 / (1u64 << 30) as f64)
     }
 
-    /// `shrink` leaves vectors below 2³⁰ alone and brings larger ones below it, at the
-    /// boundaries and the ends of the range.
     /// The 32-bit face direction (Cortex-M0's, so not on the host otherwise) is `shrink` of
     /// the 64-bit cross product wherever it answers, and answers for every edge within ±2¹⁵:
     /// random edges of every scale, and the corners of the range, where products reach 2³⁰
@@ -257,6 +255,8 @@ mod tests {
         assert!(halved > 100 && answered > 100_000, "{halved} {answered}");
     }
 
+    /// `shrink` leaves vectors below 2³⁰ alone and brings larger ones below it, at the
+    /// boundaries and the ends of the range.
     #[test]
     fn shrink_boundaries() {
         let edges = [
