@@ -237,17 +237,10 @@ impl Mat4 {
 
     /// [`transform_wide`](Self::transform_wide) of a point whose coordinates lie within ±2²⁹:
     /// each product is then below 2⁶⁰ and the sum needs no halving, so it is rounded once
-    /// (half up), exactly. Out of line on cores without a long multiply, whose vertex stage
-    /// takes a [`HalvesTransform`] instead: there it serves clipping, and matrices too large
-    /// for the halves.
-    #[cfg_attr(
-        all(target_pointer_width = "32", not(target_has_atomic = "32")),
-        inline(never)
-    )]
-    #[cfg_attr(
-        not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
-        inline
-    )]
+    /// (half up), exactly. On cores without a long multiply the vertex stage takes a
+    /// [`HalvesTransform`] instead: there this serves clipping, and matrices too large for the
+    /// halves.
+    #[inline]
     pub(crate) fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
         let [x, y, z] = p;
         let row = |r: &[i32; 4]| {
