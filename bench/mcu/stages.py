@@ -107,7 +107,10 @@ def main():
         crate = os.path.join(tmp, "main")
         for f in files:
             os.makedirs(os.path.dirname(os.path.join(crate, f)), exist_ok=True)
-            shutil.copy2(os.path.join(ROOT, f), os.path.join(crate, f))
+            # A plain copy, stamped now: the copy's paths are the checkout's relative ones
+            # (the firmware is a member of the crate's workspace), so Cargo would take sources
+            # keeping the checkout's older times for the last run's cut, already built.
+            shutil.copyfile(os.path.join(ROOT, f), os.path.join(crate, f))
         totals = []
         for stage, left, patches in CUTS:
             for path, anchor, replacement in patches:
@@ -121,6 +124,10 @@ def main():
             totals.append((stage, left, count(crate)))
             print(f"  {left}: {totals[-1][2]}", file=sys.stderr)
     whole = totals[0][2]
+    for t in TARGETS:
+        if any(cut.get(t, 0) >= whole.get(t, 0) for _, _, cut in totals[1:]):
+            sys.exit(f"stages.py: on {t} a cut counts no fewer instructions than the whole "
+                     f"frame ({[c.get(t) for _, _, c in totals]}): a stale build?")
     print("| stage | Cortex-M4F | share | Cortex-M0 | share |")
     print("|---|---:|---:|---:|---:|")
     nothing = {t: 0 for t in TARGETS}
