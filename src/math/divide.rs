@@ -370,6 +370,160 @@ impl Divisor {
     }
 }
 
+/// Rounded divisions by a divisor `0 < d < 2²⁹` whose quotients are short, in 32-bit words
+/// and without a division, for cores that lack a divide instruction (Cortex-M0): a vertex's
+/// screen offsets and depth by its `w`. [`DivideBy`] there pays for a reciprocal to 32 bits
+/// and 64-bit products; these quotients need less.
+///
+/// With `b` the position of d's top bit and `t` d's top 16 bits (`d = t·2^(b−15) + less`),
+/// `r = ⌊2³¹ / (t + 1)⌋` is below `2^(b+16) / d` and within `2⁻¹⁴` of it. A numerator `N`
+/// whose bits from `b` up form `m < 2¹⁶` has the estimate `⌊m·r / 2¹⁶⌋` (one 32-bit product),
+/// which is at most `N / d` and at most 5 below its floor. The remainder `N − q·d` is then below
+/// `6d < 2³²`: the difference of the low words, exact in one word, and a few subtractions
+/// finish the quotient. Where a bound does not hold (a longer quotient) the division is
+/// [`div_round`]'s.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ShortQuotients {
+    d: u32,
+    /// `b`: a numerator's estimate takes its bits from here up.
+    below: u32,
+    /// `v · 2¹⁵ / 2^b` is `(v << up) >> down` (one of them 0).
+    up: u32,
+    down: u32,
+    /// `⌊2³¹ / (t + 1)⌋`, in `[2¹⁵, 2¹⁶)`.
+    r: u32,
+}
+
+impl ShortQuotients {
+    /// Prepares `d`; `None` unless `0 < d < 2²⁹`.
+    pub(crate) fn new(d: i64) -> Option<ShortQuotients> {
+        let d = u32::try_from(d).ok().filter(|d| *d > 0 && *d < 1 << 29)?;
+        let below = 31 - leading_zeros32(d);
+        let (up, down) = if below >= 15 {
+            (0, below - 15)
+        } else {
+            (15 - below, 0)
+        };
+        let mut q = ShortQuotients {
+            d,
+            below,
+            up,
+            down,
+            r: 0,
+        };
+        // d's top 16 bits, in [2¹⁵, 2¹⁶).
+        q.r = reciprocal16(q.top(d) + 1);
+        Some(q)
+    }
+
+    /// `⌊v · 2¹⁵ / 2^b⌋`: the estimate's bits of `v · 2¹⁵` (below 2¹⁶ for `v < 2d`).
+    #[inline(always)]
+    fn top(&self, v: u32) -> u32 {
+        (v << self.up) >> self.down
+    }
+
+    /// `(⌊N / d⌋, N mod d)` from N's bits from `b` up (`m`) and its low word; `None` unless
+    /// `m < 2¹⁶` (see the type's documentation: then five steps at most correct the estimate).
+    #[inline(always)]
+    fn digit(&self, m: u32, low: u32) -> Option<(u32, u32)> {
+        if m >> 16 != 0 {
+            return None;
+        }
+        let d = self.d;
+        let mut q = m.wrapping_mul(self.r) >> 16;
+        let mut rem = low.wrapping_sub(q.wrapping_mul(d));
+        for _ in 0..6 {
+            if rem < d {
+                return Some((q, rem));
+            }
+            q = q.wrapping_add(1);
+            rem = rem.wrapping_sub(d);
+        }
+        None
+    }
+
+    /// [`div_round`]`(n, d)`; in words when the quotient is below about 2¹⁶ (a vertex's
+    /// screen offset inside the guard band: below 2¹⁴). In line: out of line it cost the
+    /// Cortex-M0 1.3% of the frame.
+    #[inline(always)]
+    pub(crate) fn round(&self, n: i64) -> i64 {
+        self.round_or(n, || div_round(n, self.d as i64))
+    }
+
+    /// [`round`](Self::round) in words, or `otherwise` where the quotient does not fit them.
+    #[inline(always)]
+    fn round_or(&self, n: i64, otherwise: impl FnOnce() -> i64) -> i64 {
+        // |n| ≤ 2⁶³ and d/2 < 2²⁸: no overflow.
+        let a = n.unsigned_abs() + (self.d / 2) as u64;
+        let (hi, lo) = ((a >> 32) as u32, a as u32);
+        // a's bits from b up (b ≤ 28), exact when the high word is below 2^b.
+        if hi >> self.below == 0 {
+            let m = (hi << 1 << (31 - self.below)) | (lo >> self.below);
+            if let Some((q, _)) = self.digit(m, lo) {
+                return with_sign_of(n, q as u64);
+            }
+        }
+        otherwise()
+    }
+
+    /// [`div_round`]`(z · 2³⁰, d)`; in words for `0 ≤ z ≤ d` (a vertex's depth `z / w` in
+    /// Q1.30), as a long division of two 15-bit digits.
+    pub(crate) fn round_fraction(&self, z: i64) -> i64 {
+        self.fraction_or(z, || div_round(z << 30, self.d as i64))
+    }
+
+    /// [`round_fraction`](Self::round_fraction) in words, or `otherwise` unless `0 ≤ z ≤ d`.
+    #[inline(always)]
+    fn fraction_or(&self, z: i64, otherwise: impl FnOnce() -> i64) -> i64 {
+        let d = self.d;
+        if let Some(z) = u32::try_from(z).ok().filter(|z| *z <= d) {
+            // z·2¹⁵ = q1·d + r1 and r1·2¹⁵ = q2·d + r2 (z and r1 at most d: estimates below
+            // 2¹⁶; the low words wrap, the remainders below 2³² are exact).
+            if let Some((q1, r1)) = self.digit(self.top(z), z << 15) {
+                if let Some((q2, r2)) = self.digit(self.top(r1), r1 << 15) {
+                    // r2 + d/2 < 2d: the rounding adds one when it reaches d.
+                    let up = (r2 + d / 2 >= d) as u32;
+                    return ((q1 << 15) + q2 + up) as i64;
+                }
+            }
+        }
+        otherwise()
+    }
+}
+
+/// `⌊2³¹ / den⌋` for `2¹⁵ < den ≤ 2¹⁶`: see [`newton_reciprocal16`]; in the case that never
+/// happens, a division.
+fn reciprocal16(den: u32) -> u32 {
+    newton_reciprocal16(den).unwrap_or_else(|| (1u32 << 31) / den.max(1))
+}
+
+/// [`reciprocal16`] from a table seed of 8 bits and one Newton step in 32-bit words, made
+/// exact by stepping the remainder `2³¹ − x·den` into `[0, den)`; `None` if four steps do not
+/// suffice (the tests show they do, for every `den`).
+fn newton_reciprocal16(den: u32) -> Option<u32> {
+    // x0 ≈ 2³¹ / den (the table's 2⁴⁷ / (den · 2¹⁶)), below 2¹⁶.
+    let x0 = RECIPROCALS
+        .get((den.wrapping_sub(1) >> 8) as usize & 127)
+        .copied()
+        .unwrap_or(0) as i32;
+    // den · x0 is within 2⁻⁸ of 2³¹: e below 2²³, and x0 · e / 2⁸ below 2³¹.
+    let e = (1u32 << 31).wrapping_sub(den.wrapping_mul(x0 as u32)) as i32;
+    let mut x = x0.wrapping_add(x0.wrapping_mul(e >> 8) >> 23) as u32;
+    let mut rem = (1u32 << 31).wrapping_sub(x.wrapping_mul(den)) as i32;
+    for _ in 0..4 {
+        if rem < 0 {
+            x = x.wrapping_sub(1);
+            rem = rem.wrapping_add(den as i32);
+        } else if rem >= den as i32 {
+            x = x.wrapping_add(1);
+            rem = rem.wrapping_sub(den as i32);
+        } else {
+            return Some(x);
+        }
+    }
+    None
+}
+
 /// `RECIPROCALS[i] = ⌊2⁴⁷ / ((128.5 + i) · 2²⁴)⌋`: `2⁴⁷ / d` to 8 bits for a normalised `d`
 /// by its top byte (256 bytes).
 const RECIPROCALS: [u16; 128] = {
@@ -718,6 +872,92 @@ mod tests {
         let div = Divisor::new(3).unwrap_or_else(|| unreachable!());
         for n in [i64::MIN, i64::MIN + 1, i64::MAX, -5, -4, -1, 0, 1, 4, 5] {
             assert_eq!(div.div_round(n), div_round(n, 3), "{n}");
+        }
+    }
+
+    /// The 16-bit reciprocal is exact for every divisor, without the fallback.
+    #[test]
+    fn reciprocal16_is_exact() {
+        for den in (1u32 << 15) + 1..=1 << 16 {
+            assert_eq!(newton_reciprocal16(den), Some((1u32 << 31) / den), "{den}");
+        }
+    }
+
+    /// Random divisors below 2²⁹ at every bit length, with the ends of each length.
+    fn short_divisors(rng: &mut crate::testing::XorShift) -> impl Iterator<Item = u32> + '_ {
+        let ends = (0..29).flat_map(|b| [1u32 << b, (2u32 << b) - 1]);
+        let random = (0..200_000).map(|_| {
+            let x = rng.next_u64();
+            ((x as u32 >> 3) >> ((x >> 32) % 29)).max(1)
+        });
+        ends.chain(random)
+    }
+
+    /// One digit is exact for every numerator whose estimate bits are below 2¹⁶, and never
+    /// needs more correcting steps than the type's bound gives (`digit` returns `None` then).
+    #[test]
+    fn short_quotient_digit_is_exact() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let mut divisors: std::vec::Vec<u32> = short_divisors(&mut rng).collect();
+        divisors.truncate(100_000);
+        for d in divisors {
+            let Some(by) = ShortQuotients::new(d as i64) else {
+                panic!("{d}")
+            };
+            let b = by.below;
+            let top = (1u64 << (b + 16)) - 1;
+            let x = rng.next_u64();
+            for n in [
+                0,
+                1,
+                d as u64,
+                top,
+                top - d as u64,
+                x % (top + 1),
+                x >> (x % 64),
+            ] {
+                let n = n.min(top);
+                let m = (n >> b) as u32;
+                assert_eq!(
+                    by.digit(m, n as u32),
+                    Some(((n / d as u64) as u32, (n % d as u64) as u32)),
+                    "{n} / {d}"
+                );
+            }
+        }
+    }
+
+    /// `round` and `round_fraction` are `div_round`'s, in words wherever a vertex needs them
+    /// (quotients within ±2¹⁴, fractions of z ≤ d) and beyond (where they fall back).
+    #[test]
+    fn short_quotients_equal_div_round() {
+        assert!(ShortQuotients::new(0).is_none() && ShortQuotients::new(-1).is_none());
+        assert!(
+            ShortQuotients::new(1 << 29).is_none() && ShortQuotients::new((1 << 29) - 1).is_some()
+        );
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        for d in short_divisors(&mut crate::testing::XorShift(0x1234_5678_9ABC_DEF1)) {
+            let Some(by) = ShortQuotients::new(d as i64) else {
+                panic!("{d}")
+            };
+            let x = rng.next_u64();
+            let d64 = d as i64;
+            let within = (x as i64).rem_euclid(2 * (d64 << 14) + 1) - (d64 << 14);
+            for n in [within, -within, d64 / 2, -(d64 / 2)] {
+                let words = by.round_or(n, || panic!("{n} / {d} not in words"));
+                assert_eq!(words, div_round(n, d64), "{n} / {d}");
+            }
+            for n in [within, (x as i64) >> (x % 64), i64::MIN, i64::MAX] {
+                assert_eq!(by.round(n), div_round(n, d64), "{n} / {d}");
+            }
+            let z = (x >> 32) as i64 % (d64 + 1);
+            for z in [z, 0, d64, d64 - 1, d64 / 2] {
+                let words = by.fraction_or(z, || panic!("{z} / {d} not in words"));
+                assert_eq!(words, div_round(z << 30, d64), "{z} / {d}");
+            }
+            for z in [z, -z - 1, d64 + 1 + z] {
+                assert_eq!(by.round_fraction(z), div_round(z << 30, d64), "{z} / {d}");
+            }
         }
     }
 }

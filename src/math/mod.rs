@@ -26,6 +26,6 @@ pub(crate) use scalar::{
     narrow_cross, shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 
-pub(crate) use divide::{div_round, DivideBy};
+pub(crate) use divide::{div_round, DivideBy, ShortQuotients};
 pub(crate) use sqrt::isqrt_u64;
 pub(crate) use vector::{cosine_unit, cross_short, cross_wide, dot_wide, normalize};
