@@ -28,4 +28,4 @@ pub(crate) use scalar::{
 
 pub(crate) use divide::{div_round, DivideBy, ShortQuotients};
 pub(crate) use sqrt::isqrt_u64;
-pub(crate) use vector::{cosine_unit, cross_short, cross_wide, dot_wide, normalize};
+pub(crate) use vector::{cosine_unit, cross_short, cross_wide, dot_is_positive, normalize};

@@ -214,6 +214,41 @@ pub(crate) fn dot_wide(a: [i32; 3], b: [i32; 3]) -> i64 {
         .wrapping_add(mul_wide(a2, b2))
 }
 
+/// `a·b > 0` for components within ±2³⁰ (a face direction and a light's): on cores without a
+/// long multiply decided by [`dot_sign_by_halves`] where it can be (all but the faces nearly
+/// edge-on to the light), since the exact sum takes twelve 32-bit products there.
+#[inline(always)]
+pub(crate) fn dot_is_positive(a: [i32; 3], b: [i32; 3]) -> bool {
+    if NARROW_CORE {
+        if let Some(positive) = dot_sign_by_halves(a, b) {
+            return positive;
+        }
+    }
+    dot_wide(a, b) > 0
+}
+
+/// `Some(a·b > 0)` from the components' high halves alone, for components within ±2³⁰; `None`
+/// when they cannot tell. With `a = ah·2¹⁶ + al` (`0 ≤ al < 2¹⁶`, `|ah| ≤ 2¹⁴`) and `b`
+/// likewise, `a·b − ah·bh·2³²` lies in `(−2⁴⁷, 2⁴⁷ + 2³²)`: three such terms move the sum by
+/// less than `3·2¹⁵` units of 2³² below and `3·2¹⁵ + 3` above `A = Σ ah·bh` (within ±3·2²⁸:
+/// a word).
+#[inline(always)]
+pub(crate) fn dot_sign_by_halves(a: [i32; 3], b: [i32; 3]) -> Option<bool> {
+    const MARGIN: i32 = 3 << 15;
+    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
+    let high = |x: i32, y: i32| (x >> 16).wrapping_mul(y >> 16);
+    let s = high(a0, b0)
+        .wrapping_add(high(a1, b1))
+        .wrapping_add(high(a2, b2));
+    if s >= MARGIN {
+        Some(true)
+    } else if s <= -MARGIN - 3 {
+        Some(false)
+    } else {
+        None
+    }
+}
+
 /// `max(0, a·b)` of two Q2.30 unit vectors, Q2.30, the dot product rounded to nearest: Lambert's
 /// cosine. Only positive sums need rounding (a sum at or below zero gives zero either way), so
 /// one addition and a shift do it, without a sign test.
@@ -315,5 +350,41 @@ mod tests {
         assert!(normalize([0, 0, 0]).is_none());
         let u = normalize([i64::MIN, i64::MAX, i64::MIN]).unwrap();
         assert!(u.iter().all(|c| c.abs() <= UNIT_ONE));
+    }
+
+    /// The high halves' sign is the exact sum's wherever they give one, at the ±2³⁰ extremes
+    /// and at random, and they give one for most pairs of a face direction and a light.
+    #[test]
+    fn dot_sign_by_halves_is_the_exact_sign() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let one = UNIT_ONE;
+        let extremes = [
+            one,
+            -one,
+            one - 1,
+            1 - one,
+            0,
+            1,
+            -1,
+            1 << 16,
+            -(1 << 16),
+            0xFFFF,
+        ];
+        let (mut decided, mut total) = (0, 0);
+        for i in 0..400_000usize {
+            let mut pick = |k: usize| match extremes.get((i / 7 + k * 3) % 40) {
+                Some(&e) => e,
+                None => rng.within(one) >> (rng.next_u64() % 8),
+            };
+            let (a, b) = ([pick(0), pick(1), pick(2)], [pick(3), pick(4), pick(5)]);
+            let exact = dot_wide(a, b) > 0;
+            if let Some(positive) = dot_sign_by_halves(a, b) {
+                assert_eq!(positive, exact, "{a:?} {b:?}");
+                decided += 1;
+            }
+            assert_eq!(dot_is_positive(a, b), exact, "{a:?} {b:?}");
+            total += 1;
+        }
+        assert!(decided * 10 > total * 9, "{decided} of {total}");
     }
 }

@@ -5,8 +5,8 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 #[cfg(test)]
 use crate::math::normalize;
 use crate::math::{
-    below_bits, below_bits32, cosine_unit, cross_short, cross_wide, dot_wide, magnitude_bits, map3,
-    mul_wide, Normalize, NARROW_CORE, UNIT_ONE,
+    below_bits, below_bits32, cosine_unit, cross_short, cross_wide, dot_is_positive,
+    magnitude_bits, map3, mul_wide, Normalize, NARROW_CORE, UNIT_ONE,
 };
 use crate::scene::{Lighting, PreparedLight};
 
@@ -126,7 +126,7 @@ pub(crate) fn flat_color<const N: usize>(
 ) -> Rgb888 {
     let n = face_direction(p, normal_matrix, extent);
     // Components below 2³⁰ and unit directions: products below 2⁶⁰, sums below 2⁶².
-    let faces = |l: &[i32; 3]| dot_wide(n, *l) > 0;
+    let faces = |l: &[i32; 3]| dot_is_positive(n, *l);
     let unit = if lighting.lights().iter().any(|l| faces(&l.direction)) {
         method.unit32(n)
     } else {
