@@ -30,7 +30,7 @@ use crate::projection::{Projection, Viewport};
 use crate::scene::Scene;
 use crate::shade::{vertex_normal, Shading};
 
-use vertex::{outcode_and_project, ScreenMap};
+use vertex::{outcode_and_project, outcode_and_project_unfit, ScreenMap};
 
 /// Which triangles back-face culling removes. Front faces are counter-clockwise when seen from
 /// outside (in world space); on screen (y down) that is a negative signed area.
@@ -240,18 +240,18 @@ impl Frame {
             };
             for (i, p) in object.mesh.positions().iter().enumerate() {
                 let Some(slot) = slots.next() else { break };
-                let (code, pt, z) = if cfg!(target_pointer_width = "64") && fits {
-                    // Known short (`fits` implies the extent below 2²⁹): on 64-bit hosts one
-                    // path from the transform to the projection, whose coordinates then stay in
-                    // registers (0.7% of the frame; on the Cortex-M4 the projection then went
-                    // out of line, 0.5% more).
+                let (code, pt, z) = if !NARROW_CORE && fits {
+                    // Known short (`fits` implies the extent below 2²⁹): where products are
+                    // long multiplies, one path from the transform to the projection, whose
+                    // coordinates then stay in registers (x86-64 0.7%, Cortex-M4 1.6% of the
+                    // frame; on the M4 with the projection in line, see `outcode_and_project`).
                     outcode_and_project(clip_from_model.transform_short(p.to_bits()), &map, true)
                 } else {
                     let c = match &halves {
                         Some(h) => h.transform(p.to_bits()),
                         None => clip_from_model.transform_within(p.to_bits(), extent),
                     };
-                    outcode_and_project(c, &map, fits)
+                    outcode_and_project_unfit(c, &map, fits)
                 };
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
