@@ -53,9 +53,12 @@ pub(crate) const fn leading_zeros32(v: u32) -> u32 {
     }
 }
 
-/// `v.leading_zeros()` by five comparisons and shifts (binary search), written out.
+/// `v.leading_zeros()` by three comparisons and shifts (binary search, written out), then the
+/// top nibble's own count from a word of 2-bit entries (`NIBBLE_ZEROS >> 2k & 3` for nibble
+/// `k`: 3 for 1, 2 for 2 and 3, 1 for 4 to 7, 0 from 8).
 #[inline(always)]
 const fn leading_zeros_by_halves(v: u32) -> u32 {
+    const NIBBLE_ZEROS: u32 = 0x55AC;
     if v == 0 {
         return 32;
     }
@@ -72,14 +75,7 @@ const fn leading_zeros_by_halves(v: u32) -> u32 {
         v <<= 4;
         n += 4;
     }
-    if v >> 30 == 0 {
-        v <<= 2;
-        n += 2;
-    }
-    if v >> 31 == 0 {
-        n += 1;
-    }
-    n
+    n + ((NIBBLE_ZEROS >> ((v >> 28) * 2)) & 3)
 }
 
 /// `v.leading_zeros()` (by [`leading_zeros_by_halves`] of its words where that is cheaper).
