@@ -138,27 +138,38 @@ $stages
   the passes before them cost as much again, and the buffer's set-up per triangle more:
   measured 5% to 15% more per frame.
 - **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
-  on Cortex-M0 through one reciprocal; on the M4, for doubled areas below 2¹⁷ and numerators
+  on Cortex-M0 through one reciprocal, since its long divisions by 15-bit digits, as a
+  vertex's below, measured 1% more there for 460 bytes; on the M4, for doubled areas below
+  2¹⁷ and numerators
   below 2³² before their shift by 14 (three in four of the torus's), by two 32-bit divides,
   otherwise by four of 14-bit digits for doubled areas below 2¹⁸, of 16-bit digits beyond)
   and three edge steppers (two
   divisions each), then flat shading: the face normal (a cross product of 32-bit edges; on
   Cortex-M0, of edges within ±2¹⁵, in 32-bit words), its
   Newton normalisation in 32-bit words (skipped for faces turned from every light: ambient
-  only) and Lambert against the lights (grey ones: one sum for the three channels), which
+  only; on Cortex-M0 that test takes the high halves of the normal and the light, three
+  32-bit products, wherever they decide it: 1.2% of the frame) and Lambert against the
+  lights (grey ones: one sum for the three channels), which
   are turned into model space once per object when the model matrix is a rotation times a
   scale (no normal matrix per face). At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
   products, the normal's largest component, each vertex's tuple: 4% of the M4's frame).
 - **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once), then the
-  outcode and the projection from one reduction (three divisions by \`w\`: on Cortex-M0 one
-  reciprocal and three multiplications; inside the guard band the screen offsets and their
-  clamps in 32-bit words). On Cortex-M0, whose products of 32-bit factors are routines of
-  four multiplies, the transform takes three 32-bit multiplies a term with 32-bit sums
-  instead (\`HalvesTransform\`: the coordinate's high half times the whole entry, the
-  entry's halves times its low half, bounded once per object: 4.8% of the frame for 460
-  bytes); the stage is still the largest there, a quarter of the frame, most of it the
-  reciprocal of \`w\` and the three divisions by it.
+  outcode and the projection from one reduction (three divisions by \`w\`; inside the guard
+  band the screen offsets and their clamps in 32-bit words). Where products are long
+  multiplies (x86-64, Cortex-M4) a mesh whose clip coordinates are known to fit 32 bits goes
+  from the transform to the projection in one path, in line (the M4's frame 1.6%, x86-64's
+  0.7%). On Cortex-M0, whose products of 32-bit factors are routines of four multiplies, the
+  transform takes three 32-bit multiplies a term with 32-bit sums instead
+  (\`HalvesTransform\`: the coordinate's high half times the whole entry, the entry's halves
+  times its low half, bounded once per object: 4.8% of the frame for 460 bytes), and the
+  divisions by \`w\` are short ones in 32-bit words (\`ShortQuotients\`: a 16-bit
+  reciprocal of w's top bits, from the seed table and one Newton step, then one multiply
+  estimates each 15-bit quotient digit to within 5 below, the remainder is exact in one
+  word, and x and y take one digit each, the depth two: 6.1% of the frame for 590 bytes,
+  against a reciprocal to 32 bits and 64-bit products). The stage is a fifth of the M0's
+  frame, about 690 instructions a vertex, most of them the transform (250) and the
+  divisions (about 200 with the reciprocal).
 - **The goals**: with the pixels at what they take now (0.37 M on the M4), 1.0 M leaves
   0.63 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
