@@ -499,7 +499,8 @@ fn reciprocal16(den: u32) -> u32 {
 
 /// [`reciprocal16`] from a table seed of 8 bits and one Newton step in 32-bit words, made
 /// exact by stepping the remainder `2³¹ − x·den` into `[0, den)`; `None` if four steps do not
-/// suffice (the tests show they do, for every `den`).
+/// suffice (the tests show they do, for every `den`). The steps are [`newton_reciprocal`]'s in
+/// words: shared with it in 64 bits they cost the Cortex-M0's frame 0.2%.
 fn newton_reciprocal16(den: u32) -> Option<u32> {
     // x0 ≈ 2³¹ / den (the table's 2⁴⁷ / (den · 2¹⁶)), below 2¹⁶.
     let x0 = RECIPROCALS
