@@ -25,20 +25,21 @@ pub struct Mat4 {
 
 const ONE: i32 = 1 << 16;
 
-/// `v = h·2¹⁶ + l` with `l` in [−2¹⁵, 2¹⁵) (its low 16 bits, signed) and `h` exact.
+/// `v = h·2¹⁵ + l` with `l` in [−2¹⁴, 2¹⁴) (its low 15 bits, signed) and `h` exact.
 #[inline(always)]
-const fn split16(v: i32) -> (i32, i32) {
-    let l = ((v as u32) << 16) as i32 >> 16;
-    ((v.wrapping_sub(l)) >> 16, l)
+const fn split15(v: i32) -> (i32, i32) {
+    let l = ((v as u32) << 17) as i32 >> 17;
+    ((v.wrapping_sub(l)) >> 15, l)
 }
 
 /// A matrix prepared for 32-bit vertex transforms (from [`Mat4::halves`]), for cores without
 /// a long multiply, where each of [`Mat4::transform_short`]'s twelve 64-bit products is four
-/// multiplies put back together. With `x = xh·2¹⁶ + xl` and `m = mh·2¹⁶ + ml` (low halves
-/// signed, below 2¹⁵), a row's `Σ m·x + t·2¹⁶ + 2¹⁵` is
-/// `2¹⁶·(t + Σ (m·xh + mh·xl + ⌊ml·xl / 2¹⁶⌋)) + Σ (ml·xl mod 2¹⁶) + 2¹⁵`: three 32-bit
-/// products a term, the first sum bounded below 2³¹ by `Mat4::halves` and the last below
-/// 3·2¹⁶, so shifted right by 16 it is the rounded row, exactly.
+/// multiplies put back together. With `x = xh·2¹⁵ + xl` and `m = mh·2¹⁵ + ml` (low parts
+/// signed, below 2¹⁴), a row's `Σ m·x + t·2¹⁶ + 2¹⁵` is `2¹⁵·A + L + 2¹⁵` with
+/// `A = 2t + Σ (m·xh + mh·xl)` and `L = Σ ml·xl`: three 32-bit products a term, `A` bounded
+/// below 2³¹ by `Mat4::halves` and `L` within ±3·2²⁸. Its floor over 2¹⁶ is
+/// `(A + ⌊(L + 2¹⁵) / 2¹⁵⌋) >> 1` (the fraction dropped inside cannot carry past the halving),
+/// the rounded row, exactly.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct HalvesTransform {
     /// Each entry as `(m, mh, ml)`.
@@ -50,22 +51,20 @@ impl HalvesTransform {
     /// [`Mat4::transform_within`] of a point within the extent it was made for.
     #[inline(always)]
     pub(crate) fn transform(&self, p: [i32; 3]) -> [i64; 4] {
-        let [x0, x1, x2] = [split16(p[0]), split16(p[1]), split16(p[2])];
+        let [x0, x1, x2] = [split15(p[0]), split15(p[1]), split15(p[2])];
         // One term of a row's sums (written out: at opt-level "s" a loop over three stays a
         // loop).
-        let term = |(mid, low): (i32, u32), (m, mh, ml): (i32, i32, i32), (xh, xl): (i32, i32)| {
-            let p = ml.wrapping_mul(xl);
+        let term = |(a, l): (i32, i32), (m, mh, ml): (i32, i32, i32), (xh, xl): (i32, i32)| {
             (
-                mid.wrapping_add(m.wrapping_mul(xh))
-                    .wrapping_add(mh.wrapping_mul(xl))
-                    .wrapping_add(p >> 16),
-                low.wrapping_add(p as u32 & 0xFFFF),
+                a.wrapping_add(m.wrapping_mul(xh))
+                    .wrapping_add(mh.wrapping_mul(xl)),
+                l.wrapping_add(ml.wrapping_mul(xl)),
             )
         };
         let row = |r: &[(i32, i32, i32); 3], t: i32| {
             let [m0, m1, m2] = *r;
-            let (mid, low) = term(term(term((t, 0), m0, x0), m1, x1), m2, x2);
-            (mid as i64).wrapping_add(((low + (1 << 15)) >> 16) as i64)
+            let (a, l) = term(term(term((t.wrapping_mul(2), 0), m0, x0), m1, x1), m2, x2);
+            (a.wrapping_add(l.wrapping_add(1 << 15) >> 15) >> 1) as i64
         };
         let [r0, r1, r2, r3] = &self.rows;
         let [t0, t1, t2, t3] = self.t;
@@ -262,18 +261,18 @@ impl Mat4 {
         if extent >= 1 << 29 {
             return None;
         }
-        // A coordinate's high half is at most (extent + 2¹⁵) / 2¹⁶ in magnitude.
-        let xh = ((extent as u64) + (1 << 15)) >> 16;
+        // A coordinate's high part is at most (extent + 2¹⁴) / 2¹⁵ in magnitude.
+        let xh = ((extent as u64) + (1 << 14)) >> 15;
         let mut rows = [[(0, 0, 0); 3]; 4];
         for (out, r) in rows.iter_mut().zip(&self.m) {
-            // The translation starts the sum.
-            let mut sum = r[3].unsigned_abs() as u64;
+            // Twice the translation starts the sum, and ⌊(L + 2¹⁵) / 2¹⁵⌋ (at most 3·2¹³ + 1
+            // in magnitude) ends it.
+            let mut sum = 2 * r[3].unsigned_abs() as u64 + 3 * (1 << 13) + 1;
             for (o, &m) in out.iter_mut().zip(r) {
-                let (mh, ml) = split16(m);
+                let (mh, ml) = split15(m);
                 *o = (m, mh, ml);
-                // |m·xh| + |mh·xl| + |⌊ml·xl / 2¹⁶⌋| with |xl|, |ml| ≤ 2¹⁵.
-                sum +=
-                    m.unsigned_abs() as u64 * xh + mh.unsigned_abs() as u64 * (1 << 15) + (1 << 14);
+                // |m·xh| + |mh·xl| with |xl| ≤ 2¹⁴.
+                sum += m.unsigned_abs() as u64 * xh + mh.unsigned_abs() as u64 * (1 << 14);
             }
             if sum >= 1 << 31 {
                 return None;
