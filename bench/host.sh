@@ -162,14 +162,17 @@ $stages
   0.7%). On Cortex-M0, whose products of 32-bit factors are routines of four multiplies, the
   transform takes three 32-bit multiplies a term with 32-bit sums instead
   (\`HalvesTransform\`: the coordinate's high half times the whole entry, the entry's halves
-  times its low half, bounded once per object: 4.8% of the frame for 460 bytes), and the
+  times its low half, bounded once per object: 4.8% of the frame for 460 bytes; split at
+  bit 15 rather than 16, the low halves' products sum in one word: 1.3% more), and the
   divisions by \`w\` are short ones in 32-bit words (\`ShortQuotients\`: a 16-bit
   reciprocal of w's top bits, from the seed table and one Newton step, then one multiply
   estimates each 15-bit quotient digit to within 5 below, the remainder is exact in one
   word, and x and y take one digit each, the depth two: 6.1% of the frame for 590 bytes,
   against a reciprocal to 32 bits and 64-bit products). The stage is a fifth of the M0's
-  frame, about 690 instructions a vertex, most of them the transform (250) and the
-  divisions (about 200 with the reciprocal).
+  frame, about 650 instructions a vertex, most of them the transform (about 200) and the
+  divisions (about 200 with the reciprocal). Not kept: Lambert's rounded dot product in
+  32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
+  bytes more).
 - **The goals**: with the pixels at what they take now (0.37 M on the M4), 1.0 M leaves
   0.63 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
