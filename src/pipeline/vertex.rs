@@ -195,8 +195,10 @@ pub(crate) fn outcode_and_project(
         return (code, p, depth);
     }
     // Inside every plane: 0 < z ≤ w, and |x·half_w|, |y·half_h| ≤ GUARD·w, so both offsets
-    // from the centre are at most GUARD (below 2¹⁴) and the depth lies in [0, 2³⁰]: the
-    // results and their clamps fit 32-bit words (the clamps keep `project`'s contract).
+    // from the centre are at most GUARD (the rounded quotient of at most GUARD·w by w) and the
+    // depth lies in [0, 2³⁰]. With half sizes at most 2¹⁴ (viewports up to 2048 pixels) the
+    // screen position lies within ±2¹⁵: `project`'s clamps would change nothing, and every
+    // result fits a 32-bit word.
     let (qx, qy, sz) = if NARROW_CORE {
         // Without a divide instruction: short quotients by w in words (w below 2²⁹, every
         // ordinary scene; 6% of the Cortex-M0's frame) instead of a reciprocal to 32 bits.
@@ -209,12 +211,9 @@ pub(crate) fn outcode_and_project(
         let (qx, qy) = (by_w.round_i32(xh), by_w.round_i32(yh));
         (qx, qy, by_w.round_fraction(z))
     };
-    let lim = 1 << 15;
     let sx = (m.half_w as i32).wrapping_add(qx as i32);
     let sy = (m.half_h as i32).wrapping_sub(qy as i32);
-    let sz = sz as i32;
-    let p = ScreenPoint::new(sx.clamp(-lim, lim), sy.clamp(-lim, lim));
-    (code, p, sz.clamp(0, DEPTH_ONE))
+    (code, ScreenPoint::new(sx, sy), sz as i32)
 }
 
 /// [`outcode_and_project`] where the vertex loop does not take its in-line path for coordinates
@@ -322,14 +321,15 @@ mod tests {
     fn inside_vertices_project_as_project_does() {
         let map = map_320x240();
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let mut inside = 0;
+        let (mut inside, mut widest) = (0, 0);
         for i in 0..200_000u32 {
             let w = (rng.next_u64() >> (34 + i % 30)) as i64 + 1;
             let mut coordinate = |range: i64| {
                 let x = rng.next_u64() as i64;
                 x.rem_euclid(2 * range + 1) - range
             };
-            let (x, y) = (coordinate(w * 7), coordinate(w * 9));
+            // Out to the guard band and past it (GUARD over half the viewport: 12.8w, 17.05w).
+            let (x, y) = (coordinate(w * 13), coordinate(w * 18));
             let z = coordinate(w).abs();
             let c = [x, y, z, w];
             let (code, p, depth) = outcode_and_project(c, &map, false);
@@ -341,8 +341,10 @@ mod tests {
             if code == 0 {
                 assert_eq!(project(c, &map), Some((p, depth)), "{c:?}");
                 inside += 1;
+                widest = widest.max((p.x - 2560).abs()).max((p.y - 1920).abs());
             }
         }
-        assert!(inside > 50_000, "{inside}");
+        // Offsets reach the guard band's edge (GUARD: 16368 sub-pixels).
+        assert!(inside > 40_000 && widest > 16_300, "{inside} {widest}");
     }
 }
