@@ -177,10 +177,10 @@ $stages
 - **The goals**: with the pixels at what they take now (0.37 M on the M4), 1.0 M leaves
   0.63 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
-  about 870 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
+  about 900 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
   the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
-  of pieces of 5 to 25 instructions: about 0.5 M. Next come the rows' register traffic, worth
+  of pieces of 5 to 25 instructions: about 0.55 M. Next come the rows' register traffic, worth
   at most about 0.4 M on the M4 (rows and span entries at the 40 instructions their
   arithmetic needs). The rest would need less work per stage rather than tighter code: a
   cheaper rule (lighting in 16-bit arithmetic, depth relative to the triangle in 32 bits,

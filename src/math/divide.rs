@@ -6,8 +6,9 @@
 //! then pays for one reciprocal of the divisor and divides with a widening multiply and a few
 //! corrections (Möller and Granlund, "Improved division by invariant integers", IEEE Trans.
 //! Computers 60(2), 2011: the reciprocal `v = ⌊(2⁶⁴ − 1)/d⌋ − 2³²` of the normalised divisor `d`,
-//! and their two-by-one division, algorithm 4). Every path returns the same quotients, which the
-//! tests check against 128-bit arithmetic.
+//! and their two-by-one division, algorithm 4). A vertex's short quotients take
+//! [`ShortQuotients`] there instead: a 16-bit reciprocal and 15-bit digits in 32-bit words.
+//! Every path returns the same quotients, which the tests check against 128-bit arithmetic.
 
 use super::scalar::{leading_zeros32, mul_wide, mul_wide_u32, shl_words, NARROW_CORE};
 
@@ -526,7 +527,8 @@ fn newton_reciprocal16(den: u32) -> Option<u32> {
 }
 
 /// `RECIPROCALS[i] = ⌊2⁴⁷ / ((128.5 + i) · 2²⁴)⌋`: `2⁴⁷ / d` to 8 bits for a normalised `d`
-/// by its top byte (256 bytes).
+/// by its top byte (256 bytes), the seed of both [`newton_reciprocal`] and
+/// [`newton_reciprocal16`].
 const RECIPROCALS: [u16; 128] = {
     let mut t = [0u16; 128];
     let mut i = 0;

@@ -233,7 +233,7 @@ pub(crate) fn dot_is_positive(a: [i32; 3], b: [i32; 3]) -> bool {
 /// less than `3·2¹⁵` units of 2³² below and `3·2¹⁵ + 3` above `A = Σ ah·bh` (within ±3·2²⁸:
 /// a word).
 #[inline(always)]
-pub(crate) fn dot_sign_by_halves(a: [i32; 3], b: [i32; 3]) -> Option<bool> {
+fn dot_sign_by_halves(a: [i32; 3], b: [i32; 3]) -> Option<bool> {
     const MARGIN: i32 = 3 << 15;
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     let high = |x: i32, y: i32| (x >> 16).wrapping_mul(y >> 16);
