@@ -73,6 +73,54 @@ fn t14_coordinate_limits() {
     assert_eq!(triangle_spans(beyond, clip).count(), 0);
 }
 
+/// T14: triangles millions of pixels tall over a clip thousands of rows tall, exact on every
+/// row. On 64-bit hosts their edges' one-addition walk is exact for only a few rows at a time
+/// (8 for edges 2²⁵ sub-pixels tall), and they are set up again from the vertices that often:
+/// spans across each re-seeding, and across the middle vertex's row, equal the model's. The
+/// first two are built to make that walk drift as early as it can (a step's fraction above
+/// its exact value by nearly a unit each row, 2³² − 1 being a multiple of the edge's height,
+/// and a crossing a sub-pixel from the bottom vertex): walked 300 rows without re-seeding,
+/// their last rows would be off by a pixel.
+#[test]
+fn t14_tall_triangles_over_tall_clips_are_exact_on_every_row() {
+    let (dy, bottom) = (257 * 65537, 16 * 526_343 + 9);
+    for side in [-1, 1] {
+        let a = ScreenPoint::new(39, bottom - dy);
+        let c = ScreenPoint::new(40, bottom);
+        let b = ScreenPoint::new(side * COORD_LIMIT, 0);
+        let clip = PixelRect::new(0, 526_344 - 300, 6, 526_346);
+        let expected = model_triangle([a, b, c], clip);
+        assert!(expected.len() > 300);
+        assert_eq!(crate_triangle([a, b, c], clip), expected, "{side}");
+    }
+    let clip = PixelRect::new(0, -1500, 6, 1500);
+    let lim = COORD_LIMIT as f64;
+    let mut rng = Rng(7);
+    let mut covered = 0;
+    for k in 0..24 {
+        // The long edge from far above to far below crosses the clip, leaning by up to about
+        // 12 columns over its 3000 rows; the middle vertex lies in the clip's rows for half.
+        let lean = rng.range(-2.0, 2.0) * 65536.0;
+        let x = rng.range(0.0, 96.0);
+        let a = ScreenPoint::new((x - lean) as i32, -(lim as i32));
+        let c = ScreenPoint::new((x + lean) as i32, lim as i32);
+        let by = if k % 2 == 0 {
+            rng.range(-20000.0, 20000.0)
+        } else {
+            rng.range(-lim, lim)
+        };
+        let b = ScreenPoint::new(rng.range(-lim, lim) as i32, by as i32);
+        let expected = model_triangle([a, b, c], clip);
+        assert_eq!(
+            crate_triangle([a, b, c], clip),
+            expected,
+            "{a:?} {b:?} {c:?}"
+        );
+        covered += expected.len();
+    }
+    assert!(covered > 50_000, "{covered}");
+}
+
 /// T15: a triangle far above the screen costs nothing: no row is visited.
 #[test]
 fn t15_far_off_screen_triangle_visits_no_row() {

@@ -284,7 +284,9 @@ pub(crate) struct RationalStepper<const CEIL: bool> {
     step_r: i32,
 }
 
-/// Steps `ceil(N(k) / D)` (triangle edges).
+/// Steps `ceil(N(k) / D)` (triangle edges on 32-bit cores, and the exact reference of
+/// [`FractionStepper`]).
+#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
 pub(crate) type CeilStepper = RationalStepper<true>;
 /// Steps `floor(N(k) / D)` (lines).
 pub(crate) type FloorStepper = RationalStepper<false>;
@@ -312,6 +314,7 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
 
     /// [`new`](Self::new) of 32-bit operands (where 64-bit division is a library routine, the
     /// numerator of an edge started within its top pixel fits 32 bits).
+    #[cfg_attr(target_pointer_width = "64", allow(dead_code))]
     pub(crate) fn new32(n0: i32, den: i32, step: i32) -> Self {
         let den = den.max(1);
         let (q, r) = floor_divmod32(n0, den);
@@ -362,6 +365,88 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
     }
 }
 
+#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
+impl CeilStepper {
+    /// The current value (the same as [`FractionStepper::value`], for the edge walk's type).
+    #[inline(always)]
+    pub(crate) fn value(&self) -> i32 {
+        self.value
+    }
+}
+
+/// [`CeilStepper`]'s walk of `ceil(N(k) / D)` by one 64-bit addition a step, for as many steps
+/// as [`fraction_rows`] allows: the value in the high word, and in the low word the remainder
+/// as a fraction of 2³², rounded up (one instruction a step where 64-bit additions are one,
+/// against the exact stepper's four or five and a branch).
+///
+/// Exact while `(k + 1)(D − 1) < 2³²`: with `M(k) = N(k) + D − 1` the walk is that of
+/// `⌊M(k) / D⌋ = q(k)`, remainder `r(k)`. The low word starts at `⌈r(0)·2³² / D⌉` and the
+/// step's low word is `⌈s·2³² / D⌉` (`s` the step's remainder), each above its exact value by
+/// at most `(D − 1)/D`, since those values are multiples of `1/D`. After `k` steps the sum of
+/// low words (carries counted) exceeds the exact `(r(0) + k·s)·2³² / D` by at most
+/// `(k + 1)(D − 1)/D`, below `2³² / D`; the exact sum is a multiple of `2³² / D`, so a multiple
+/// of 2³² lies at or below both or above both: the carries, and so the high word, are
+/// `q(k)`'s.
+#[cfg(any(test, target_pointer_width = "64"))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FractionStepper {
+    acc: u64,
+    step: u64,
+}
+
+#[cfg(any(test, target_pointer_width = "64"))]
+impl FractionStepper {
+    /// The constant 0 (for iterators that yield nothing).
+    pub(crate) const ZERO: Self = FractionStepper { acc: 0, step: 0 };
+
+    /// Starts at `ceil(n0 / den)` (`0 < den < 2³¹`; the quotient and `step / den` must fit
+    /// i32), stepping by `step / den`.
+    pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
+        let den = den.max(1);
+        FractionStepper {
+            // ceil(N / D) = floor((N + D − 1) / D); |n0| is below 2⁵⁴ (see `edge`).
+            acc: packed_quotient(n0.wrapping_add(den - 1), den),
+            step: packed_quotient(step, den),
+        }
+    }
+
+    /// The current value.
+    #[inline(always)]
+    pub(crate) fn value(&self) -> i32 {
+        (self.acc >> 32) as u32 as i32
+    }
+
+    /// Advances `k` by one.
+    #[inline(always)]
+    pub(crate) fn step(&mut self) {
+        self.acc = self.acc.wrapping_add(self.step);
+    }
+}
+
+/// `⌊v / d⌋` in the high word (modulo 2³²) and `⌈(v mod d)·2³² / d⌉` in the low word (`d` in
+/// `[1, 2³¹)`): one division of `v·2³² + d − 1` where `v` fits 32 bits (that floor is
+/// `⌊v / d⌋·2³² + ⌊((v mod d)·2³² + d − 1) / d⌋`), two otherwise.
+#[cfg(any(test, target_pointer_width = "64"))]
+#[inline(always)]
+fn packed_quotient(v: i64, d: i64) -> u64 {
+    if let Ok(v) = i32::try_from(v) {
+        // |v·2³²| ≤ 2⁶³ − 2³², and d − 1 < 2³¹: no overflow.
+        return floor_div(((v as i64) << 32) + (d - 1), d) as u64;
+    }
+    let (q, r) = floor_divmod(v, d);
+    // 0 ≤ r < d < 2³¹: the shifted remainder fits 63 bits and its quotient is below 2³².
+    ((q as u64) << 32).wrapping_add(((r as u64) << 32).div_ceil(d as u64))
+}
+
+/// How many values from its start (the start's included) a [`FractionStepper`] of denominator
+/// `den` walks exactly: the largest `n` with `n·(den − 1) < 2³²` (any number for `den` 1).
+#[cfg(any(test, target_pointer_width = "64"))]
+pub(crate) fn fraction_rows(den: i32) -> u32 {
+    u32::MAX
+        .checked_div(den.saturating_sub(1).max(0) as u32)
+        .unwrap_or(u32::MAX)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -386,6 +471,54 @@ mod tests {
             b.step();
             assert_eq!(fields(&a), fields(&b), "{n0} {den} {step}");
         }
+    }
+
+    /// `FractionStepper` walks exactly what the exact stepper walks, for every value
+    /// `fraction_rows` promises: numerators of every size (32-bit ones, and ones to ±2⁵⁴ that
+    /// take the two-division set-up), denominators from 1 to 2²⁹, steps within ±2²⁹; the
+    /// largest denominators walked to the bound itself. And the bound is nearly tight: a walk
+    /// built to drift as early as it can does so two values past it.
+    #[test]
+    fn fraction_stepper_equals_the_exact_walk_within_its_rows() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let (mut wide, mut to_bound) = (0, 0);
+        for i in 0..20_000 {
+            let x = rng.next_u64();
+            let den = ((1u32 << 29) >> (x % 30)) as i32;
+            let den = (den - rng.within(den / 2).abs()).max(1);
+            let n0 = if i % 4 == 0 {
+                wide += 1;
+                ((rng.next_u64() as i64) >> 10) | (1 << 40)
+            } else {
+                rng.within(i32::MAX / 2) as i64
+            };
+            let step = rng.within(1 << 29) as i64;
+            let (mut exact, mut fast) = (
+                CeilStepper::new(n0, den as i64, step),
+                FractionStepper::new(n0, den as i64, step),
+            );
+            let rows = fraction_rows(den);
+            to_bound += usize::from(rows <= 3000);
+            for _ in 0..rows.min(3000) {
+                assert_eq!(fast.value(), exact.value, "{n0} {den} {step}");
+                exact.step();
+                fast.step();
+            }
+        }
+        assert!(wide > 4000 && to_bound > 5000, "{wide} {to_bound}");
+        // ceil((k − 9) / D) is 0 up to k = 9; a step's fraction ⌈2³² / D⌉ = 9 (D just below
+        // 2²⁹) exceeds the exact one by nearly 1 each time, and the remainder then nears D.
+        let den = (1 << 29) - 1;
+        assert_eq!(fraction_rows(den), 8);
+        let mut fast = FractionStepper::new(-9, den as i64, 1);
+        let values: std::vec::Vec<i32> = (0..10)
+            .map(|_| {
+                let v = fast.value();
+                fast.step();
+                v
+            })
+            .collect();
+        assert_eq!(values, [0, 0, 0, 0, 0, 0, 0, 0, 0, 1]);
     }
 
     /// The division-free quotients (used where division is a library routine, so not on the
