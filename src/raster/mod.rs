@@ -403,10 +403,15 @@ impl FractionStepper {
     /// i32), stepping by `step / den`.
     pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
         let den = den.max(1);
+        // ceil(N / D) = floor((N + D − 1) / D); |n0| is below 2⁵⁴ (see `edge`).
+        let start = n0.wrapping_add(den - 1);
         FractionStepper {
-            // ceil(N / D) = floor((N + D − 1) / D); |n0| is below 2⁵⁴ (see `edge`).
-            acc: packed_quotient(n0.wrapping_add(den - 1), den),
-            step: packed_quotient(step, den),
+            acc: match i32::try_from(start) {
+                Ok(v) => packed_quotient32(v, den),
+                Err(_) => packed_quotient(start, den),
+            },
+            // Steps fit 32 bits (see `RationalStepper::new`).
+            step: packed_quotient32(step as i32, den),
         }
     }
 
@@ -424,18 +429,22 @@ impl FractionStepper {
 }
 
 /// `⌊v / d⌋` in the high word (modulo 2³²) and `⌈(v mod d)·2³² / d⌉` in the low word (`d` in
-/// `[1, 2³¹)`): one division of `v·2³² + d − 1` where `v` fits 32 bits (that floor is
-/// `⌊v / d⌋·2³² + ⌊((v mod d)·2³² + d − 1) / d⌋`), two otherwise.
+/// `[1, 2³¹)`), by two divisions: see [`packed_quotient32`] for one.
 #[cfg(any(test, target_pointer_width = "64"))]
 #[inline(always)]
 fn packed_quotient(v: i64, d: i64) -> u64 {
-    if let Ok(v) = i32::try_from(v) {
-        // |v·2³²| ≤ 2⁶³ − 2³², and d − 1 < 2³¹: no overflow.
-        return floor_div(((v as i64) << 32) + (d - 1), d) as u64;
-    }
     let (q, r) = floor_divmod(v, d);
     // 0 ≤ r < d < 2³¹: the shifted remainder fits 63 bits and its quotient is below 2³².
     ((q as u64) << 32).wrapping_add(((r as u64) << 32).div_ceil(d as u64))
+}
+
+/// [`packed_quotient`] of a 32-bit `v`, by one division of `v·2³² + d − 1`: its floor is
+/// `⌊v / d⌋·2³² + ⌊((v mod d)·2³² + d − 1) / d⌋`.
+#[cfg(any(test, target_pointer_width = "64"))]
+#[inline(always)]
+fn packed_quotient32(v: i32, d: i64) -> u64 {
+    // |v·2³²| ≤ 2⁶³, and the sum stays within i64 (d − 1 < 2³¹, and v·2³² ≤ 2⁶³ − 2³²).
+    floor_div(((v as i64) << 32) + (d - 1), d) as u64
 }
 
 /// How many values from its start (the start's included) a [`FractionStepper`] of denominator

@@ -27,7 +27,7 @@ const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
 
 /// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`](super::FractionStepper),
-/// one addition a row (x86-64: 2.3% fewer instructions per frame), which a triangle re-seeds
+/// one addition a row (x86-64: 5% fewer instructions per frame), which a triangle re-seeds
 /// from its vertices every [`fraction_rows`](super::fraction_rows) rows (triangles the pipeline
 /// draws never need it: at most 2¹² rows of edges below 2¹⁶ sub-pixels); elsewhere the exact
 /// [`CeilStepper`](super::CeilStepper), whose set-up needs no 64-bit division (a library
