@@ -38,9 +38,6 @@ type EdgeWalk = FractionStepper;
 #[cfg(not(target_pointer_width = "64"))]
 type EdgeWalk = CeilStepper;
 
-/// True when [`EdgeWalk`] is exact for a limited number of rows only.
-const RESEEDED: bool = cfg!(target_pointer_width = "64");
-
 /// One row of covered pixels: `x0..x1` (exclusive) on row `y`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Span {
@@ -62,6 +59,7 @@ pub struct TriangleSpans {
     y_split: i32,
     /// The row where both edges are set up again from the vertices (`i32::MAX`: never; see
     /// [`EdgeWalk`]).
+    #[cfg(target_pointer_width = "64")]
     y_reseed: i32,
     left: EdgeWalk,
     right: EdgeWalk,
@@ -113,6 +111,7 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) ->
         return empty();
     }
     let y_split = first_row(b.y).clamp(y_start, y_end);
+    #[cfg(target_pointer_width = "64")]
     let y_reseed = reseed_row(y_start, y_end, c.y.wrapping_sub(a.y));
     // The middle vertex lies right of the long edge when the sorted triangle's doubled area
     // is positive (y down; an odd permutation turns the sign): the long edge is then the left
@@ -134,6 +133,7 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) ->
         y: y_start,
         y_end,
         y_split,
+        #[cfg(target_pointer_width = "64")]
         y_reseed,
         left,
         right,
@@ -179,23 +179,18 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
 
 /// The row after the last one that edges set up at row `y` walk exactly, for a triangle whose
 /// rows end at `y_end` and whose long edge is `dy` sub-pixels tall (the others are shorter, so
-/// their denominators smaller): `i32::MAX` when that is beyond the triangle (always, for
-/// [`CeilStepper`](super::CeilStepper)).
+/// their denominators smaller): `i32::MAX` when that is beyond the triangle.
+#[cfg(target_pointer_width = "64")]
 #[inline(always)]
 fn reseed_row(y: i32, y_end: i32, dy: i32) -> i32 {
-    #[cfg(target_pointer_width = "64")]
-    {
-        // Sorted and within ±2²⁴: 0 ≤ dy ≤ 2²⁵, so the denominator fits i32, and y < y_end.
-        let den = dy.wrapping_mul(S as i32);
-        let rows = y_end.wrapping_sub(y) as u32 as u64;
-        // The usual case by a product, not `fraction_rows`' division.
-        if rows * (den.max(1) as u64 - 1) >= 1 << 32 {
-            let exact = fraction_rows(den);
-            return y.saturating_add(exact.min(i32::MAX as u32) as i32);
-        }
+    // Sorted and within ±2²⁴: 0 ≤ dy ≤ 2²⁵, so the denominator fits i32, and y < y_end.
+    let den = dy.wrapping_mul(S as i32);
+    let rows = y_end.wrapping_sub(y) as u32 as u64;
+    // The usual case by a product, not `fraction_rows`' division.
+    if rows * (den.max(1) as u64 - 1) < 1 << 32 {
+        return i32::MAX;
     }
-    let _ = (y, y_end, dy);
-    i32::MAX
+    y.saturating_add(fraction_rows(den).min(i32::MAX as u32) as i32)
 }
 
 /// The points sorted by y, and whether the sort was an odd permutation (one or three swaps).
@@ -225,6 +220,7 @@ impl TriangleSpans {
             y: 0,
             y_end: 0,
             y_split: 0,
+            #[cfg(target_pointer_width = "64")]
             y_reseed: i32::MAX,
             left: EdgeWalk::ZERO,
             right: EdgeWalk::ZERO,
@@ -256,9 +252,10 @@ impl TriangleSpans {
     /// Sets both edges up again from the vertices at the row where their walks stop being
     /// exact (see [`EdgeWalk`]); after [`switch_at_split`](Self::switch_at_split) on the same
     /// row.
+    #[cfg(target_pointer_width = "64")]
     #[inline(always)]
     fn reseed_when_due(&mut self) {
-        if !RESEEDED || self.y != self.y_reseed {
+        if self.y != self.y_reseed {
             return;
         }
         let [a, b, c] = self.v;
@@ -296,11 +293,8 @@ impl TriangleSpans {
             } else {
                 self.y_end
             };
-            let end = if RESEEDED {
-                end.min(self.y_reseed)
-            } else {
-                end
-            };
+            #[cfg(target_pointer_width = "64")]
+            let end = end.min(self.y_reseed);
             while self.y < end {
                 let (x0, x1) = self.ends();
                 f(x0, x1);
@@ -310,6 +304,7 @@ impl TriangleSpans {
                 return;
             }
             self.switch_at_split();
+            #[cfg(target_pointer_width = "64")]
             self.reseed_when_due();
         }
     }
@@ -351,6 +346,7 @@ impl Iterator for TriangleSpans {
     fn next(&mut self) -> Option<Span> {
         while self.y < self.y_end {
             self.switch_at_split();
+            #[cfg(target_pointer_width = "64")]
             self.reseed_when_due();
             let (y, (x0, x1)) = (self.y, self.ends());
             self.step_edges();
