@@ -119,20 +119,25 @@ $stages
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
   frame); the pixels now take about 0.37 M there.
-- **Rows and span entries**: every row steps two edge steppers (an exact Bresenham quotient
-  and remainder each), clips the span to the target, and moves the depth start and the row's
-  place in both buffers; a row with pixels also checks the span against the buffers (one
-  bounds check serves both: same length), takes the depth at its first pixel from the
-  row's plane value (one product; on Cortex-M0, which lacks a long multiply, two in 32-bit
-  words) and counts fragments and failures. About 100 instructions per row
-  with pixels on the M4, where the arithmetic needs about 40: the rest moves the row's state
-  (two steppers of five words, the depth walk, the clip columns, the buffers) between
-  registers and the stack around the pixel loop. On x86-64 the edges step out of line,
-  which leaves the pixel loop its registers (4% of the frame); on Cortex-M the call costs
-  more than it frees. Walking the edges of small triangles in fixed point instead (one
-  addition per edge and row, exact while rows × 16 × height ≤ 2¹⁶: tested, not kept) takes
-  12 instructions off each such row on the M4, but needs a second copy of the row loop:
-  measured, no gain on the M4, 1.8% more on x86-64 and 850 bytes more flash. Two passes
+- **Rows and span entries**: every row steps two edges, clips the span to the target, and
+  moves the depth start and the row's place in both buffers; a row with pixels also checks
+  the span against the buffers (one bounds check serves both: same length), takes the depth
+  at its first pixel from the row's plane value (one product; on Cortex-M0, which lacks a
+  long multiply, two in 32-bit words) and counts fragments and failures. On Cortex-M an
+  edge is an exact Bresenham quotient and remainder; on x86-64 one 64-bit word, the
+  quotient in its high half and the remainder as a fraction of 2³², rounded up, in its low
+  half, so one addition a row (`FractionStepper`: exact while rows × (16 × height − 1) <
+  2³², always for the pipeline's triangles, and others are set up again from their vertices
+  that often; 5% of x86-64's frame). On the M4 its set-up's fractions in 32-bit words (a
+  reciprocal estimate and a corrective divide) cost more than the rows saved: 6.5% more
+  per frame, 900 bytes more flash. About 100 instructions per row with pixels on the M4,
+  where the arithmetic needs about 40: the rest moves the row's state (two steppers of five
+  words, the depth walk, the clip columns, the buffers) between registers and the stack
+  around the pixel loop. On x86-64 the edges step out of line, which leaves the pixel loop
+  its registers (3.3% of the frame); on Cortex-M the call costs more than it frees. An
+  earlier fixed-point walk for small triangles only (exact while rows × 16 × height ≤ 2¹⁶,
+  in a second copy of the row loop) measured no gain on the M4, 1.8% more on x86-64 and
+  850 bytes more flash. Two passes
   instead (the ends of up to 16 rows into a buffer, edge by edge, then their first depths,
   then the spans) cut the spans' own traffic to about 18 instructions a row on the M4, but
   the passes before them cost as much again, and the buffer's set-up per triangle more:
