@@ -399,8 +399,8 @@ impl FractionStepper {
     /// The constant 0 (for iterators that yield nothing).
     pub(crate) const ZERO: Self = FractionStepper { acc: 0, step: 0 };
 
-    /// Starts at `ceil(n0 / den)` (`0 < den < 2³¹`; the quotient and `step / den` must fit
-    /// i32), stepping by `step / den`.
+    /// Starts at `ceil(n0 / den)` (`0 < den < 2³¹`, `step` within i32, the quotient and
+    /// `step / den` must fit i32, as for [`RationalStepper::new`]), stepping by `step / den`.
     pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
         let den = den.max(1);
         // ceil(N / D) = floor((N + D − 1) / D); |n0| is below 2⁵⁴ (see `edge`).
