@@ -282,9 +282,19 @@ impl TriangleSpans {
     /// Calls `f(x0, x1)` for every row left, top to bottom, with the row's pixels `x0..x1`
     /// clipped to the clip rectangle's columns: empty (`x0 ≥ x1`) where it covers none of them.
     #[inline(always)]
-    pub(crate) fn for_each_row(mut self, mut f: impl FnMut(i32, i32)) {
-        // Two runs of rows, above and below the middle vertex's row: no per-row check for
-        // the switch of the short edge.
+    pub(crate) fn for_each_row(self, f: impl FnMut(i32, i32)) {
+        if cfg!(target_pointer_width = "64") {
+            self.rows_in_runs(f);
+        } else {
+            self.rows_one_by_one(f);
+        }
+    }
+
+    /// [`for_each_row`](Self::for_each_row) in two runs of rows, above and below the middle
+    /// vertex's row, with no per-row check for the switch of the short edge: on 64-bit hosts
+    /// (x86-64: 6% fewer instructions per frame than one by one).
+    #[inline(always)]
+    fn rows_in_runs(mut self, mut f: impl FnMut(i32, i32)) {
         loop {
             // Up to the split while it lies ahead (`i32::MIN` once switched), then to the end
             // (or to the next re-seeding).
@@ -306,6 +316,22 @@ impl TriangleSpans {
             self.switch_at_split();
             #[cfg(target_pointer_width = "64")]
             self.reseed_when_due();
+        }
+    }
+
+    /// [`for_each_row`](Self::for_each_row) in one loop that checks for the split on every
+    /// row: on 32-bit cores, where entering each of two runs moves the row loop's state
+    /// between stack slots (Cortex-M0: 0.7% fewer instructions per frame than in runs, the
+    /// M4 1.3%).
+    #[inline(always)]
+    fn rows_one_by_one(mut self, mut f: impl FnMut(i32, i32)) {
+        while self.y < self.y_end {
+            self.switch_at_split();
+            #[cfg(target_pointer_width = "64")]
+            self.reseed_when_due();
+            let (x0, x1) = self.ends();
+            f(x0, x1);
+            self.step_edges();
         }
     }
 
@@ -363,10 +389,22 @@ mod tests {
     use super::*;
     use std::vec::Vec;
 
-    /// `for_each_row` re-seeds its edges where the iterator does (64-bit hosts: triangles the
-    /// pipeline draws never need it, so only these reach it): rows of triangles millions of
-    /// pixels tall equal the iterator's, which tests/clipping.rs checks against the model
-    /// (the first two are built there to drift without re-seeding).
+    /// The rows of both of `for_each_row`'s loops (in runs, and one by one), which must agree:
+    /// each target compiles one of them.
+    fn rows_both_ways(spans: &TriangleSpans) -> Vec<(i32, i32)> {
+        let (mut in_runs, mut one_by_one) = (Vec::new(), Vec::new());
+        spans.clone().rows_in_runs(|x0, x1| in_runs.push((x0, x1)));
+        spans
+            .clone()
+            .rows_one_by_one(|x0, x1| one_by_one.push((x0, x1)));
+        assert_eq!(in_runs, one_by_one);
+        in_runs
+    }
+
+    /// `for_each_row` (both its loops) re-seeds its edges where the iterator does (64-bit
+    /// hosts: triangles the pipeline draws never need it, so only these reach it): rows of
+    /// triangles millions of pixels tall equal the iterator's, which tests/clipping.rs checks
+    /// against the model (the first two are built there to drift without re-seeding).
     #[test]
     fn for_each_row_re_seeds_like_the_iterator() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
@@ -390,20 +428,21 @@ mod tests {
             reseeded += usize::from(spans.y_reseed != i32::MAX);
             let expected: Vec<Span> = spans.clone().collect();
             let (mut walked, mut y) = (Vec::new(), spans.row());
-            spans.for_each_row(|x0, x1| {
+            for (x0, x1) in rows_both_ways(&spans) {
                 if x0 < x1 {
                     walked.push(Span { y, x0, x1 });
                 }
                 y += 1;
-            });
+            }
             assert_eq!(walked, expected, "{p:?}");
         }
         assert!(reseeded > 150, "{reseeded}");
     }
 
-    /// `for_each_row` visits the rows the iterator yields (and the empty ones between), and
-    /// the row walks of a plane give `Plane::at` at each first pixel: `PlaneRows` bit for bit,
-    /// `ShortRows` the u16 loop's start `⌊(v + 2²⁷) / 2¹³⌋` wherever that fits 31 bits.
+    /// `for_each_row` (both its loops) visits the rows the iterator yields (and the empty ones
+    /// between), and the row walks of a plane give `Plane::at` at each first pixel:
+    /// `PlaneRows` bit for bit, `ShortRows` the u16 loop's start `⌊(v + 2²⁷) / 2¹³⌋` wherever
+    /// that fits 31 bits.
     /// Triangles of every shape and size, partly off every side of the clip rectangle, steep
     /// and flat gradients.
     #[test]
@@ -431,7 +470,7 @@ mod tests {
             let mut short = ShortRows::new(&plane, clip.x0, y0);
             let mut start64 = WideRows::new(&plane, clip.x0, y0);
             let (mut walked, mut y) = (Vec::new(), y0);
-            spans.for_each_row(|x0, x1| {
+            for (x0, x1) in rows_both_ways(&spans) {
                 if x0 < x1 {
                     let v = wide.at(x0);
                     walked.push((Span { y, x0, x1 }, v));
@@ -446,7 +485,7 @@ mod tests {
                 short.next_row();
                 start64.next_row();
                 y += 1;
-            });
+            }
             assert_eq!(walked, expected, "{p:?}");
             spans_seen += walked.len();
         }
