@@ -110,15 +110,15 @@ $stages
 ## Where the rest goes, and what would take it
 
 - **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
-  Cortex-M4 and M0 about 12: on Cortex-M the pixel loop's colour does not fit in a
-  register beside the row loop's state, and depths are compared in 32 bits so that the
-  stored halfword needs no masking). Only the fragments that fail are counted, one count
+  Cortex-M4 and M0 about 11: on the M0 the pixel loop's colour and step do not fit in
+  registers beside the row loop's state, and on Cortex-M depths are compared in 32 bits so
+  that the stored halfword needs no masking). Only the fragments that fail are counted, one count
   carried through every span of a triangle (writes are the fragments less the failures): a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); the pixels now take about 0.37 M there.
+  frame); the pixels now take about 0.34 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target, and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
@@ -126,15 +126,20 @@ $stages
   long multiply, two in 32-bit words) and counts fragments and failures. On Cortex-M an
   edge is an exact Bresenham quotient and remainder; on x86-64 one 64-bit word, the
   quotient in its high half and the remainder as a fraction of 2³², rounded up, in its low
-  half, so one addition a row (`FractionStepper`: exact while rows × (16 × height − 1) <
+  half, so one addition a row (\`FractionStepper\`: exact while rows × (16 × height − 1) <
   2³², always for the pipeline's triangles, and others are set up again from their vertices
   that often; 5% of x86-64's frame). On the M4 its set-up's fractions in 32-bit words (a
   reciprocal estimate and a corrective divide) cost more than the rows saved: 6.5% more
-  per frame, 900 bytes more flash. About 100 instructions per row with pixels on the M4,
-  where the arithmetic needs about 40: the rest moves the row's state (two steppers of five
-  words, the depth walk, the clip columns, the buffers) between registers and the stack
-  around the pixel loop. On x86-64 the edges step out of line, which leaves the pixel loop
-  its registers (3.3% of the frame); on Cortex-M the call costs more than it frees. An
+  per frame, 900 bytes more flash. About 70 instructions per row with pixels on the M4 (38
+  for every row, 33 more for its span), where the arithmetic needs about 40: the rest moves
+  the row's state (two steppers of five words, the depth walk, the clip columns, the
+  buffers) between registers and the stack around the pixel loop. On Cortex-M the rows run
+  in one loop that checks for the middle vertex's row every time: in two runs, above and
+  below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
+  state between stack slots, 26 instructions a run on the M0 (one loop: 0.7% fewer
+  instructions per frame on the M0, 1.3% on the M4). On x86-64 the edges step out of line,
+  which leaves the pixel loop its registers (3.3% of the frame); on Cortex-M the call costs
+  more than it frees. An
   earlier fixed-point walk for small triangles only (exact while rows × 16 × height ≤ 2¹⁶,
   in a second copy of the row loop) measured no gain on the M4, 1.8% more on x86-64 and
   850 bytes more flash. Two passes
@@ -179,14 +184,14 @@ $stages
   divisions (about 200 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more).
-- **The goals**: with the pixels at what they take now (0.37 M on the M4), 1.0 M leaves
-  0.63 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+- **The goals**: with the pixels at what they take now (0.34 M on the M4), 1.0 M leaves
+  0.66 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
   about 900 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
   the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
   of pieces of 5 to 25 instructions: about 0.55 M. Next come the rows' register traffic, worth
-  at most about 0.4 M on the M4 (rows and span entries at the 40 instructions their
+  at most about 0.2 M on the M4 (rows and span entries at the 40 instructions their
   arithmetic needs). The rest would need less work per stage rather than tighter code: a
   cheaper rule (lighting in 16-bit arithmetic, depth relative to the triangle in 32 bits,
   coarser sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show
