@@ -110,7 +110,7 @@ $stages
 ## Where the rest goes, and what would take it
 
 - **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
-  Cortex-M4 and M0 about 11: on the M0 the pixel loop's colour and step do not fit in
+  Cortex-M4 about 12, M0 about 11: on the M0 the pixel loop's colour and step do not fit in
   registers beside the row loop's state, and on Cortex-M depths are compared in 32 bits so
   that the stored halfword needs no masking). Only the fragments that fail are counted, one count
   carried through every span of a triangle (writes are the fragments less the failures): a
@@ -129,9 +129,11 @@ $stages
   half, so one addition a row (\`FractionStepper\`: exact while rows × (16 × height − 1) <
   2³², always for the pipeline's triangles, and others are set up again from their vertices
   that often; 5% of x86-64's frame). On the M4 its set-up's fractions in 32-bit words (a
-  reciprocal estimate and a corrective divide) cost more than the rows saved: 6.5% more
-  per frame, 900 bytes more flash. About 70 instructions per row with pixels on the M4 (38
-  for every row, 33 more for its span), where the arithmetic needs about 40: the rest moves
+  reciprocal estimate and a corrective divide, or two divides of 16-bit digits) cost more
+  than the rows saved: 6.5% and 5.2% more per frame, 900 bytes more flash (the row step went
+  from 28 instructions to 16, but each edge's set-up took 22 more, and the triangle's own
+  about 77 more: copies of the wider steppers, the re-seeding checks). About 70 instructions
+  per row with pixels on the M4 (38 for every row, 33 more for its span), where the arithmetic needs about 40: the rest moves
   the row's state (two steppers of five words, the depth walk, the clip columns, the
   buffers) between registers and the stack around the pixel loop. On Cortex-M the rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
@@ -187,10 +189,10 @@ $stages
 - **The goals**: with the pixels at what they take now (0.34 M on the M4), 1.0 M leaves
   0.66 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
-  about 900 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
+  about 850 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
   the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
-  of pieces of 5 to 25 instructions: about 0.55 M. Next come the rows' register traffic, worth
+  of pieces of 5 to 25 instructions: about 0.5 M. Next come the rows' register traffic, worth
   at most about 0.2 M on the M4 (rows and span entries at the 40 instructions their
   arithmetic needs). The rest would need less work per stage rather than tighter code: a
   cheaper rule (lighting in 16-bit arithmetic, depth relative to the triangle in 32 bits,
