@@ -17,6 +17,7 @@ mod vector;
 pub use angle::Angle;
 pub use matrix::Mat4;
 pub(crate) use matrix::{is_scaled_rotation, product3};
+pub(crate) use methods::NewtonDirection;
 pub use methods::{Normalize, Trig};
 pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
@@ -28,4 +29,6 @@ pub(crate) use scalar::{
 
 pub(crate) use divide::{div_round, DivideBy, ShortQuotients};
 pub(crate) use sqrt::isqrt_u64;
+#[cfg(test)]
+pub(crate) use vector::dot_wide;
 pub(crate) use vector::{cosine_unit, cross_short, cross_wide, dot_is_positive, normalize};

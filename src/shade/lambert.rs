@@ -2,12 +2,12 @@
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-#[cfg(test)]
-use crate::math::normalize;
 use crate::math::{
     below_bits, below_bits32, cosine_unit, cross_short, cross_wide, dot_is_positive,
-    magnitude_bits, map3, mul_wide, Normalize, NARROW_CORE, UNIT_ONE,
+    magnitude_bits, map3, mul_wide, NewtonDirection, Normalize, NARROW_CORE, UNIT_ONE,
 };
+#[cfg(test)]
+use crate::math::{dot_wide, normalize};
 use crate::scene::{Lighting, PreparedLight};
 
 /// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
@@ -17,28 +17,44 @@ pub(crate) fn lambert<const N: usize>(
     n: Option<[i32; 3]>,
     lighting: &Lighting<N>,
 ) -> Rgb888 {
+    lambert_by(base, lighting, |light| cosine(n, light))
+}
+
+/// [`lambert`] with each light's `max(0, n·l)` (Q2.30) from `cosine`.
+#[inline(always)]
+fn lambert_by<const N: usize>(
+    base: Rgb888,
+    lighting: &Lighting<N>,
+    cosine: impl Fn(&PreparedLight) -> i32,
+) -> Rgb888 {
     if !lighting.is_grey() {
-        return lambert_colored(base, n, lighting);
+        // Coloured lights or ambient: a sum per channel, from the cosines gathered here (one
+        // copy of those sums serves every way of finding them).
+        let mut cosines = [0; N];
+        for (d, light) in cosines.iter_mut().zip(lighting.lights()) {
+            *d = cosine(light);
+        }
+        return lambert_colored(base, lighting, &cosines);
     }
     // Grey ambient and lights (the usual kind): one sum serves the three channels.
     let ambient = i64::from(lighting.ambient().r.to_bits());
     let s = lighting.lights().iter().fold(ambient, |s, light| {
-        s.wrapping_add(term(light.color[0], cosine(n, light)))
+        s.wrapping_add(term(light.color[0], cosine(light)))
     });
     let s = intensity(s);
     Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s))
 }
 
-/// [`lambert`] for coloured lights or ambient: a sum per channel.
+/// [`lambert_by`] for coloured lights or ambient: a sum per channel, from each light's
+/// `max(0, n·l)` in the order of the lights.
 #[inline(never)]
 fn lambert_colored<const N: usize>(
     base: Rgb888,
-    n: Option<[i32; 3]>,
     lighting: &Lighting<N>,
+    cosines: &[i32; N],
 ) -> Rgb888 {
     let mut sum = lighting.ambient().channels();
-    for light in lighting.lights() {
-        let d = cosine(n, light);
+    for (light, &d) in lighting.lights().iter().zip(cosines) {
         for (s, c) in sum.iter_mut().zip(light.color) {
             *s = s.wrapping_add(term(c, d));
         }
@@ -114,8 +130,7 @@ pub(crate) fn face_normal(
 
 /// Lit colour of a model-space triangle, counter-clockwise front, flat shaded: Lambert of its
 /// unit face normal, in world space through `normal_matrix` (in the lighting's space without
-/// one). A face that turns from every light gets the ambient colour without being normalised:
-/// its normal's products with the lights are all ≤ 0, so Lambert adds nothing.
+/// one).
 pub(crate) fn flat_color<const N: usize>(
     base: Rgb888,
     p: [[i32; 3]; 3],
@@ -124,13 +139,38 @@ pub(crate) fn flat_color<const N: usize>(
     extent: u32,
     lighting: &Lighting<N>,
 ) -> Rgb888 {
-    let n = face_direction(p, normal_matrix, extent);
+    face_lambert(
+        base,
+        face_direction(p, normal_matrix, extent),
+        method,
+        lighting,
+    )
+}
+
+/// Lambert of a face whose direction is `n` (components within ±2³⁰). A face that turns from
+/// every light gets the ambient colour without being normalised: its direction's products
+/// with the lights are all ≤ 0, so Lambert adds nothing. With [`Normalize::Newton`] (the
+/// default) no unit normal is formed: each light's cosine is the direction's product with
+/// the light over its length ([`NewtonDirection`]; measured 1.7% fewer instructions per
+/// frame on the Cortex-M0, 0.6% on the M4, 0.3% on x86-64, the same colours).
+#[inline(always)]
+fn face_lambert<const N: usize>(
+    base: Rgb888,
+    n: [i32; 3],
+    method: Normalize,
+    lighting: &Lighting<N>,
+) -> Rgb888 {
     // Components below 2³⁰ and unit directions: products below 2⁶⁰, sums below 2⁶².
     let faces = |l: &[i32; 3]| dot_is_positive(n, *l);
-    let unit = if lighting.lights().iter().any(|l| faces(&l.direction)) {
-        method.unit32(n)
-    } else {
+    let unit = if !lighting.lights().iter().any(|l| faces(&l.direction)) {
         None
+    } else if method == Normalize::Newton {
+        if let Some(d) = NewtonDirection::new(n) {
+            return lambert_by(base, lighting, |light| d.cosine(light.direction));
+        }
+        None
+    } else {
+        method.unit32(n)
     };
     lambert(base, unit, lighting)
 }
@@ -409,9 +449,13 @@ mod tests {
             for _ in 0..5_000 {
                 let v = [(); 3].map(|_| rng.within(1 << 20) as i64);
                 let n = normalize(v);
+                let mut cosines = [0; 3];
+                for (c, light) in cosines.iter_mut().zip(lighting.lights()) {
+                    *c = cosine(n, light);
+                }
                 assert_eq!(
                     lambert(base, n, &lighting),
-                    lambert_colored(base, n, &lighting),
+                    lambert_colored(base, &lighting, &cosines),
                     "{v:?}"
                 );
             }
@@ -426,6 +470,134 @@ mod tests {
         );
         let blue = LightColor::new(Scalar::ZERO, Scalar::ZERO, Scalar::ONE);
         assert!(!Lighting::<1>::new(blue).is_grey());
+    }
+
+    /// Flat Lambert through [`NewtonDirection`] (no unit normal) gives the colours of the unit
+    /// normal: exactly for every face of the reference torus turned three ways, with the
+    /// scene's light, three grey lights and coloured ones, and within one 8-bit step for random
+    /// faces of every scale; each cosine within 3 units of 2⁻³⁰ of the unit normal's, and
+    /// within 2·10⁻⁶ of the exact cosine of the direction kept (M9).
+    #[test]
+    fn newton_direction_lights_as_the_unit_normal() {
+        extern crate std;
+        use crate::mesh::{torus, torus_counts};
+        use std::vec;
+        let unit_lambert = |base, n, lighting: &Lighting<4>| {
+            let faces = lighting
+                .lights()
+                .iter()
+                .any(|l| dot_wide(n, l.direction) > 0);
+            let unit = faces.then(|| Normalize::Newton.unit32(n)).flatten();
+            lambert(base, unit, lighting)
+        };
+        let scene = lighting_of(&[((-1, 1, 1), 0.8)]);
+        let mut three = lighting_of(&[((-1, 1, 1), 0.6), ((2, -1, 3), 0.5), ((0, 0, -1), 2.5)]);
+        let mut coloured = three.clone();
+        let tint = LightColor::new(Scalar::ONE, Scalar::from_num(0.5), Scalar::from_num(0.25));
+        let _ = coloured.push(DirectionalLight::new(Vec3::from_int(1, 2, -1), tint));
+        let _ = three.push(DirectionalLight::new(
+            Vec3::X,
+            LightColor::gray(Scalar::from_num(0.1)),
+        ));
+        assert!(three.is_grey() && !coloured.is_grey());
+        let (nv, nt) = torus_counts(48, 24);
+        let (mut p, mut nrm, mut t) =
+            (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0; 3]; nt]);
+        let mesh = torus(
+            Scalar::ONE,
+            Scalar::from_num(0.4),
+            48,
+            24,
+            &mut p,
+            &mut nrm,
+            &mut t,
+        )
+        .unwrap();
+        let base = Rgb888::new(255, 160, 64);
+        let (mut faces, mut lit) = (0, 0);
+        for (a, b) in [(0, 0), (20, 30), (-75, 140)] {
+            let m =
+                Mat4::rotation_y(Angle::from_degrees(b)) * Mat4::rotation_x(Angle::from_degrees(a));
+            let nm = m.normal_matrix();
+            for lighting in [&scene, &three, &coloured] {
+                for tri in mesh.triangles() {
+                    let q = tri.map(|i| mesh.positions()[i as usize].to_bits());
+                    let n = face_direction(q, Some(&nm), mesh.extent());
+                    let got = face_lambert(base, n, Normalize::Newton, lighting);
+                    assert_eq!(got, unit_lambert(base, n, lighting), "{q:?}");
+                    faces += 1;
+                    lit += (got != lambert(base, None, lighting)) as usize;
+                }
+            }
+        }
+        assert!(faces == 9 * nt && lit > 4 * nt, "{faces} {lit}");
+        // Random directions of every scale, and crafted ones (the largest sums of squares,
+        // which are quartered, and the smallest).
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let (mut worst, mut worst_exact) = (0, 0f64);
+        let top = (1 << 30) - 1;
+        let crafted = [
+            [top, top, top],
+            [top, 0, 0],
+            [1 << 14, 0, 0],
+            [-top, 1, -1],
+            [1, 1, 1],
+        ];
+        for k in 0..100_000 {
+            let r = rng.next_u64();
+            let n = crafted.get(k % 1000).copied().unwrap_or_else(|| {
+                [0, 21, 42].map(|s| ((r >> s) as i32 >> 2) >> ((r >> (s + 16)) % 30))
+            });
+            let mut d = || rng.within(100) as i16;
+            let light = lighting_of(&[((d(), d(), d()), 0.8)]);
+            let (Some(l), Some(dir)) = (light.lights().first(), NewtonDirection::new(n)) else {
+                continue;
+            };
+            let got = dir.cosine(l.direction);
+            let unit = Normalize::Newton
+                .unit32(n)
+                .map_or(0, |u| cosine_unit(u, l.direction));
+            worst = worst.max(got.abs_diff(unit));
+            // The exact cosine of the direction the method keeps: n shifted to 15 bits.
+            let bits = 32
+                - n.iter()
+                    .map(|c| c.unsigned_abs())
+                    .max()
+                    .unwrap_or(0)
+                    .leading_zeros();
+            let c = n.map(|x| (x as f64 * 2f64.powi(15 - bits as i32)).floor());
+            let c = if bits > 15 { c } else { n.map(|x| x as f64) };
+            let len = c.iter().map(|c| c * c).sum::<f64>().sqrt();
+            let exact = c
+                .iter()
+                .zip(l.direction)
+                .map(|(c, l)| c * l as f64)
+                .sum::<f64>()
+                / len;
+            worst_exact = worst_exact.max((got as f64 - exact.max(0.0)).abs() / UNIT_ONE as f64);
+            let (a, b) = (
+                face_lambert(base, n, Normalize::Newton, &light),
+                unit_lambert(base, n, &light),
+            );
+            for (a, b) in [(a.r(), b.r()), (a.g(), b.g()), (a.b(), b.b())] {
+                assert!(a.abs_diff(b) <= 1, "{n:?} {l:?}");
+            }
+        }
+        assert!(worst <= 3 && worst_exact < 2e-6, "{worst} {worst_exact}");
+        assert!(NewtonDirection::new([0; 3]).is_none());
+    }
+
+    /// Grey lights over an ambient of 0.2 (a zero direction is left out).
+    fn lighting_of(lights: &[((i16, i16, i16), f64)]) -> Lighting<4> {
+        let mut l = Lighting::<4>::new(LightColor::gray(Scalar::from_num(0.2)));
+        for &(d, c) in lights {
+            let light = DirectionalLight::new(
+                Vec3::from_int(d.0, d.1, d.2),
+                LightColor::gray(Scalar::from_num(c)),
+            );
+            let _ = l.push(light);
+        }
+        l
     }
 
     fn lighting() -> Lighting<2> {
