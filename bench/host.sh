@@ -157,13 +157,18 @@ $stages
   otherwise by four of 14-bit digits for doubled areas below 2¹⁸, of 16-bit digits beyond)
   and three edge steppers (two
   divisions each), then flat shading: the face normal (a cross product of 32-bit edges; on
-  Cortex-M0, of edges within ±2¹⁵, in 32-bit words), its
-  Newton normalisation in 32-bit words (skipped for faces turned from every light: ambient
-  only; on Cortex-M0 that test takes the high halves of the normal and the light, three
-  32-bit products, wherever they decide it: 1.2% of the frame) and Lambert against the
-  lights (grey ones: one sum for the three channels), which
-  are turned into model space once per object when the model matrix is a rotation times a
-  scale (no normal matrix per face). At the firmware's opt-level "s" an iterator's sum or
+  Cortex-M0, of edges within ±2¹⁵, in 32-bit words) and Lambert against the lights (grey
+  ones: one sum for the three channels) without a unit normal. A face turned from every
+  light gets the ambient colour (on Cortex-M0 that test takes the high halves of the normal
+  and the light, three 32-bit products, wherever they decide it: 1.2% of the frame); for
+  the others each light's cosine is the direction, shifted to 15 bits, times the light over
+  its length (\`NewtonDirection\`: one multiply by the reciprocal square root, from a seed
+  table and two Newton steps, where the unit normal took a product, a rounding and a clamp
+  per component before its own product with the light; on Cortex-M0 the 15-bit products
+  take two multiplies each where the unit normal's took four: 1.7% of the M0's frame, 0.6%
+  of the M4's, 0.3% of x86-64's, for 300 to 450 bytes; the colours are the unit normal's
+  for every face of the torus). The lights are turned into model space once per object
+  when the model matrix is a rotation times a scale (no normal matrix per face). At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
   products, the normal's largest component, each vertex's tuple: 4% of the M4's frame).
 - **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once), then the
@@ -185,11 +190,16 @@ $stages
   frame, about 630 instructions a vertex, most of them the transform (about 200) and the
   divisions (about 200 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
-  bytes more).
+  bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
+  a light first faces and no test before (1.7% there, 224 bytes less, the M4 unchanged),
+  since its cosines differ from the unit normal's by up to 3 units of 2⁻³⁰, and a colour
+  could then differ between the host and the firmware (rule R10); on every core, that form
+  cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
+  gathering the cosines into an array for one copy of the per-channel sums cost the M4 1%.
 - **The goals**: with the pixels at what they take now (0.34 M on the M4), 1.0 M leaves
   0.66 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
-  about 850 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
+  about 840 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
   the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
   of pieces of 5 to 25 instructions: about 0.5 M. Next come the rows' register traffic, worth
