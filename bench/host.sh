@@ -195,7 +195,7 @@ $stages
   since its cosines differ from the unit normal's by up to 3 units of 2⁻³⁰, and a colour
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
-  gathering the cosines into an array for one copy of the per-channel sums cost the M4 1%.
+  1% more with each cosine found in one loop for both the grey and the per-channel sums.
 - **The goals**: with the pixels at what they take now (0.34 M on the M4), 1.0 M leaves
   0.66 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4

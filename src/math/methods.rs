@@ -167,7 +167,7 @@ impl NewtonDirection {
     pub(crate) fn new(v: [i32; 3]) -> Option<NewtonDirection> {
         let c = map3(shrink_to_15_bits32(v)?, |x| x as i32);
         let [s0, s1, s2] = map3(c, |x| x.wrapping_mul(x) as u32);
-        // Squares below 2³⁰, their sum in [2²⁸, 3·2³⁰): one word.
+        // Squares at most 2³⁰ (a component may be −2¹⁵), their sum in [2²⁸, 3·2³⁰]: a word.
         let s = s0.wrapping_add(s1).wrapping_add(s2);
         let quartered = s >= 1 << 30;
         let y = rsqrt_q45(if quartered { s >> 2 } else { s });

@@ -542,6 +542,8 @@ mod tests {
             [1 << 14, 0, 0],
             [-top, 1, -1],
             [1, 1, 1],
+            [i32::MIN, i32::MAX, 0],
+            [i32::MIN; 3],
         ];
         for k in 0..100_000 {
             let r = rng.next_u64();
