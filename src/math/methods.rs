@@ -110,7 +110,9 @@ impl Trig {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Normalize {
-    /// Reciprocal square root from a 48-entry table and two Newton steps (the default).
+    /// Reciprocal square root from a 48-entry table and two Newton steps (the default). Flat
+    /// shading forms no unit normal with it: each light's product with the face's direction
+    /// is divided by the direction's length, one multiply by the reciprocal.
     #[default]
     Newton,
     /// Integer square root and a rounded division per component.
