@@ -133,7 +133,7 @@ $stages
   than the rows saved: 6.5% and 5.2% more per frame, 900 bytes more flash (the row step went
   from 28 instructions to 16, but each edge's set-up took 22 more, and the triangle's own
   about 77 more: copies of the wider steppers, the re-seeding checks). About 70 instructions
-  per row with pixels on the M4 (38 for every row, 33 more for its span), where the arithmetic needs about 40: the rest moves
+  per row with pixels on the M4 (38 for every row, 31 more for its span), where the arithmetic needs about 40: the rest moves
   the row's state (two steppers of five words, the depth walk, the clip columns, the
   buffers) between registers and the stack around the pixel loop. On Cortex-M the rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
