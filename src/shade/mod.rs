@@ -43,8 +43,10 @@ pub struct FaceInputs<'a> {
     pub(crate) normal_matrix: Option<&'a [[i32; 3]; 3]>,
     /// How normals are normalised.
     pub(crate) normalize: Normalize,
-    /// Per vertex: snapped screen position, depth (Q1.30) and lit colour (Gouraud).
-    pub(crate) vertices: &'a [(ScreenPoint, i32, [i32; 3]); 3],
+    /// Per vertex: snapped screen position and depth (Q1.30).
+    pub(crate) vertices: &'a [(ScreenPoint, i32); 3],
+    /// Per vertex: lit colour (Gouraud; zeros for other shadings).
+    pub(crate) colors: &'a [[i32; 3]; 3],
     /// For perspective projections, the value `1/w` is proportional to after subtracting the
     /// depth (Q1.30).
     pub(crate) inverse_w_offset: Option<i64>,
@@ -67,7 +69,7 @@ impl FaceInputs<'_> {
     }
 
     fn vertex_rgb(&self) -> [[i32; 3]; 3] {
-        map3(*self.vertices, |v| v.2)
+        *self.colors
     }
 }
 
