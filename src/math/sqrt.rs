@@ -44,15 +44,13 @@ pub(crate) fn rsqrt_q45(m: u32) -> u32 {
     // Every factor below fits 32 bits (y stays near 2⁴⁵ / sqrt(m) ≤ 2³¹, m·y² / 2⁶⁰ near 1):
     // 32x32→64 products, one widening multiply each on Cortex-M3/M4.
     let wide = mul_wide_u32;
-    let mut y = RSQRT.get(idx).copied().unwrap_or(1 << 30);
-    let mut k = 0;
-    while k < 2 {
-        // m·y² in Q2.30, then y·(3 − m·y²)/2.
+    // m·y² in Q2.30, then y·(3 − m·y²)/2. Written out twice: at the firmware's opt-level "s"
+    // a loop of two stays a loop.
+    let newton = |y: u32| {
         let t = wide(m, square_shr31(y)) >> 29;
-        y = (wide(y, (3u64 << 30).saturating_sub(t) as u32) >> 31) as u32;
-        k += 1;
-    }
-    y
+        (wide(y, (3u64 << 30).saturating_sub(t) as u32) >> 31) as u32
+    };
+    newton(newton(RSQRT.get(idx).copied().unwrap_or(1 << 30)))
 }
 
 /// `⌊y² / 2³¹⌋` modulo 2³²: on cores without a long multiply from three 32-bit products of
