@@ -110,13 +110,6 @@ pub(crate) const fn below_bits(v: i64, bits: u32) -> bool {
     (v as u64).wrapping_add(limit - 1) < 2 * limit - 1
 }
 
-/// [`below_bits`] of a 32-bit value (`bits` < 31), by one 32-bit comparison.
-#[inline(always)]
-pub(crate) const fn below_bits32(v: i32, bits: u32) -> bool {
-    let limit = 1u32 << bits;
-    (v as u32).wrapping_add(limit - 1) < 2 * limit - 1
-}
-
 /// True for `d` in [−2¹⁵, 2¹⁵): two such factors make a 32-bit product within ±2³⁰, and the
 /// difference of two such products still fits 32 bits.
 #[inline(always)]
@@ -437,24 +430,7 @@ mod tests {
                     -l < v && v < l,
                     "{v} within {bits} bits"
                 );
-                if let (Ok(v), true) = (i32::try_from(v), bits < 31) {
-                    assert_eq!(
-                        below_bits32(v, bits),
-                        below_bits(v as i64, bits),
-                        "{v} {bits}"
-                    );
-                }
             }
-        }
-        for v in [
-            i32::MIN,
-            i32::MIN + 1,
-            -(1 << 30),
-            (1 << 30) - 1,
-            1 << 30,
-            i32::MAX,
-        ] {
-            assert_eq!(below_bits32(v, 30), below_bits(v as i64, 30), "{v}");
         }
     }
 

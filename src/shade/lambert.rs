@@ -3,8 +3,8 @@
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{
-    below_bits, below_bits32, cosine_unit, cross_short, cross_wide, dot_is_positive,
-    magnitude_bits, map3, mul_wide, NewtonDirection, Normalize, NARROW_CORE, UNIT_ONE,
+    below_bits, cosine_unit, cross_short, cross_wide, dot_is_positive, magnitude_bits, map3,
+    mul_wide, NewtonDirection, Normalize, NARROW_CORE, UNIT_ONE,
 };
 #[cfg(test)]
 use crate::math::{dot_wide, normalize};
@@ -230,11 +230,16 @@ fn face_direction(
 #[inline(always)]
 fn short_direction(u: [i32; 3], v: [i32; 3]) -> Option<[i32; 3]> {
     let n = cross_short(u, v)?;
-    Some(if n.iter().all(|&c| below_bits32(c, 30)) {
-        n
-    } else {
-        map3(n, |c| c >> 1)
-    })
+    // One test of the three magnitudes together (at the firmware's opt-level "s" an
+    // `iter().all` of `below_bits32` stays a loop).
+    let [x, y, z] = n;
+    Some(
+        if (x.unsigned_abs() | y.unsigned_abs() | z.unsigned_abs()) < 1 << 30 {
+            n
+        } else {
+            map3(n, |c| c >> 1)
+        },
+    )
 }
 
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
