@@ -84,9 +84,13 @@ impl Iterator for SmoothCursor {
             ((v + (1 << (FRAC - 1))) >> FRAC).clamp(0, 255) as u8
         };
         let c = Rgb888::new(ch(0), ch(1), ch(2));
-        for k in 0..3 {
-            self.acc[k] = self.acc[k].wrapping_add(self.step[k]);
-        }
+        let [a0, a1, a2] = self.acc;
+        let [s0, s1, s2] = self.step;
+        self.acc = [
+            a0.wrapping_add(s0),
+            a1.wrapping_add(s1),
+            a2.wrapping_add(s2),
+        ];
         Some(c)
     }
 }
@@ -176,9 +180,14 @@ impl Iterator for PerspectiveCursor {
             ((c + (1 << (RGB_FRAC - 1))) >> RGB_FRAC).clamp(0, 255) as u8
         };
         let c = Rgb888::new(ch(0), ch(1), ch(2));
-        for k in 0..4 {
-            self.acc[k] = self.acc[k].wrapping_add(self.step[k]);
-        }
+        let [a0, a1, a2, a3] = self.acc;
+        let [s0, s1, s2, s3] = self.step;
+        self.acc = [
+            a0.wrapping_add(s0),
+            a1.wrapping_add(s1),
+            a2.wrapping_add(s2),
+            a3.wrapping_add(s3),
+        ];
         Some(c)
     }
 }
