@@ -118,7 +118,7 @@ $stages
   1%. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); the pixels now take about 0.34 M there.
+  frame); the pixels now take about 0.35 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target, and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
@@ -139,9 +139,13 @@ $stages
   in one loop that checks for the middle vertex's row every time: in two runs, above and
   below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
   state between stack slots, 26 instructions a run on the M0 (one loop: 0.7% fewer
-  instructions per frame on the M0, 1.3% on the M4). On x86-64 the edges step out of line,
+  instructions per frame on the M0, 1.3% on the M4; one test a row instead, against the
+  next row where the split, a re-seeding or the end falls, measured 4.7% more on the M4).
+  On x86-64 the edges step out of line,
   which leaves the pixel loop its registers (3.3% of the frame); on Cortex-M the call costs
-  more than it frees. An
+  more than it frees. The clamps to the clip columns take at most 1.8% of the M4's frame
+  (measured without them), but a copy of the row loop without them for triangles within
+  the columns measured 0.7% more on the M4 and 12% more on the M0, 750 to 780 bytes more. An
   earlier fixed-point walk for small triangles only (exact while rows × 16 × height ≤ 2¹⁶,
   in a second copy of the row loop) measured no gain on the M4, 1.8% more on x86-64 and
   850 bytes more flash. Two passes
@@ -151,7 +155,9 @@ $stages
   measured 5% to 15% more per frame.
 - **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
   on Cortex-M0 through one reciprocal, since its long divisions by 15-bit digits, as a
-  vertex's below, measured 1% more there for 460 bytes; on the M4, for doubled areas below
+  vertex's below, measured 1% more there for 460 bytes, and again 1% more, 790 bytes, by
+  14-bit digits with the top digit skipped: the two divisions take 9% of the M0's frame,
+  2.7% of the M4's; on the M4, for doubled areas below
   2¹⁷ and numerators
   below 2³² before their shift by 14 (three in four of the torus's), by two 32-bit divides,
   otherwise by four of 14-bit digits for doubled areas below 2¹⁸, of 16-bit digits beyond)
@@ -170,7 +176,11 @@ $stages
   for every face of the torus). The lights are turned into model space once per object
   when the model matrix is a rotation times a scale (no normal matrix per face). At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
-  products, the normal's largest component, each vertex's tuple: 4% of the M4's frame).
+  products, the normal's largest component, each vertex's tuple: 4% of the M4's frame; the
+  reciprocal square root's two Newton steps and the M0's test of a face direction's three
+  magnitudes: 0.3% and 0.2% of the frame), and a flat triangle hands \`fill_face\` no vertex colours
+  (the shadings that do not interpolate them share one array of zeros: 1% of the M4's
+  frame).
 - **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once), then the
   outcode and the projection from one reduction (three divisions by \`w\`; inside the guard
   band the screen offsets in 32-bit words and without clamps, which the band and the
@@ -196,10 +206,10 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.34 M on the M4), 1.0 M leaves
-  0.66 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+- **The goals**: with the pixels at what they take now (0.35 M on the M4), 1.0 M leaves
+  0.65 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
-  about 840 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
+  about 820 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
   the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
   of pieces of 5 to 25 instructions: about 0.5 M. Next come the rows' register traffic, worth
