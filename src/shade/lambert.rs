@@ -38,7 +38,7 @@ fn lambert_by<const N: usize>(
     }
     // Grey ambient and lights (the usual kind): one sum serves the three channels.
     let ambient = i64::from(lighting.ambient().r.to_bits());
-    let s = lighting.lights().iter().fold(ambient, |s, light| {
+    let s = lighting.lights().fold(ambient, |s, light| {
         s.wrapping_add(term(light.color[0], cosine(light)))
     });
     let s = intensity(s);
@@ -54,7 +54,7 @@ fn lambert_colored<const N: usize>(
     cosines: &[i32; N],
 ) -> Rgb888 {
     let mut sum = lighting.ambient().channels();
-    for (light, &d) in lighting.lights().iter().zip(cosines) {
+    for (light, &d) in lighting.lights().zip(cosines) {
         for (s, c) in sum.iter_mut().zip(light.color) {
             *s = s.wrapping_add(term(c, d));
         }
@@ -165,7 +165,7 @@ fn face_lambert<const N: usize>(
     // Every case but Newton's leaves through the one `lambert` below: with a second call
     // (an early return for faces turned away) it and the reciprocal square root left the
     // line, 300 to 350 bytes more flash.
-    let unit = if !lighting.lights().iter().any(|l| faces(&l.direction)) {
+    let unit = if !lighting.lights().any(|l| faces(&l.direction)) {
         None
     } else if method == Normalize::Newton {
         if let Some(d) = NewtonDirection::new(n) {
@@ -491,10 +491,7 @@ mod tests {
         use crate::mesh::{torus, torus_counts};
         use std::vec;
         let unit_lambert = |base, n, lighting: &Lighting<4>| {
-            let faces = lighting
-                .lights()
-                .iter()
-                .any(|l| dot_wide(n, l.direction) > 0);
+            let faces = lighting.lights().any(|l| dot_wide(n, l.direction) > 0);
             let unit = faces.then(|| Normalize::Newton.unit32(n)).flatten();
             lambert(base, unit, lighting)
         };
@@ -560,7 +557,7 @@ mod tests {
             });
             let mut d = || rng.within(100) as i16;
             let light = lighting_of(&[((d(), d(), d()), 0.8)]);
-            let (Some(l), Some(dir)) = (light.lights().first(), NewtonDirection::new(n)) else {
+            let (Some(l), Some(dir)) = (light.lights().next(), NewtonDirection::new(n)) else {
                 continue;
             };
             let got = dir.cosine(l.direction);
