@@ -129,8 +129,8 @@ pub(crate) fn face_normal(
 }
 
 /// Lit colour of a model-space triangle, counter-clockwise front, flat shaded: Lambert of its
-/// unit face normal, in world space through `normal_matrix` (in the lighting's space without
-/// one).
+/// face normal, in world space through `normal_matrix` (in the lighting's space without one),
+/// by [`face_lambert`].
 pub(crate) fn flat_color<const N: usize>(
     base: Rgb888,
     p: [[i32; 3]; 3],

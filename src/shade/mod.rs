@@ -28,7 +28,7 @@ mod sealed {
 }
 
 /// What a shading type needs to colour one triangle (read where needed: flat shading reads the
-/// model-space positions, Gouraud the screen vertices).
+/// model-space positions, Gouraud the screen vertices and their colours).
 #[derive(Debug)]
 pub struct FaceInputs<'a> {
     /// The object's base colour.
