@@ -124,7 +124,9 @@ fn fill<T: RasterTarget, P: Paint>(
     } else {
         DepthPlane::default()
     };
-    target.fill_triangle(spans_in_range(p, clip, area), &plane, paint, stats)
+    // Within the pipeline's bound: no second set-up of the edges (see `spans_in_range`).
+    let spans = spans_in_range(p, clip, area, u32::MAX);
+    target.fill_triangle(spans, &plane, paint, stats)
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {

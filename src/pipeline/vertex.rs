@@ -12,7 +12,7 @@ use crate::math::{
     DEPTH_ONE, NARROW_CORE,
 };
 use crate::projection::Viewport;
-use crate::raster::ScreenPoint;
+use crate::raster::{ScreenPoint, PIPELINE_LIMIT};
 
 /// One transformed vertex in the per-frame cache: snapped screen position, depth, lit colour
 /// (Gouraud) and the clip planes it is outside of. 16 bytes; a frame needs one per vertex of
@@ -63,6 +63,9 @@ pub(crate) const PLANES: u32 = 6;
 /// Half the guard band in sub-pixels around the screen centre: projected coordinates within it
 /// stay below 2¹⁵ in magnitude (the attribute set-up's bound) for viewports up to 2048 pixels.
 const GUARD: i64 = (1 << 14) - 16;
+// The band around the farthest screen centre (a 2048-pixel viewport's) ends at the bound the
+// rasteriser relies on.
+const _: () = assert!((1 << 14) + GUARD == PIPELINE_LIMIT as i64);
 
 /// Viewport constants in sub-pixels.
 #[derive(Clone, Copy, Debug)]
@@ -197,8 +200,8 @@ pub(crate) fn outcode_and_project(
     // Inside every plane: 0 < z ≤ w, and |x·half_w|, |y·half_h| ≤ GUARD·w, so both offsets
     // from the centre are at most GUARD (the rounded quotient of at most GUARD·w by w) and the
     // depth lies in [0, 2³⁰]. With half sizes at most 2¹⁴ (viewports up to 2048 pixels) the
-    // screen position lies within ±2¹⁵: `project`'s clamps would change nothing, and every
-    // result fits a 32-bit word.
+    // screen position lies within ±(2¹⁴ + GUARD), which is ±PIPELINE_LIMIT: `project`'s clamps
+    // would change nothing, and every result fits a 32-bit word.
     let (qx, qy, sz) = if NARROW_CORE {
         // Without a divide instruction: short quotients by w in words (w below 2²⁹, every
         // ordinary scene; 6% of the Cortex-M0's frame) instead of a reciprocal to 32 bits.
@@ -254,13 +257,25 @@ pub(crate) fn outcode_and_project_by_planes(c: [i64; 4], m: &ScreenMap) -> (u8, 
     (code, p, depth)
 }
 
-/// [`project`] of reduced coordinates, from `x·half_w`, `y·half_h`, `z` and `w`.
-#[inline(always)]
+/// [`project`] of reduced coordinates, from `x·half_w`, `y·half_h`, `z` and `w`. Out of line on
+/// Cortex-M0, where only clipped vertices and coarser snapping reach it: in line, the vertex
+/// loop's registers moved around it (0.2% more instructions per frame).
+#[cfg_attr(
+    not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
+    inline(always)
+)]
+#[cfg_attr(
+    all(target_pointer_width = "32", not(target_has_atomic = "32")),
+    inline(never)
+)]
 fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(ScreenPoint, i32)> {
     if w <= 0 {
         return None;
     }
-    let lim = 1i64 << 15;
+    // Vertices inside the guard band lie within it already (see `outcode_and_project`); the
+    // clamp keeps clipped ones, whose intersections are rounded, within the bound that the
+    // rasteriser relies on too.
+    let lim = PIPELINE_LIMIT as i64;
     let by_w = DivideBy::new(w);
     let (sx, sy) = if m.snap == 0 {
         (by_w.round_i32(xh), by_w.round_i32(yh))

