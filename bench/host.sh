@@ -111,31 +111,44 @@ $stages
 
 - **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
   Cortex-M4 about 12, M0 about 11: on the M0 the pixel loop's colour and step do not fit in
-  registers beside the row loop's state, and on Cortex-M depths are compared in 32 bits so
+  registers beside the row loop's state, and on the M4 the colour no longer does either
+  since its row loop keeps the depth walk in two registers (one load a written pixel, about
+  as much as that walk's loads and stores a row would cost), and on Cortex-M depths are compared in 32 bits so
   that the stored halfword needs no masking). Only the fragments that fail are counted, one count
   carried through every span of a triangle (writes are the fragments less the failures): a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); the pixels now take about 0.34 M there.
+  frame); the pixels now take about 0.37 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target, and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
   at its first pixel from the row's plane value (one product; on Cortex-M0, which lacks a
-  long multiply, two in 32-bit words) and counts fragments and failures. On Cortex-M an
-  edge is an exact Bresenham quotient and remainder; on x86-64 one 64-bit word, the
-  quotient in its high half and the remainder as a fraction of 2³², rounded up, in its low
-  half, so one addition a row (\`FractionStepper\`: exact while rows × (16 × height − 1) <
-  2³², always for the pipeline's triangles, and others are set up again from their vertices
-  that often; 5% of x86-64's frame). On the M4 its set-up's fractions in 32-bit words (a
-  reciprocal estimate and a corrective divide, or two divides of 16-bit digits) cost more
-  than the rows saved: 6.5% and 5.2% more per frame, 900 bytes more flash (the row step went
-  from 28 instructions to 16, but each edge's set-up took 22 more, and the triangle's own
-  about 77 more: copies of the wider steppers, the re-seeding checks). About 70 instructions
-  per row with pixels on the M4 (38 for every row, 31 more for its span), where the arithmetic needs about 40: the rest moves
-  the row's state (two steppers of five words, the depth walk, the clip columns, the
-  buffers) between registers and the stack around the pixel loop. On Cortex-M the rows run
+  long multiply, two in 32-bit words) and counts fragments and failures. On Cortex-M0 an
+  edge is an exact Bresenham quotient and remainder (five words, and a correction when the
+  remainder wraps). On Cortex-M3/M4, which divide words in one instruction, it is the
+  numerator itself in one word, stepped by one addition and divided once a row
+  (\`DivideStepper\`: the span end is a base column plus the quotient, exact while
+  (|dx| + 31) × dy ≤ 2³² in sub-pixels, which every triangle within the pipeline's
+  ±(2¹⁵ − 16) meets, so its row loop has no check; larger triangles from \`triangle_spans\`
+  are set up again every ⌊(2²⁷ − 1) / width⌋ rows, in a copy of the row loop out of line):
+  5.8% of the M4's frame and 450 bytes, and 0.7% more with the edges stepped before the
+  row's span rather than after it (their words are then dead across the pixel loop). An M4
+  divide takes 2 to 12 cycles where most instructions take one, so counted in cycles the
+  gain is smaller. On x86-64 an edge is one 64-bit word, the quotient in its high half and
+  the remainder as a fraction of 2³², rounded up, in its low half, so one addition a row
+  (\`FractionStepper\`: exact while rows × (16 × height − 1) < 2³², always for the
+  pipeline's triangles, and others are set up again from their vertices that often; 5% of
+  x86-64's frame). On the M4 (before \`DivideStepper\`) its set-up's fractions in 32-bit
+  words (a reciprocal estimate and a corrective divide, or two divides of 16-bit digits)
+  cost more than the rows saved: 6.5% and 5.2% more per frame, 900 bytes more flash (the row
+  step went from 28 instructions to 16, but each edge's set-up took 22 more, and the
+  triangle's own about 77 more: copies of the wider steppers, the re-seeding checks). About
+  61 instructions per row with pixels on the M4 (35 for every row, 26 more for its span;
+  69 before \`DivideStepper\`), where the arithmetic needs about 35: the rest moves the
+  row's state (the depth walk, the clip columns, the buffers, the counts) between registers
+  and the stack around the pixel loop. On Cortex-M the rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
   below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
   state between stack slots, 26 instructions a run on the M0 (one loop: 0.7% fewer
@@ -208,19 +221,21 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.34 M on the M4), 1.0 M leaves
-  0.66 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, a third of what they take now. The largest excess found is per drawn triangle: on the M4
-  about 820 instructions (set-up and shading in \`fill_face\`, three \`edge\` calls) where
-  the arithmetic (a sort, two divisions for the depth plane, three edge quotients, a cross
+- **The goals**: with the pixels at what they take now (0.37 M on the M4), 1.0 M leaves
+  0.63 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  rows, two fifths of what they take now. The largest excess found is per drawn triangle: on
+  the M4 about 670 instructions (set-up, shading and inputs in the table above) where the
+  arithmetic (a sort, two divisions for the depth plane, three edge set-ups, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
-  of pieces of 5 to 25 instructions: about 0.5 M. Next come the rows' register traffic, worth
-  at most about 0.2 M on the M4 (rows and span entries at the 40 instructions their
-  arithmetic needs). The rest would need less work per stage rather than tighter code: a
-  cheaper rule (lighting in 16-bit arithmetic, depth relative to the triangle in 32 bits,
-  coarser sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show
-  costs nothing) or a different scene (face normals kept in the mesh instead of computed
-  every frame).
+  of pieces of 5 to 25 instructions: about 0.33 M. Next come the rows' register traffic,
+  worth at most about 0.3 M on the M4 (rows and span entries, 0.57 M, at the 35 instructions
+  a row their arithmetic needs). On the M0 the vertex stage (0.72 M, about 630 a vertex, of
+  which the transform and the divisions by w take about 200 each) and the depth plane's two
+  divisions (9% of its frame) come first. The rest would need less work per stage rather
+  than tighter code: a cheaper rule (lighting in 16-bit arithmetic, depth relative to the
+  triangle in 32 bits, coarser sub-pixels: each a change of image that \`docs/accuracy.md\`
+  would have to show costs nothing) or a different scene (face normals kept in the mesh
+  instead of computed every frame).
 - \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or \`thumbv7em-none-eabihf\`)
   lists the instructions by function and the library calls by the line that makes them, and
   \`ASM=fill_face\` prints a function's instructions with their counts.

@@ -51,8 +51,8 @@ CUTS = [
     )]),
     ("depth plane and span set-up (sorting, edge steppers)", "no fill set-up", [(
         "src/pipeline/draw.rs",
-        "target.fill_triangle(spans_in_range(p, clip, area), &plane, paint, stats)",
-        f"{{ let s = {BB}(spans_in_range(p, clip, area)); {BB}((&plane, paint)); "
+        "target.fill_triangle(spans, &plane, paint, stats)",
+        f"{{ let s = {BB}(spans); {BB}((&plane, paint)); "
         f"if {BB}(false) {{ return target.fill_triangle(s, &plane, paint, stats); }} Ok(()) }}",
     )]),
     ("flat shading (face normal, Lambert)", "no depth plane or spans", [(
