@@ -203,37 +203,59 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     self.fill_face(target, &setup, tri, v, colors, area, &mut stats)?;
                     continue;
                 }
-                bump(&mut stats.clipped);
                 let planes = a.outcode | b.outcode | c.outcode;
-                let poly = clip_polygon(tri.map(|i| setup.clip_vertex(i)), planes, &map);
-                let Some(projected) = project_polygon(&poly, &map) else {
-                    bump(&mut stats.degenerate);
-                    continue;
-                };
-                // The polygon faces one way as a whole: a sliver of its fan that snapping turned
-                // over is culled with the rest (it would cover pixels outside the polygon).
-                let area = fan_area(&projected);
-                if !kept(self.frame.cull, area, &mut stats) {
-                    continue;
-                }
-                let facing = if area < 0 { Cull::Back } else { Cull::Front };
-                // A convex polygon: a fan from its first vertex.
-                let Some((first, rest)) = projected.split_first() else {
-                    continue;
-                };
-                for pair in rest.windows(2) {
-                    if let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) {
-                        let v = [(first.0, first.1), (v1.0, v1.1), (v2.0, v2.1)];
-                        let area = area2(&[v[0].0, v[1].0, v[2].0]);
-                        if kept(facing, area, &mut stats) {
-                            let colors = [first.2, v1.2, v2.2];
-                            self.fill_face(target, &setup, tri, v, &colors, area, &mut stats)?;
-                        }
-                    }
-                }
+                self.fill_clipped(target, &setup, tri, planes, &map, &mut stats)?;
             }
         }
         Ok(stats)
+    }
+
+    /// Clips a triangle that crosses a clip plane (`planes`: those its vertices are outside
+    /// of) and fills the fan of what is left. Few triangles need it: out of line, its code no
+    /// longer moves the registers of the triangle walk's loop (x86-64 0.6% of the frame,
+    /// Cortex-M4 0.17% and 416 bytes). On Cortex-M0 forced out of line measured 0.45% more;
+    /// at the compiler's choice 0.12% more, for 136 bytes less.
+    #[cfg_attr(
+        not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
+        inline(never)
+    )]
+    fn fill_clipped<T: RasterTarget>(
+        &self,
+        target: &mut T,
+        setup: &ObjectSetup<'_, N>,
+        tri: &Triangle,
+        planes: u8,
+        map: &ScreenMap,
+        stats: &mut Stats,
+    ) -> Result<(), T::Error> {
+        bump(&mut stats.clipped);
+        let poly = clip_polygon(tri.map(|i| setup.clip_vertex(i)), planes, map);
+        let Some(projected) = project_polygon(&poly, map) else {
+            bump(&mut stats.degenerate);
+            return Ok(());
+        };
+        // The polygon faces one way as a whole: a sliver of its fan that snapping turned
+        // over is culled with the rest (it would cover pixels outside the polygon).
+        let area = fan_area(&projected);
+        if !kept(self.frame.cull, area, stats) {
+            return Ok(());
+        }
+        let facing = if area < 0 { Cull::Back } else { Cull::Front };
+        // A convex polygon: a fan from its first vertex.
+        let Some((first, rest)) = projected.split_first() else {
+            return Ok(());
+        };
+        for pair in rest.windows(2) {
+            if let (Some(v1), Some(v2)) = (pair.first(), pair.get(1)) {
+                let v = [(first.0, first.1), (v1.0, v1.1), (v2.0, v2.1)];
+                let area = area2(&[v[0].0, v[1].0, v[2].0]);
+                if kept(facing, area, stats) {
+                    let colors = [first.2, v1.2, v2.2];
+                    self.fill_face(target, setup, tri, v, &colors, area, stats)?;
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Shades and fills one screen triangle of `tri` (the whole triangle, or a piece of it after
