@@ -120,7 +120,7 @@ $stages
   1%. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); the pixels now take about 0.37 M there.
+  frame); the pixels now take about 0.35 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target, and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
@@ -176,7 +176,8 @@ $stages
   otherwise by four of 14-bit digits for doubled areas below 2¹⁸, of 16-bit digits beyond)
   and three edge steppers (two
   divisions each), then flat shading: the face normal (a cross product of 32-bit edges; on
-  Cortex-M0, of edges within ±2¹⁵, in 32-bit words) and Lambert against the lights (grey
+  32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4 since its edges divide,
+  0.7% of its frame; on x86-64 1% more) and Lambert against the lights (grey
   ones: one sum for the three channels; at most N of them, which bounds their loops: for
   the torus's one light a test, not a loop, 1% of the M4's frame and 0.7% of the M0's)
   without a unit normal. A face turned from every
@@ -221,14 +222,14 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.37 M on the M4), 1.0 M leaves
-  0.63 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+- **The goals**: with the pixels at what they take now (0.35 M on the M4), 1.0 M leaves
+  0.65 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, two fifths of what they take now. The largest excess found is per drawn triangle: on
-  the M4 about 670 instructions (set-up, shading and inputs in the table above) where the
+  the M4 about 660 instructions (set-up, shading and inputs in the table above) where the
   arithmetic (a sort, two divisions for the depth plane, three edge set-ups, a cross
   product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
   of pieces of 5 to 25 instructions: about 0.33 M. Next come the rows' register traffic,
-  worth at most about 0.3 M on the M4 (rows and span entries, 0.57 M, at the 35 instructions
+  worth at most about 0.3 M on the M4 (rows and span entries, 0.59 M, at the 35 instructions
   a row their arithmetic needs). On the M0 the vertex stage (0.72 M, about 630 a vertex, of
   which the transform and the divisions by w take about 200 each) and the depth plane's two
   divisions (9% of its frame) come first. The rest would need less work per stage rather
