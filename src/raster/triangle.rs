@@ -218,17 +218,10 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
 /// `rows`).
 #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
 fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, _rows: u32) -> EdgeWalk {
-    let dx = q.x.wrapping_sub(p.x);
-    let dy = q.y.wrapping_sub(p.y).max(1);
     // Without a hardware divide, the whole pixels of p.x − 8 come out by a shift:
     // ceil(((16k + m)·dy + …) / 16dy) = k + ceil((m·dy + …) / 16dy), a small quotient for
     // steep edges started at their top, found without dividing (see `floor_divmod`).
-    let x = p.x.wrapping_sub(HALF as i32);
-    // The row lies within the edge's rows: |16·py| below 2²⁵.
-    let t = py
-        .wrapping_mul(S as i32)
-        .wrapping_add(HALF as i32)
-        .wrapping_sub(p.y);
+    let (dx, dy, x, t) = edge_terms(p, q, py);
     let (den, step) = (S * dy as i64, S * dx as i64);
     // (Narrow cores are 32-bit: their edge walk is the exact stepper.)
     #[cfg(not(any(
@@ -253,8 +246,8 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, _rows: u32) -> EdgeWalk {
 
 /// An edge `p → q` at row `py` as the numerator `N = (p.x − 8)·dy + dx·t` over `D = 16·dy`
 /// (`t = 16·py + 8 − p.y`, the sample line's offset from `p`), whose ceiling is the span end
-/// `ceil((x(y) − 8) / 16)`: `(dx, dy, N's first term's factor p.x − 8, t)`.
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+/// `ceil((x(y) − 8) / 16)`: `(dx, dy, N's first term's factor p.x − 8, t)`. Every edge walk
+/// starts from these.
 #[inline(always)]
 fn edge_terms(p: ScreenPoint, q: ScreenPoint, py: i32) -> (i32, i32, i32, i32) {
     let dx = q.x.wrapping_sub(p.x);

@@ -267,7 +267,7 @@ mod tests {
         v.map(|c| c as f64 / (1u64 << 30) as f64)
     }
 
-    /// The 32-bit face direction (Cortex-M0's, so not on the host otherwise) is `shrink` of
+    /// The 32-bit face direction (32-bit cores', so not on the host otherwise) is `shrink` of
     /// the 64-bit cross product wherever it answers, and answers for every edge within ±2¹⁵:
     /// random edges of every scale, and the corners of the range, where products reach 2³⁰
     /// and the cross product needs halving.
