@@ -26,7 +26,7 @@ mod plane;
 mod triangle;
 
 pub use line::{line_pixels, LinePixels};
-pub(crate) use plane::{Plane, PlaneRows, RowStarts};
+pub(crate) use plane::{Plane, RowStarts};
 pub(crate) use triangle::spans_in_range;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 

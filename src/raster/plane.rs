@@ -178,15 +178,6 @@ pub(crate) struct PlaneRows {
     x_base: i32,
 }
 
-impl PlaneRows {
-    /// The same walk of the plane plus the constant `c`.
-    #[inline]
-    pub(crate) fn plus(mut self, c: i64) -> PlaneRows {
-        self.at_row = self.at_row.wrapping_add(c);
-        self
-    }
-}
-
 impl RowStarts for PlaneRows {
     type Start = i64;
 

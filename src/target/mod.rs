@@ -17,8 +17,6 @@ mod grid;
 mod surface;
 
 pub use depth::{DepthBuffer, DepthFormat, DepthTest};
-#[cfg(test)]
-pub(crate) use depth::{ShortRows, WideRows};
 pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;

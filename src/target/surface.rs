@@ -5,7 +5,7 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 
-use super::depth::{DepthBuffer, DepthFormat, DepthRows, DepthTest};
+use super::depth::{DepthBuffer, DepthFormat, DepthTest, NativeWord, RoundedRows};
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
@@ -132,16 +132,22 @@ where
         let (plane, step, test) = (&depth.plane, depth.plane.step_x(), self.test);
         // Spans start at column 0 or right of it (the clip rectangle's first column).
         let (x_base, y) = (0, spans.row());
-        // Decided once per triangle: spans whose depths need no clamping, in 32-bit arithmetic
-        // (columns within 2¹⁶ of the first, as `ShortRows` needs).
-        match D::unclamped_step(depth.max, step) {
-            Some(step) if self.color.width() <= 1 << 16 => {
-                let rows = DepthRows::new(plane, x_base, y);
+        // Decided once per triangle: spans whose depths need no clamping, started and stepped
+        // in 32-bit arithmetic (see `RoundedRows`), and walked from the triangle's own first
+        // row, so that a band starts them as the whole frame does.
+        let unclamped = match D::unclamped_step(depth.max, step) {
+            Some(st) => {
+                RoundedRows::<NativeWord>::new(plane, spans.first_row(), y, st).map(|r| (r, st))
+            }
+            None => None,
+        };
+        match unclamped {
+            Some((rows, st)) => {
                 self.each_span(spans, rows, stats, colors_for, |ds, cs, start, g, w| {
-                    D::test_span_unclamped(ds, cs, start, step, test, g, w)
+                    D::test_span_unclamped(ds, cs, start, st, test, g, w)
                 });
             }
-            _ => self.each_span(
+            None => self.each_span(
                 spans,
                 plane.rows(x_base, y),
                 stats,
