@@ -207,15 +207,6 @@ pub(crate) const fn mul_short_u32(a: i32, b: u32) -> i64 {
     }
 }
 
-/// `g · d` modulo 2⁶⁴ (what `g.wrapping_mul(d)` gives) for `|d| ≤ 2¹⁵`: the low word's
-/// product (exact, within ±2⁴⁷) plus the high word's, shifted; on cores without a long
-/// multiply three 32-bit products in line instead of the library's 64-bit product.
-#[inline(always)]
-pub(crate) const fn mul_long_short(g: i64, d: i32) -> i64 {
-    let high = ((g >> 32) as i32).wrapping_mul(d);
-    mul_short_u32(d, g as u32).wrapping_add((high as i64) << 32)
-}
-
 /// `(high·2¹⁶ + low) · b` for halves `high`, `low` (`0 ≤ low < 2¹⁶`) of a long factor and a
 /// short `b`, whose products with each half lie within ±2³¹: the low product's words, the high
 /// product added into them (written so, the compiler does not turn it back into a 64-bit
@@ -321,34 +312,6 @@ mod tests {
             let x = ((r as i32) >> 16).clamp(-(1 << 15), 1 << 15);
             let y = (r >> 32) as u32;
             assert_eq!(narrow(x, y), x as i64 * y as i64, "{x} {y}");
-        }
-    }
-
-    /// The product of a 64-bit value by a short factor is `wrapping_mul`'s, for every value
-    /// and every factor within ±2¹⁵.
-    #[test]
-    fn long_by_short_is_the_wrapping_product() {
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let gs = [
-            i64::MIN,
-            i64::MIN + 1,
-            -(1 << 32),
-            -1,
-            0,
-            1,
-            u32::MAX as i64,
-            i64::MAX,
-        ];
-        let ds = [-(1 << 15), -(1 << 15) + 1, -1, 0, 1, (1 << 15) - 1, 1 << 15];
-        for g in gs {
-            for d in ds {
-                assert_eq!(mul_long_short(g, d), g.wrapping_mul(d as i64), "{g} {d}");
-            }
-        }
-        for _ in 0..100_000 {
-            let g = rng.next_u64() as i64 >> (rng.next_u64() % 64);
-            let d = rng.within(1 << 15);
-            assert_eq!(mul_long_short(g, d), g.wrapping_mul(d as i64), "{g} {d}");
         }
     }
 

@@ -11,7 +11,7 @@ use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::math::{map3, Mat4};
 use crate::mesh::{Object, Triangle};
-use crate::raster::{line_pixels, spans_in_range, PixelRect, Plane, ScreenPoint};
+use crate::raster::{line_pixels, spans_in_range, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
 use crate::target::{DepthPlane, RasterTarget};
@@ -116,11 +116,7 @@ fn fill<T: RasterTarget, P: Paint>(
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
     let plane = if T::DEPTH {
-        // Depth in Q1.44 (the pipeline's Q1.30 shifted by 14).
-        DepthPlane {
-            plane: Plane::scaled(&p, z, 14, area),
-            max: (z[0].max(z[1]).max(z[2]) as i64) << 14,
-        }
+        DepthPlane::new(p, z, area)
     } else {
         DepthPlane::default()
     };

@@ -2,10 +2,7 @@
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
 use super::ScreenPoint;
-use crate::math::{
-    below_bits, is_short, mul_long_short, mul_short, mul_wide, DivideBy, NARROW_CORE,
-    SUBPIXEL_SCALE,
-};
+use crate::math::{is_short, mul_short, mul_wide, DivideBy, NARROW_CORE, SUBPIXEL_SCALE};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels.
 ///
@@ -43,6 +40,16 @@ impl Plane {
     /// once, the same values (exact, as their true values fit).
     #[inline]
     pub(crate) fn scaled(p: &[ScreenPoint; 3], v: [i32; 3], shift: u32, area2: i64) -> Plane {
+        let (nx, ny) = Plane::numerators(p, v);
+        let v0 = (v[0] as i64) << shift;
+        Plane::from_numerators(p[0], v0, nx, ny, shift, area2)
+    }
+
+    /// The numerators of the gradients along x and y of the plane through `(p[i], v[i])`
+    /// (every `v[i]` in [0, 2³⁰], coordinates within ±2¹⁵), over the doubled signed area:
+    /// exact, within ±2⁴⁷, from 32-bit differences and products.
+    #[inline(always)]
+    pub(crate) fn numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
         let [a, b, c] = *p;
         // Coordinates within ±2¹⁵ and values in [0, 2³⁰]: every difference fits i32.
         let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
@@ -59,8 +66,7 @@ impl Plane {
         };
         let nx = times(dv1, dy2).wrapping_sub(times(dv2, dy1));
         let ny = times(dv2, dx1).wrapping_sub(times(dv1, dx2));
-        let v0 = (v[0] as i64) << shift;
-        Plane::from_numerators(a, v0, nx, ny, shift, area2)
+        (nx, ny)
     }
 
     /// The plane through `a` (value `v0`) with gradient numerators `nx << shift`, `ny << shift`
@@ -102,28 +108,6 @@ impl Plane {
         self.v0
             .wrapping_add(self.gx.wrapping_mul(dx))
             .wrapping_add(self.gy.wrapping_mul(dy))
-    }
-
-    /// [`at`](Self::at), where the pixel centre lies within ±2¹⁵ sub-pixels of the first vertex
-    /// along both axes (the first row of a triangle's span loop, usually) by three 32-bit
-    /// products per gradient on cores without a long multiply, where the 64-bit product is a
-    /// library call (Cortex-M0: 1.1% of the frame).
-    #[inline]
-    pub(crate) fn at_near(&self, px: i32, py: i32) -> i64 {
-        let (dx, dy) = self.offsets(px, py);
-        if NARROW_CORE && below_bits(dx, 15) && below_bits(dy, 15) {
-            return self.at_offsets(dx as i32, dy as i32);
-        }
-        self.at(px, py)
-    }
-
-    /// The value `dx`, `dy` sub-pixels from the first vertex (both within ±2¹⁵), as
-    /// [`at`](Self::at) sums it: each product modulo 2⁶⁴.
-    #[inline(always)]
-    fn at_offsets(&self, dx: i32, dy: i32) -> i64 {
-        self.v0
-            .wrapping_add(mul_long_short(self.gx, dx))
-            .wrapping_add(mul_long_short(self.gy, dy))
     }
 
     /// The exact changes of [`at`](Self::at) from one pixel to the next along a row and down a
@@ -196,36 +180,6 @@ impl RowStarts for PlaneRows {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The short offsets' form of `at` (Cortex-M0's `at_near`, so not run on the host
-    /// otherwise) is `at` itself, bit for bit, for pixel centres within ±2¹⁵ sub-pixels of
-    /// the first vertex: planes of every gradient, steep ones whose products wrap included.
-    #[test]
-    fn at_offsets_equals_at() {
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let mut checked = 0;
-        for _ in 0..20_000 {
-            let scale = rng.pick(&[40, 400, 4000]);
-            let p = rng.triangle(ScreenPoint::new(2000, 1500), scale);
-            let area = crate::raster::doubled_area(p[0], p[1], p[2]);
-            if area == 0 {
-                continue;
-            }
-            let v = [(); 3].map(|_| ((rng.within(1 << 30) as i64) << 14) + (1 << 44));
-            let plane = Plane::new(&p, v, area);
-            for _ in 0..8 {
-                let (px, py) = (rng.within(2200), rng.within(2200));
-                let dx = px as i64 * 16 + 8 - p[0].x as i64;
-                let dy = py as i64 * 16 + 8 - p[0].y as i64;
-                if below_bits(dx, 15) && below_bits(dy, 15) {
-                    assert_eq!(plane.at_offsets(dx as i32, dy as i32), plane.at(px, py));
-                    assert_eq!(plane.at_near(px, py), plane.at(px, py));
-                    checked += 1;
-                }
-            }
-        }
-        assert!(checked > 50_000, "{checked}");
-    }
 
     /// `scaled` is `new` of the shifted values, bit for bit: coordinates across ±2¹⁵, values
     /// across [0, 2³⁰], both signs of area, the shifts the pipeline uses.

@@ -469,14 +469,6 @@ impl TriangleSpans {
         self.y
     }
 
-    /// The triangle's first row whatever the clip rectangle (the first at or below its top
-    /// vertex): where walks down the rows start that must not depend on the clip (a band draws
-    /// what the whole frame draws).
-    pub(crate) fn first_row(&self) -> i32 {
-        let [a, _, _] = self.v;
-        first_centre_from32(a.y)
-    }
-
     /// Calls `f(x0, x1)` for every row left, top to bottom, with the row's pixels `x0..x1`
     /// clipped to the clip rectangle's columns: empty (`x0 ≥ x1`) where it covers none of them.
     #[inline(always)]

@@ -1,7 +1,8 @@
 //! Depth buffers: per-pixel depth in a caller-supplied `&mut [u16]` or `&mut [u32]`.
 
 use super::grid::{BufferError, Grid};
-use crate::raster::{Plane, RowStarts};
+use crate::math::{mul_short, DivideBy, SUBPIXEL_BITS, SUBPIXEL_SCALE};
+use crate::raster::{first_centre_from32, Plane, RowStarts, ScreenPoint};
 
 /// The interpolator's fraction bits below one u16 step (its Q1.44 value has 2¹⁶ steps).
 const U16_STEP_BITS: u32 = 28;
@@ -10,6 +11,8 @@ const U16_STEP_BITS: u32 = 28;
 const DROPPED: u32 = 13;
 /// Half a u16 step in the interpolator's units: added once, truncation then rounds to nearest.
 const HALF_STEP: i64 = 1 << (U16_STEP_BITS - 1);
+/// Half a u16 step in the 32-bit loop's unit.
+const LOOP_HALF_STEP: i32 = 1 << (U16_STEP_BITS - DROPPED - 1);
 
 mod sealed {
     pub trait Sealed {}
@@ -26,20 +29,19 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
     #[doc(hidden)]
     fn from_interpolated(acc: i64) -> Self;
 
-    /// For a triangle whose vertex depths are at most `max` (Q1.44), the per-pixel step of
-    /// [`test_span_unclamped`](Self::test_span_unclamped) if every pixel it covers can skip
-    /// the clamp, from the interpolator's step.
+    /// True when every pixel of a triangle whose vertex depths (Q1.30) are at most `max` can
+    /// take [`test_span_unclamped`](Self::test_span_unclamped), whose values a
+    /// [`RoundedRows`] walk gives.
     #[doc(hidden)]
     #[inline(always)]
-    fn unclamped_step(max: i64, step: i64) -> Option<i32> {
-        let _ = (max, step);
-        None
+    fn unclamped(max: i32) -> bool {
+        let _ = max;
+        false
     }
 
     /// [`test_span`](Self::test_span) for a span of a triangle that
-    /// [`unclamped_step`](Self::unclamped_step) accepted, with the step it returned; `start`
-    /// is the interpolator's value `v` at the first pixel as the 32-bit loop holds it,
-    /// `⌊(v + 2²⁷) / 2¹³⌋`.
+    /// [`unclamped`](Self::unclamped) accepted: `start` and `step` in the 32-bit loop's unit,
+    /// 2⁻³¹ of the depth range (2⁻¹³ of the interpolator's), half a u16 step added.
     #[doc(hidden)]
     #[inline(always)]
     fn test_span_unclamped<C: Copy>(
@@ -150,17 +152,14 @@ impl DepthFormat for u16 {
         )
     }
 
-    /// Pixel centres inside a triangle have depths between its vertices', and the plane errs
-    /// by at most 2¹⁷ units there (see `Plane`): the loop's exact start `⌊(v + 2²⁷) / 2¹³⌋`
-    /// lies in `[2¹⁴ − 16, 2³¹ − 2¹⁴ + 16]` with every vertex at most 2⁴⁴ − 2²⁸. The
-    /// [`RoundedRows`] start errs from it by at most 2¹² (the pipeline's pixels lie within
-    /// ±2¹¹ of the origin), and the 32-bit step by less than 2¹⁰ over a span: every value of
-    /// the loop lies in [0, 2³¹).
+    /// Pixel centres inside a triangle have depths between its vertices': with every vertex
+    /// at most 2³⁰ − 2¹⁴ (Q1.30), the loop's exact values (twice the depth, plus half a u16
+    /// step, 2¹⁴) lie in [2¹⁴, 2³¹ − 2¹⁴], and a [`RoundedRows`] walk errs from them by
+    /// less than 2¹² + 2 (the pipeline's pixels lie within 2¹² of a triangle's vertices):
+    /// every value of the loop lies in [0, 2³¹).
     #[inline(always)]
-    fn unclamped_step(max: i64, step: i64) -> Option<i32> {
-        (max <= (1 << 44) - (1 << U16_STEP_BITS))
-            .then(|| i32::try_from(loop_step(step)).ok())
-            .flatten()
+    fn unclamped(max: i32) -> bool {
+        max <= (1 << 30) - (1 << 14)
     }
 
     #[inline(always)]
@@ -229,27 +228,31 @@ fn loop_step(step: i64) -> i64 {
     step.saturating_add(1 << (DROPPED - 1)) >> DROPPED
 }
 
-/// The u16 depth loop's start at the first pixel of each span, row after row, in 32-bit words:
-/// the loop's value `⌊(v + 2²⁷) / 2¹³⌋` of the plane `v` at column 0 of the triangle's first
-/// row, exactly, then stepped by the plane's gradients rounded to the loop's unit (2⁻¹⁵ of a
-/// u16 step), `sx` per column and `sy` per row: the start at column `x`, `dy` rows down, is
-/// `s₀ + sx·x + sy·dy` modulo 2³².
+/// The u16 depth loop's values in 32-bit words, in its unit (2⁻³¹ of the depth range, 2⁻¹⁵ of
+/// a u16 step, half a step added so that truncation rounds): the plane through the snapped
+/// vertices with its gradients rounded once to that unit per pixel, `sx` along a row and
+/// `sy` down a column (one division of each gradient's numerator by the doubled area, a
+/// 32-bit quotient), and its value at a reference pixel beside the first vertex (the pixel
+/// whose column holds the vertex, on the first row at or below it) from the vertex's own
+/// depth and those steps. The value at pixel `(x, y)` is `s₀ + sx·x + sy·(y − y_r)` modulo
+/// 2³² (the reference column folded into `s₀`): the span loop starts from it with one
+/// multiply and one addition a span, and one addition a row, and steps by `sx`.
 ///
-/// Each rounded gradient errs by at most half a unit, so a start errs by at most
-/// `(|x| + |dy|) / 2 + 1` units from the exact value: below 2¹² units, 2⁻³ of a u16 step,
-/// for the pipeline's pixels within ±2¹¹ of the origin (the stored depth is the exact
-/// start's at 99% of the spans of the test below, triangles up to a thousand pixels across;
-/// it stays within one step of the plane, rule R7), and the start depends on nothing but the
-/// triangle, so a band draws what the whole frame draws. One multiply and one addition a span and one
-/// addition a row, where the exact start took a 64-bit product and shift, or, without a long
-/// multiply, six words of quotients and remainders: the torus of bench/SCENE.md 2.0% fewer
-/// instructions per frame on Cortex-M4 (its pixel loop now keeps its colour in a register),
-/// 1.2% on Cortex-M0, 0.6% more on x86-64 (the seed at the first row); the same image.
+/// Each rounded step errs by at most half a unit, so a value errs from the exact plane by at
+/// most `(|x − x_r| + |y − y_r|) / 2 + 5/4` units: below 2¹² + 2 for the pipeline's
+/// triangles (2⁻³ of a u16 step; the stored depth stays within one step of the plane, rule
+/// R7, and is the exact plane's rounding at 99.6% of the pixels of the test below, triangles
+/// up to a thousand pixels across), and the walk depends on nothing but the triangle, so a
+/// band draws what the whole frame draws. The exact start it replaces took the plane in Q1.44 (two divisions with
+/// 64-bit quotients: on Cortex-M0 four reciprocal steps, which these two 32-bit quotients
+/// halve), its value at each span's first pixel (a 64-bit product and shift on the M4 and
+/// x86-64, two 32-bit products and six words of quotients and remainders on the M0) and a
+/// second rounding of its step.
 ///
 /// 64-bit hosts hold the same values shifted up by 13 bits in 64-bit words, so that their
 /// loop takes the form of a 64-bit product and shift (in 32-bit words it kept its colour and
 /// step on the stack: 4.2% more instructions on x86-64). The sums stay far below 2⁶³, so
-/// shifting back and truncating to 32 bits gives the same starts on every core (rule R10).
+/// shifting back and truncating to 32 bits gives the same values on every core (rule R10).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RoundedRows<W: LoopWord = NativeWord> {
     /// The start at column 0 on the current row (as `W` holds values).
@@ -317,21 +320,45 @@ impl LoopWord for i64 {
 }
 
 impl<W: LoopWord> RoundedRows<W> {
-    /// The walk of `plane` from column 0 of row `y_ref` (the triangle's first row), on row
-    /// `y`, with the loop's per-column step `step_x` (the
-    /// [`unclamped_step`](DepthFormat::unclamped_step)); `None` where the per-row step does
-    /// not fit 32 bits (a triangle nearly edge-on along y, which the general loop takes).
+    /// The walk of the plane through `(p[i], z[i])` (depths in Q1.30, at most 2³⁰; `area` the
+    /// doubled signed area, non-zero; coordinates within the pipeline's range) on row `y`,
+    /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
+    /// nearly edge-on, which the general loop takes).
     #[inline]
-    pub(crate) fn new(plane: &Plane, y_ref: i32, y: i32, step_x: i32) -> Option<Self> {
-        let (_, gy) = plane.pixel_steps();
-        let step_y = i32::try_from(loop_step(gy)).ok()?;
-        let start = (plane.at_near(0, y_ref).wrapping_add(HALF_STEP) >> DROPPED) as i32;
-        let row = start.wrapping_add(step_y.wrapping_mul(y.wrapping_sub(y_ref)));
-        Some(RoundedRows {
+    pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
+        let (nx, ny) = Plane::numerators(p, z);
+        let (nx, ny, den) = if area < 0 {
+            (nx.wrapping_neg(), ny.wrapping_neg(), area.wrapping_neg())
+        } else {
+            (nx, ny, area)
+        };
+        // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area.
+        let by_area = DivideBy::new(den);
+        let sx = i32::try_from(by_area.round_shifted(nx, 5)).ok()?;
+        let sy = i32::try_from(by_area.round_shifted(ny, 5)).ok()?;
+        // The reference pixel: the first vertex's column, the first row at or below it; its
+        // centre lies dx in (−8, 8] and dy in [0, 16) sub-pixels from the vertex.
+        let a = p[0];
+        let (x_r, y_r) = (a.x >> SUBPIXEL_BITS, first_centre_from32(a.y));
+        let dx = x_r.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.x;
+        let dy = y_r.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.y;
+        // Within ±2³⁶: the offset in sixteenths of the unit, rounded to the unit.
+        let offset = mul_short(sx, dx).wrapping_add(mul_short(sy, dy));
+        let at_ref = z[0]
+            .wrapping_mul(2)
+            .wrapping_add(LOOP_HALF_STEP)
+            .wrapping_add((offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32);
+        // `s₀ + sx·(x − x_r) = (s₀ − sx·x_r) + sx·x` modulo 2³²: no column for the row loop to
+        // hold.
+        let row = at_ref
+            .wrapping_add(sy.wrapping_mul(y.wrapping_sub(y_r)))
+            .wrapping_sub(sx.wrapping_mul(x_r));
+        let rows = RoundedRows {
             row: W::from_i32(row),
-            step_x: W::from_i32(step_x),
-            step_y: W::from_i32(step_y),
-        })
+            step_x: W::from_i32(sx),
+            step_y: W::from_i32(sy),
+        };
+        Some((rows, sx))
     }
 }
 
@@ -430,71 +457,83 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{triangle_spans, PixelRect, ScreenPoint, PIPELINE_LIMIT};
+    use crate::raster::{doubled_area, triangle_spans, PixelRect, PIPELINE_LIMIT};
 
     /// `RoundedRows` in 32-bit words (Cortex-M's) and in 64-bit ones (the host's) give the
-    /// same start at every span; each lies within `(|x| + |y − y_ref|) / 2 + 1` of the exact
-    /// start `⌊(v + 2²⁷) / 2¹³⌋` (`y_ref` the triangle's first row), and a walk set up at a
-    /// later row (a band's first) is the walk from the triangle's first row. Triangles of
-    /// every size within the pipeline's range, cut by the clip rectangle's top.
+    /// same value at every pixel of every span; each lies within its bound,
+    /// `(|x − x_r| + |y − y_r|) / 2 + 5/4`, of the exact plane's (in rationals: twice the
+    /// depth plus half a u16 step), and the stored depth is the exact one's at nearly every
+    /// pixel; a walk set up at a later row (a band's first) is the walk from an earlier one.
+    /// Triangles of every size within the pipeline's range, depths across [0,
+    /// 2³⁰ − 2¹⁴], cut by the clip rectangle's top.
     #[test]
     fn rounded_rows_stay_within_their_bound_on_every_core() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let clip = PixelRect::new(0, 40, 2040, 2040);
-        let (mut starts, mut exact, mut cut) = (0u32, 0u32, 0u32);
-        for _ in 0..20_000 {
+        let (mut pixels, mut same_depth, mut cut) = (0u64, 0u64, 0u32);
+        for _ in 0..3_000 {
             let scale = rng.pick(&[40, 400, 4000, PIPELINE_LIMIT / 2]);
             let centre = ScreenPoint::new(16 * 1000, 16 * 600);
             let p = rng.triangle(centre, scale).map(|q| {
                 ScreenPoint::new(q.x.clamp(0, PIPELINE_LIMIT), q.y.clamp(0, PIPELINE_LIMIT))
             });
-            let area = crate::raster::doubled_area(p[0], p[1], p[2]);
-            if area == 0 {
+            let area = doubled_area(p[0], p[1], p[2]);
+            let z = [(); 3].map(|_| (rng.within(1 << 29) + (1 << 29) - (1 << 14)).max(0));
+            if area == 0 || !u16::unclamped(z[0].max(z[1]).max(z[2])) {
                 continue;
             }
-            let z = [(); 3].map(|_| rng.within(1 << 29) + (1 << 29));
-            let plane = Plane::scaled(&p, z, 14, area);
-            let max = (*z.iter().max().unwrap_or(&0) as i64) << 14;
-            let Some(st) = u16::unclamped_step(max, plane.step_x()) else {
-                continue;
-            };
             let spans = triangle_spans(p, clip);
-            let (y_ref, y0) = (spans.first_row(), spans.row());
-            let (Some(mut narrow), Some(mut wide), Some(mut from_top)) = (
-                RoundedRows::<i32>::new(&plane, y_ref, y0, st),
-                RoundedRows::<i64>::new(&plane, y_ref, y0, st),
-                RoundedRows::<i32>::new(&plane, y_ref, y_ref, st),
+            let y0 = spans.row();
+            let (Some((mut narrow, st)), Some((mut wide, _)), Some((mut early, _))) = (
+                RoundedRows::<i32>::new(&p, z, area, y0),
+                RoundedRows::<i64>::new(&p, z, area, y0),
+                RoundedRows::<i32>::new(&p, z, area, y0 - 7),
             ) else {
                 continue;
             };
-            for _ in y_ref..y0 {
-                from_top.next_row();
+            for _ in 0..7 {
+                early.next_row();
             }
-            cut += u32::from(y0 > y_ref);
+            cut += u32::from(y0 > p.iter().map(|q| q.y).min().unwrap_or(0) / 16 + 1);
+            // The exact value at (x, y), in units of 1 / (16 · |area|).
+            let (nx, ny) = Plane::numerators(&p, z);
+            let (nx, ny, den) = if area < 0 {
+                (-nx, -ny, -area)
+            } else {
+                (nx, ny, area)
+            };
+            let (nx, ny, den) = (nx as i128, ny as i128, den as i128);
+            let a = p[0];
+            let (x_r, y_r) = (a.x >> 4, first_centre_from32(a.y));
             let mut row = y0;
             for span in spans {
-                let (x, y) = (span.x0, span.y);
-                while row < y {
+                while row < span.y {
                     narrow.next_row();
                     wide.next_row();
-                    from_top.next_row();
+                    early.next_row();
                     row += 1;
                 }
-                let walk = narrow.at(x);
-                assert_eq!(wide.at(x), walk, "{p:?} row {y}");
-                assert_eq!(from_top.at(x), walk, "{p:?} row {y}");
-                let truth = plane.at(x, y).wrapping_add(HALF_STEP) >> DROPPED;
-                let bound = (x.abs() + (y - y_ref).abs()) as i64 / 2 + 1;
-                assert!(
-                    (walk as i64 - truth).abs() <= bound,
-                    "{p:?} ({x}, {y}): {walk} {truth}"
-                );
-                exact += u32::from(walk as i64 >> 15 == truth >> 15);
-                starts += 1;
+                let y = span.y;
+                assert_eq!(narrow.at(span.x0), early.at(span.x0), "{p:?} row {y}");
+                for x in span.x0..span.x1.min(span.x0 + 64) {
+                    let walk = narrow.at(x);
+                    assert_eq!(wide.at(x), walk, "{p:?} ({x}, {y})");
+                    assert_eq!(narrow.at(span.x0).wrapping_add(st * (x - span.x0)), walk);
+                    let (dx, dy) = ((16 * x + 8 - a.x) as i128, (16 * y + 8 - a.y) as i128);
+                    let num = (2 * z[0] as i128 + (1 << 14)) * 16 * den + 32 * (nx * dx + ny * dy);
+                    let diff = (walk as i128 * 16 * den - num).abs();
+                    let far = ((x - x_r).abs() + (y - y_r).abs()) as i128;
+                    assert!(diff <= 8 * den * far + 20 * den, "{p:?} ({x}, {y})");
+                    let exact = num.div_euclid(16 * den);
+                    same_depth += u64::from(walk as i128 >> 15 == exact >> 15);
+                    pixels += 1;
+                }
             }
         }
-        assert!(starts > 1_000_000 && cut > 1000, "{starts} {cut}");
-        // And the depth stored at a span's first pixel is nearly always the exact start's.
-        assert!(exact > starts - starts / 100, "{exact} of {starts}");
+        assert!(pixels > 1_000_000 && cut > 100, "{pixels} {cut}");
+        assert!(
+            same_depth > pixels - pixels / 100,
+            "{same_depth} of {pixels}"
+        );
     }
 }

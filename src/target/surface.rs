@@ -10,15 +10,38 @@ use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::pipeline::Stats;
-use crate::raster::{PixelRect, Plane, RowStarts, Span, TriangleSpans};
+use crate::raster::{PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans};
 use crate::shade::Paint;
 
-/// Depth across one triangle: the plane through its snapped vertices and the largest of their
-/// depths (opaque).
+/// Depth across one triangle: its snapped vertices, their depths and its doubled signed area,
+/// from which a target sets up the interpolation it needs (opaque).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct DepthPlane {
-    pub(crate) plane: Plane,
-    pub(crate) max: i64,
+    p: [ScreenPoint; 3],
+    z: [i32; 3],
+    area: i64,
+}
+
+impl DepthPlane {
+    /// The triangle `p` with depths `z` (Q1.30, in [0, 2³⁰]) and doubled signed area `area`
+    /// (non-zero), within the pipeline's range.
+    #[inline(always)]
+    pub(crate) fn new(p: [ScreenPoint; 3], z: [i32; 3], area: i64) -> Self {
+        DepthPlane { p, z, area }
+    }
+
+    /// The exact plane in Q1.44 (the pipeline's Q1.30 shifted by 14).
+    #[inline]
+    fn plane(&self) -> Plane {
+        Plane::scaled(&self.p, self.z, 14, self.area)
+    }
+
+    /// The largest vertex depth (Q1.30).
+    #[inline(always)]
+    fn max(&self) -> i32 {
+        let [a, b, c] = self.z;
+        a.max(b).max(c)
+    }
 }
 
 /// Something the triangle filler can write spans into: [`ColorDepth`] or [`Direct`].
@@ -129,17 +152,14 @@ where
         stats: &mut Stats,
         colors_for: impl FnMut(Span) -> G,
     ) {
-        let (plane, step, test) = (&depth.plane, depth.plane.step_x(), self.test);
-        // Spans start at column 0 or right of it (the clip rectangle's first column).
-        let (x_base, y) = (0, spans.row());
-        // Decided once per triangle: spans whose depths need no clamping, started and stepped
-        // in 32-bit arithmetic (see `RoundedRows`), and walked from the triangle's own first
-        // row, so that a band starts them as the whole frame does.
-        let unclamped = match D::unclamped_step(depth.max, step) {
-            Some(st) => {
-                RoundedRows::<NativeWord>::new(plane, spans.first_row(), y, st).map(|r| (r, st))
-            }
-            None => None,
+        let (y, test) = (spans.row(), self.test);
+        // Decided once per triangle: spans whose depths need no clamping, in 32-bit words
+        // from a walk set up at the triangle's own vertex (see `RoundedRows`), so that a band
+        // starts them as the whole frame does.
+        let unclamped = if D::unclamped(depth.max()) {
+            RoundedRows::<NativeWord>::new(&depth.p, depth.z, depth.area, y)
+        } else {
+            None
         };
         match unclamped {
             Some((rows, st)) => {
@@ -147,13 +167,18 @@ where
                     D::test_span_unclamped(ds, cs, start, st, test, g, w)
                 });
             }
-            None => self.each_span(
-                spans,
-                plane.rows(x_base, y),
-                stats,
-                colors_for,
-                |ds, cs, start, g, w| D::test_span(ds, cs, start, step, test, g, w),
-            ),
+            None => {
+                // Spans start at column 0 or right of it (the clip rectangle's first column).
+                let plane = depth.plane();
+                let step = plane.step_x();
+                self.each_span(
+                    spans,
+                    plane.rows(0, y),
+                    stats,
+                    colors_for,
+                    |ds, cs, start, g, w| D::test_span(ds, cs, start, step, test, g, w),
+                )
+            }
         }
     }
 
