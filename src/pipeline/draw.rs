@@ -176,10 +176,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     bump(&mut stats.invalid);
                     continue;
                 };
-                if a.outcode & b.outcode & c.outcode != 0 {
-                    bump(&mut stats.outside);
-                    continue;
-                }
+                // Inside every plane first (the usual case), then outside one of them.
                 if a.outcode | b.outcode | c.outcode == 0 {
                     // Culled before anything else is gathered: half the triangles of a closed
                     // mesh end here.
@@ -200,6 +197,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                         &NO_COLORS
                     };
                     self.fill_face(target, &setup, tri, v, colors, area, &mut stats)?;
+                    continue;
+                }
+                if a.outcode & b.outcode & c.outcode != 0 {
+                    bump(&mut stats.outside);
                     continue;
                 }
                 let planes = a.outcode | b.outcode | c.outcode;
@@ -385,18 +386,15 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     bump(&mut stats.invalid);
                     continue;
                 };
-                if a.outcode & b.outcode & c.outcode != 0 {
+                // Inside every plane first (the usual case), then outside one of them.
+                let planes = a.outcode | b.outcode | c.outcode;
+                let area = if planes == 0 {
+                    area2(&[a.point(), b.point(), c.point()])
+                } else if a.outcode & b.outcode & c.outcode != 0 {
                     bump(&mut stats.outside);
                     continue;
-                }
-                let area = if a.outcode | b.outcode | c.outcode == 0 {
-                    area2(&[a.point(), b.point(), c.point()])
                 } else {
-                    let poly = clip_polygon(
-                        tri.map(|i| setup.clip_vertex(i)),
-                        a.outcode | b.outcode | c.outcode,
-                        &map,
-                    );
+                    let poly = clip_polygon(tri.map(|i| setup.clip_vertex(i)), planes, &map);
                     polygon_area(&poly, &map)
                 };
                 if !kept(self.frame.cull, area, &mut stats) {
