@@ -110,10 +110,11 @@ $stages
 ## Where the rest goes, and what would take it
 
 - **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
-  Cortex-M4 about 12, M0 about 11: on the M0 the pixel loop's colour and step do not fit in
-  registers beside the row loop's state; on the M4 they do since the depth walk takes one
-  word a row (\`RoundedRows\`, below), where its two words had pushed the colour onto the
-  stack, one load a written pixel; and on Cortex-M depths are compared in 32 bits so
+  Cortex-M4 about 12, M0 about 11: on both cores the pixel loop's colour does not stay in a
+  register beside the row loop's state, one load a written pixel (on the M4 the 32-bit depth
+  walk of \`RoundedRows\`, below, freed a register, which the compiler gave the colour in
+  one build of this round and not in the next, with the walk's later changes: about 1.5% of
+  the frame); and on Cortex-M depths are compared in 32 bits so
   that the stored halfword needs no masking). Only the fragments that fail are counted, one count
   carried through every span of a triangle (writes are the fragments less the failures): a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
@@ -125,11 +126,13 @@ $stages
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
   at its first pixel from the row's value at column 0 (one 32-bit multiply and addition:
-  \`RoundedRows\`, which walks the loop's 32-bit value from the exact one at column 0 of the
-  triangle's first row by the plane's gradients rounded to the loop's unit, 2⁻¹⁵ of a depth
-  step, within (|x| + |dy|) / 2 + 1 of that unit of the exact start; the exact start took a
-  64-bit product on the M4 and x86-64, two 32-bit products and six words of quotients and
-  remainders on the M0: 2.0% of the M4's frame, 1.2% of the M0's, 0.6% more on x86-64,
+  \`RoundedRows\`, the plane through the snapped vertices with its gradients rounded once to
+  the loop's unit, 2⁻¹⁵ of a depth step, set up from the first vertex's depth by one division
+  of each gradient's numerator with a 32-bit quotient, every value within
+  (|x − x_r| + |y − y_r|) / 2 + 5/4 of that unit of the exact plane; the exact start took the
+  plane in Q1.44, with 64-bit quotients, and at each span a 64-bit product on the M4 and
+  x86-64, two 32-bit products and six words of quotients and remainders on the M0: 4.4% of
+  the M4's frame, 5.2% of the M0's, 0.5% more on x86-64,
   the same image) and counts fragments and failures. On Cortex-M0 an
   edge is an exact Bresenham quotient and remainder (five words, and a correction when the
   remainder wraps). On Cortex-M3/M4, which divide words in one instruction, it is the
@@ -171,14 +174,12 @@ $stages
   then the spans) cut the spans' own traffic to about 18 instructions a row on the M4, but
   the passes before them cost as much again, and the buffer's set-up per triangle more:
   measured 5% to 15% more per frame.
-- **Per triangle**: the depth plane (two divisions of 62-bit numerators by the doubled area:
-  on Cortex-M0 through one reciprocal, since its long divisions by 15-bit digits, as a
-  vertex's below, measured 1% more there for 460 bytes, and again 1% more, 790 bytes, by
-  14-bit digits with the top digit skipped: the two divisions take 9% of the M0's frame,
-  2.7% of the M4's; on the M4, for doubled areas below
-  2¹⁷ and numerators
-  below 2³² before their shift by 14 (three in four of the torus's), by two 32-bit divides,
-  otherwise by four of 14-bit digits for doubled areas below 2¹⁸, of 16-bit digits beyond)
+- **Per triangle**: the depth walk's two steps (divisions of numerators below 2⁵² by the
+  doubled area, with 32-bit quotients: on Cortex-M0 through one reciprocal, about 250
+  instructions a triangle, 6.6% of that core's frame, where 15-bit digits from a 16-bit
+  reciprocal, as a vertex's below, measured 0.8% more; on the M4 by 32-bit divides where
+  the numerator allows; the exact Q1.44 plane, two divisions with 64-bit quotients, only for
+  the triangles the walk does not take: a vertex at the far plane, a step beyond 32 bits)
   and three edge steppers (two
   divisions each), then flat shading: the face normal (a cross product of 32-bit edges; on
   32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4 since its edges divide,
@@ -230,18 +231,18 @@ $stages
 - **The goals**: with the pixels at what they take now (0.35 M on the M4), 1.0 M leaves
   0.65 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, two fifths of what they take now. The largest excess found is per drawn triangle: on
-  the M4 about 660 instructions (set-up, shading and inputs in the table above) where the
-  arithmetic (a sort, two divisions for the depth plane, three edge set-ups, a cross
-  product, a reciprocal square root, a dot product) needs about 320, spread thin over dozens
-  of pieces of 5 to 25 instructions: about 0.33 M. Next come the rows' register traffic,
-  worth at most about 0.3 M on the M4 (rows and span entries, 0.59 M, at the 35 instructions
-  a row their arithmetic needs). On the M0 the vertex stage (0.72 M, about 630 a vertex, of
-  which the transform and the divisions by w take about 200 each) and the depth plane's two
-  divisions (9% of its frame) come first. The rest would need less work per stage rather
-  than tighter code: a cheaper rule (lighting in 16-bit arithmetic, depth relative to the
-  triangle in 32 bits, coarser sub-pixels: each a change of image that \`docs/accuracy.md\`
-  would have to show costs nothing) or a different scene (face normals kept in the mesh
-  instead of computed every frame).
+  the M4 about 615 instructions (fill set-up, set-up, shading and inputs in the table above)
+  where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
+  cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
+  dozens of pieces of 5 to 25 instructions: about 0.28 M. Next come the rows' register
+  traffic, worth at most about 0.28 M on the M4 (rows and span entries, 0.54 M, at the 35
+  instructions a row their arithmetic needs). On the M0 the vertex stage (0.72 M, about 630
+  a vertex, of which the transform and the divisions by w take about 200 each) and the depth
+  walk's two divisions (6.6% of its frame) come first. The rest would need less work per
+  stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
+  sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
+  nothing) or a different scene (face normals kept in the mesh instead of computed every
+  frame).
 - \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or \`thumbv7em-none-eabihf\`)
   lists the instructions by function and the library calls by the line that makes them, and
   \`ASM=fill_face\` prints a function's instructions with their counts.
