@@ -45,7 +45,7 @@ report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$
     row("triangle walk (fetch, trivial reject, culling, clipping)", wk - fc);
     row("flat shading per triangle (face normal, Lambert)", sh);
     row("span set-up (sorting, edge steppers)", sp);
-    row("depth plane set-up, spans and pixels (edge stepping, depth test, writes)", fl - sp);
+    row("depth walk set-up, spans and pixels (edge stepping, depth test, writes)", fl - sp);
     row("other per-triangle work", fc - fl - sh);
     row("rest of draw_scene", d - pr - wk);
 }

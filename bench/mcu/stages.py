@@ -43,19 +43,19 @@ CUTS = [
         f"failed = {BB}((ds.len(), cs.len(), depth.at(x0), failed)).3;"
         " let _ = (&mut test_span, g);",
     )]),
-    ("fill set-up (colour, depth test choice, first row)", "no rows", [(
+    ("fill set-up (colour, depth walk: steps and start; first row)", "no rows", [(
         "src/target/surface.rs",
         "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
         f"        if {BB}(true) {{ {BB}((&spans, &depth)); return; }}\n"
         "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
     )]),
-    ("depth plane and span set-up (sorting, edge steppers)", "no fill set-up", [(
+    ("span set-up (sorting, edge steppers)", "no fill set-up", [(
         "src/pipeline/draw.rs",
         "target.fill_triangle(spans, &plane, paint, stats)",
         f"{{ let s = {BB}(spans); {BB}((&plane, paint)); "
         f"if {BB}(false) {{ return target.fill_triangle(s, &plane, paint, stats); }} Ok(()) }}",
     )]),
-    ("flat shading (face normal, Lambert)", "no depth plane or spans", [(
+    ("flat shading (face normal, Lambert)", "no spans or depth walk", [(
         "src/pipeline/draw.rs",
         "    bump(&mut stats.drawn);\n",
         f"    bump(&mut stats.drawn);\n    if {BB}(true) {{ {BB}((&p, &z, area, paint)); "
