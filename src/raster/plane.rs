@@ -69,15 +69,22 @@ impl Plane {
         (nx, ny)
     }
 
+    /// Gradient numerators `nx`, `ny` over the doubled signed area `area2`, as the same
+    /// fractions over its magnitude (what a division rounding to nearest takes).
+    #[inline(always)]
+    pub(crate) fn over_positive_area(nx: i64, ny: i64, area2: i64) -> (i64, i64, i64) {
+        if area2 < 0 {
+            (nx.wrapping_neg(), ny.wrapping_neg(), area2.wrapping_neg())
+        } else {
+            (nx, ny, area2)
+        }
+    }
+
     /// The plane through `a` (value `v0`) with gradient numerators `nx << shift`, `ny << shift`
     /// over `area2`.
     #[inline(always)]
     fn from_numerators(a: ScreenPoint, v0: i64, nx: i64, ny: i64, shift: u32, area2: i64) -> Plane {
-        let (nx, ny, den) = if area2 < 0 {
-            (nx.wrapping_neg(), ny.wrapping_neg(), area2.wrapping_neg())
-        } else {
-            (nx, ny, area2)
-        };
+        let (nx, ny, den) = Plane::over_positive_area(nx, ny, area2);
         let by_area = DivideBy::new(den);
         let (gx, gy) = (
             by_area.round_shifted(nx, shift),

@@ -21,7 +21,9 @@ mod sealed {
 /// A stored depth format: 0 is the near plane, `FAR` the far plane (and the cleared value).
 ///
 /// Depth reaches the buffer through one conversion from the interpolator (a Q1.44 value where
-/// 2⁴⁴ is the far plane), rounded to nearest and saturated, never wrapped (rule R7).
+/// 2⁴⁴ is the far plane), rounded to nearest and saturated, never wrapped (rule R7); u16 spans
+/// of triangles that need no clamping take it from a 32-bit walk of the plane instead
+/// (within 2⁻³ of a step of the plane), rounded to nearest.
 pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
     /// The far plane, and the value a cleared buffer holds.
     const FAR: Self;
@@ -243,16 +245,16 @@ fn loop_step(step: i64) -> i64 {
 /// triangles (2⁻³ of a u16 step; the stored depth stays within one step of the plane, rule
 /// R7, and is the exact plane's rounding at 99.6% of the pixels of the test below, triangles
 /// up to a thousand pixels across), and the walk depends on nothing but the triangle, so a
-/// band draws what the whole frame draws. The exact start it replaces took the plane in Q1.44 (two divisions with
-/// 64-bit quotients: on Cortex-M0 four reciprocal steps, which these two 32-bit quotients
-/// halve), its value at each span's first pixel (a 64-bit product and shift on the M4 and
-/// x86-64, two 32-bit products and six words of quotients and remainders on the M0) and a
-/// second rounding of its step.
+/// band draws what the whole frame draws. The exact start it replaces took the plane in
+/// Q1.44 (two divisions with 64-bit quotients: on Cortex-M0 four two-by-one steps of the
+/// reciprocal division, where these two 32-bit quotients take two), its value at each span's
+/// first pixel (a 64-bit product and shift on the M4 and x86-64, two 32-bit products and six
+/// words of quotients and remainders on the M0) and a second rounding of its step.
 ///
 /// 64-bit hosts hold the same values shifted up by 13 bits in 64-bit words, so that their
-/// loop takes the form of a 64-bit product and shift (in 32-bit words it kept its colour and
-/// step on the stack: 4.2% more instructions on x86-64). The sums stay far below 2⁶³, so
-/// shifting back and truncating to 32 bits gives the same values on every core (rule R10).
+/// loop takes the form of a 64-bit product and shift (in 32-bit words the torus measured
+/// 1.7% more instructions on x86-64). The sums stay far below 2⁶³, so shifting back and
+/// truncating to 32 bits gives the same values on every core (rule R10).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RoundedRows<W: LoopWord = NativeWord> {
     /// The start at column 0 on the current row (as `W` holds values).
@@ -327,11 +329,7 @@ impl<W: LoopWord> RoundedRows<W> {
     #[inline]
     pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
         let (nx, ny) = Plane::numerators(p, z);
-        let (nx, ny, den) = if area < 0 {
-            (nx.wrapping_neg(), ny.wrapping_neg(), area.wrapping_neg())
-        } else {
-            (nx, ny, area)
-        };
+        let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
         // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area.
         let by_area = DivideBy::new(den);
         let sx = i32::try_from(by_area.round_shifted(nx, 5)).ok()?;
