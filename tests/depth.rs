@@ -11,7 +11,7 @@ use fixed3d::mesh::{Mesh, Object};
 use fixed3d::pipeline::{Cull, ScreenVertex, Stats};
 use fixed3d::scene::{LightColor, Lighting, Scene};
 use fixed3d::shade::Unlit;
-use fixed3d::target::{ColorDepth, DepthBuffer, DepthTest, FrameBuffer};
+use fixed3d::target::{ColorDepth, DepthBuffer, DepthTest, FrameBuffer, Less, LessOrEqual};
 use proptest::prelude::*;
 
 const RED: Rgb888 = Rgb888::new(255, 0, 0);
@@ -25,7 +25,7 @@ struct Rendered {
 }
 
 /// Renders triangle lists as objects (one colour each) with a u16 depth buffer.
-fn render(s: &Setup, objects: &[(Vec<[V3; 3]>, Rgb888)], test: DepthTest) -> Rendered {
+fn render<T: DepthTest>(s: &Setup, objects: &[(Vec<[V3; 3]>, Rgb888)], test: T) -> Rendered {
     let data: Vec<(Vec<fixed3d::math::Vec3>, Vec<[u16; 3]>)> = objects
         .iter()
         .map(|(tris, _)| {
@@ -81,14 +81,12 @@ fn setup() -> Setup {
 fn t21_same_triangle_twice() {
     let s = setup();
     let t = vec![[[-1.0, -1.0, -3.0], [1.5, -0.7, -4.0], [0.2, 1.3, -5.0]]];
-    let once = render(&s, &[(t.clone(), RED)], DepthTest::Less)
-        .stats
-        .written;
+    let once = render(&s, &[(t.clone(), RED)], Less).stats.written;
     assert!(once > 500);
-    let less = render(&s, &[(t.clone(), RED), (t.clone(), BLUE)], DepthTest::Less);
+    let less = render(&s, &[(t.clone(), RED), (t.clone(), BLUE)], Less);
     assert_eq!(less.stats.written, once);
     assert!(less.color.iter().all(|&c| c != Rgb565::from(BLUE)));
-    let le = render(&s, &[(t.clone(), RED), (t, BLUE)], DepthTest::LessOrEqual);
+    let le = render(&s, &[(t.clone(), RED), (t, BLUE)], LessOrEqual);
     assert_eq!(le.stats.written, 2 * once);
     assert!(le.color.iter().all(|&c| c != Rgb565::from(RED)));
 }
@@ -103,11 +101,7 @@ fn t22_interpenetrating_triangles() {
     // Tilted 30 degrees about the x axis through z = -4.
     let tilt = |x: f64, y: f64| [x, y * a30.cos(), -4.0 - y * a30.sin()];
     let tilted = vec![[tilt(-1.8, -2.0), tilt(1.8, -2.0), tilt(0.3, 2.0)]];
-    let r = render(
-        &s,
-        &[(flat.clone(), RED), (tilted.clone(), BLUE)],
-        DepthTest::Less,
-    );
+    let r = render(&s, &[(flat.clone(), RED), (tilted.clone(), BLUE)], Less);
     let cam = s.camera();
     let pa = cam.project_triangle(flat[0].map(|p| back(q(p))));
     let pb = cam.project_triangle(tilted[0].map(|p| back(q(p))));
@@ -145,7 +139,7 @@ fn t23_parallel_planes_far_away() {
         [(plane(-50.0), RED), (plane(-51.0), BLUE)],
         [(plane(-51.0), BLUE), (plane(-50.0), RED)],
     ] {
-        let r = render(&s, &order, DepthTest::Less);
+        let r = render(&s, &order, Less);
         let red = r.color.iter().filter(|&&c| c == Rgb565::from(RED)).count();
         let blue = r.color.iter().filter(|&&c| c == Rgb565::from(BLUE)).count();
         assert!(red > 1000);
@@ -164,7 +158,7 @@ fn t24_beyond_far_and_at_near() {
         [[-3.0, -1.0, -1.0], [3.0, -1.0, -1.0], [3.0, -1.0, -40.0]],
         [[-3.0, -1.0, -1.0], [3.0, -1.0, -40.0], [-3.0, -1.0, -40.0]],
     ];
-    let r = render(&s, &[(strip, RED)], DepthTest::Less);
+    let r = render(&s, &[(strip, RED)], Less);
     assert!(r.stats.clipped >= 2);
     // Depth down each column (towards the horizon) never decreases.
     for x in 0..s.w as usize {
@@ -236,7 +230,7 @@ fn t25_steep_wide_triangle_depth_on_plane() {
     s.near = 1.0;
     s.far = 10.0;
     let t = vec![[[-1.1, -0.8, -1.05], [9.0, 0.2, -9.9], [-0.5, 0.7, -1.1]]];
-    let r = render(&s, &[(t, RED)], DepthTest::Less);
+    let r = render(&s, &[(t, RED)], Less);
     assert_eq!(r.stats.clipped, 0);
     let n = assert_depth_on_plane(&s, &r);
     assert!(n > 5000, "{n} pixels");
@@ -250,7 +244,7 @@ proptest! {
     fn m4_depth_within_one_lsb(c in prop::array::uniform9(-3.0f64..3.0), zs in prop::array::uniform3(-9.0f64..-1.2)) {
         let s = setup();
         let t = vec![[[c[0], c[1], zs[0]], [c[3], c[4], zs[1]], [c[6], c[7], zs[2]]]];
-        let r = render(&s, &[(t, RED)], DepthTest::Less);
+        let r = render(&s, &[(t, RED)], Less);
         if r.stats.clipped == 0 {
             assert_depth_on_plane(&s, &r);
         }
@@ -269,7 +263,7 @@ fn t36_depth_along_2048_pixel_spans() {
     s.far = 10.0;
     // Nearly edge-on from left (near) to right (far), wider than the screen.
     let t = vec![[[-9.0, -0.1, -1.3], [70.0, -0.8, -9.5], [-8.5, 0.1, -1.2]]];
-    let r = render(&s, &[(t, RED)], DepthTest::Less);
+    let r = render(&s, &[(t, RED)], Less);
     assert_eq!(r.stats.clipped, 0);
     let n = assert_depth_on_plane(&s, &r);
     assert!(n > 10_000, "{n} pixels");

@@ -16,7 +16,7 @@ mod framebuffer;
 mod grid;
 mod surface;
 
-pub use depth::{DepthBuffer, DepthFormat, DepthTest};
+pub use depth::{DepthBuffer, DepthFormat, DepthTest, Less, LessOrEqual};
 pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;

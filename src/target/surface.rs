@@ -5,7 +5,7 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 
-use super::depth::{DepthBuffer, DepthFormat, DepthTest, NativeWord, RoundedRows};
+use super::depth::{DepthBuffer, DepthFormat, DepthTest, Less, NativeWord, RoundedRows};
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
@@ -64,7 +64,7 @@ pub trait RasterTarget {
 }
 
 /// A colour buffer and a depth buffer of the same size, z-buffered filling: a fragment is
-/// written when it passes the [`DepthTest`] (strictly nearer, by default).
+/// written when it passes the [`DepthTest`] `T` ([`Less`], strictly nearer, by default).
 ///
 /// For a band, the buffers hold rows `first_row..first_row + height` of the frame; render
 /// every band of a frame and the result is identical to the whole frame at once.
@@ -80,11 +80,11 @@ pub trait RasterTarget {
 /// assert_eq!(band.clip(), PixelRect::new(0, 32, 320, 48)); // frame rows 32..48
 /// ```
 #[derive(Debug)]
-pub struct ColorDepth<'t, 'a, C, D, Q = Nearest> {
+pub struct ColorDepth<'t, 'a, C, D, Q = Nearest, T = Less> {
     color: &'t mut FrameBuffer<'a, C>,
     depth: &'t mut DepthBuffer<'a, D>,
     first_row: i32,
-    test: DepthTest,
+    test: T,
     quantize: Q,
 }
 
@@ -111,22 +111,39 @@ impl<'t, 'a, C: PixelColor + From<Rgb888>, D: DepthFormat> ColorDepth<'t, 'a, C,
             color,
             depth,
             first_row,
-            test: DepthTest::Less,
+            test: Less,
             quantize: Nearest,
         })
     }
 }
 
-impl<'t, 'a, C, D, Q> ColorDepth<'t, 'a, C, D, Q> {
-    /// With another depth test.
+impl<'t, 'a, C, D, Q, T> ColorDepth<'t, 'a, C, D, Q, T> {
+    /// With another depth test ([`LessOrEqual`](super::LessOrEqual): the last of two equal
+    /// depths stays).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer, LessOrEqual};
+    /// let (mut c, mut d) = ([Rgb565::new(0, 0, 0); 16], [u16::MAX; 16]);
+    /// let mut color = FrameBuffer::new(&mut c, 4, 4).unwrap();
+    /// let mut depth = DepthBuffer::new(&mut d, 4, 4).unwrap();
+    /// let target = ColorDepth::new(&mut color, &mut depth).unwrap().with_test(LessOrEqual);
+    /// # let _ = target;
+    /// ```
     #[must_use]
-    pub fn with_test(self, test: DepthTest) -> Self {
-        ColorDepth { test, ..self }
+    pub fn with_test<U: DepthTest>(self, test: U) -> ColorDepth<'t, 'a, C, D, Q, U> {
+        ColorDepth {
+            color: self.color,
+            depth: self.depth,
+            first_row: self.first_row,
+            test,
+            quantize: self.quantize,
+        }
     }
 
     /// With ordered dithering (for 1-bit, grey and 16-bit displays).
     #[must_use]
-    pub fn dithered(self) -> ColorDepth<'t, 'a, C, D, OrderedDither> {
+    pub fn dithered(self) -> ColorDepth<'t, 'a, C, D, OrderedDither, T> {
         ColorDepth {
             color: self.color,
             depth: self.depth,
@@ -137,10 +154,11 @@ impl<'t, 'a, C, D, Q> ColorDepth<'t, 'a, C, D, Q> {
     }
 }
 
-impl<C, D, Q> ColorDepth<'_, '_, C, D, Q>
+impl<C, D, Q, T> ColorDepth<'_, '_, C, D, Q, T>
 where
     C: PixelColor,
     D: DepthFormat,
+    T: DepthTest,
 {
     /// Depth-tests the spans of one triangle; `colors_for(span)` gives the colour of each of
     /// the span's pixels in turn.
@@ -152,7 +170,7 @@ where
         stats: &mut Stats,
         colors_for: impl FnMut(Span) -> G,
     ) {
-        let (y, test) = (spans.row(), self.test);
+        let y = spans.row();
         // Decided once per triangle: spans whose depths need no clamping, in 32-bit words
         // from a walk set up at the triangle's own vertex (see `RoundedRows`), so that a band
         // starts them as the whole frame does.
@@ -164,7 +182,7 @@ where
         match unclamped {
             Some((rows, st)) => {
                 self.each_span(spans, rows, stats, colors_for, |ds, cs, start, g, w| {
-                    D::test_span_unclamped(ds, cs, start, st, test, g, w)
+                    D::test_span_unclamped::<C, T>(ds, cs, start, st, g, w)
                 });
             }
             None => {
@@ -176,7 +194,7 @@ where
                     plane.rows(0, y),
                     stats,
                     colors_for,
-                    |ds, cs, start, g, w| D::test_span(ds, cs, start, step, test, g, w),
+                    |ds, cs, start, g, w| D::test_span::<C, T>(ds, cs, start, step, g, w),
                 )
             }
         }
@@ -232,11 +250,12 @@ where
     }
 }
 
-impl<C, D, Q> RasterTarget for ColorDepth<'_, '_, C, D, Q>
+impl<C, D, Q, T> RasterTarget for ColorDepth<'_, '_, C, D, Q, T>
 where
     C: PixelColor + From<Rgb888>,
     D: DepthFormat,
     Q: Quantize<C>,
+    T: DepthTest,
 {
     type Error = core::convert::Infallible;
     const DEPTH: bool = true;
