@@ -13,6 +13,11 @@ use fixed3d::shade::{Flat, Unlit};
 use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
 fn render_flat(data: &TorusData) -> (Vec<Rgb565>, Stats) {
+    render_flat_counted(data, true)
+}
+
+/// The flat torus into a target that counts fragments or not.
+fn render_flat_counted(data: &TorusData, counted: bool) -> (Vec<Rgb565>, Stats) {
     let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
     let objects = [Object::new(&mesh, identity(), BASE)];
     let scene = Scene::new(&objects, lighting());
@@ -23,9 +28,12 @@ fn render_flat(data: &TorusData) -> (Vec<Rgb565>, Stats) {
     let mut color = FrameBuffer::new(&mut c, 320, 240).unwrap();
     let mut depth = DepthBuffer::new(&mut d, 320, 240).unwrap();
     depth.clear();
-    let stats = prepared
-        .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
-        .unwrap();
+    let mut target = ColorDepth::new(&mut color, &mut depth).unwrap();
+    let stats = if counted {
+        prepared.draw(&mut target).unwrap()
+    } else {
+        prepared.draw(&mut target.uncounted()).unwrap()
+    };
     (c, stats)
 }
 
@@ -40,6 +48,25 @@ fn torus_counts_match_the_reference() {
     assert!((stats.fragments as i64 - 30_980).abs() <= 31, "{stats:?}");
     assert!((stats.written as i64 - 28_935).abs() <= 29, "{stats:?}");
     assert_eq!(stats.culled + stats.drawn, 2304);
+}
+
+/// A target that does not count fragments draws the same frame, with the same triangle
+/// statistics and no fragment counts.
+#[test]
+fn uncounted_target_draws_the_same_frame() {
+    let data = torus_f64();
+    let (counted, stats) = render_flat(&data);
+    let (uncounted, bare) = render_flat_counted(&data, false);
+    assert_eq!(counted, uncounted);
+    assert_eq!((bare.fragments, bare.written), (0, 0));
+    assert_eq!(
+        Stats {
+            fragments: 0,
+            written: 0,
+            ..stats
+        },
+        bare
+    );
 }
 
 #[test]

@@ -16,7 +16,9 @@ mod framebuffer;
 mod grid;
 mod surface;
 
-pub use depth::{DepthBuffer, DepthFormat, DepthTest, Less, LessOrEqual};
+pub use depth::{
+    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LessOrEqual, Uncounted,
+};
 pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;

@@ -5,7 +5,10 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 
-use super::depth::{DepthBuffer, DepthFormat, DepthTest, Less, NativeWord, RoundedRows};
+use super::depth::{
+    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
+    Uncounted,
+};
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
@@ -64,7 +67,8 @@ pub trait RasterTarget {
 }
 
 /// A colour buffer and a depth buffer of the same size, z-buffered filling: a fragment is
-/// written when it passes the [`DepthTest`] `T` ([`Less`], strictly nearer, by default).
+/// written when it passes the [`DepthTest`] `T` ([`Less`], strictly nearer, by default), and
+/// fragments and writes are counted into [`Stats`] unless `K` is [`Uncounted`].
 ///
 /// For a band, the buffers hold rows `first_row..first_row + height` of the frame; render
 /// every band of a frame and the result is identical to the whole frame at once.
@@ -80,12 +84,13 @@ pub trait RasterTarget {
 /// assert_eq!(band.clip(), PixelRect::new(0, 32, 320, 48)); // frame rows 32..48
 /// ```
 #[derive(Debug)]
-pub struct ColorDepth<'t, 'a, C, D, Q = Nearest, T = Less> {
+pub struct ColorDepth<'t, 'a, C, D, Q = Nearest, T = Less, K = Counted> {
     color: &'t mut FrameBuffer<'a, C>,
     depth: &'t mut DepthBuffer<'a, D>,
     first_row: i32,
     test: T,
     quantize: Q,
+    count: K,
 }
 
 impl<'t, 'a, C: PixelColor + From<Rgb888>, D: DepthFormat> ColorDepth<'t, 'a, C, D, Nearest> {
@@ -113,11 +118,12 @@ impl<'t, 'a, C: PixelColor + From<Rgb888>, D: DepthFormat> ColorDepth<'t, 'a, C,
             first_row,
             test: Less,
             quantize: Nearest,
+            count: Counted,
         })
     }
 }
 
-impl<'t, 'a, C, D, Q, T> ColorDepth<'t, 'a, C, D, Q, T> {
+impl<'t, 'a, C, D, Q, T, K> ColorDepth<'t, 'a, C, D, Q, T, K> {
     /// With another depth test ([`LessOrEqual`](super::LessOrEqual): the last of two equal
     /// depths stays).
     ///
@@ -131,34 +137,61 @@ impl<'t, 'a, C, D, Q, T> ColorDepth<'t, 'a, C, D, Q, T> {
     /// # let _ = target;
     /// ```
     #[must_use]
-    pub fn with_test<U: DepthTest>(self, test: U) -> ColorDepth<'t, 'a, C, D, Q, U> {
+    pub fn with_test<U: DepthTest>(self, test: U) -> ColorDepth<'t, 'a, C, D, Q, U, K> {
         ColorDepth {
             color: self.color,
             depth: self.depth,
             first_row: self.first_row,
             test,
             quantize: self.quantize,
+            count: self.count,
+        }
+    }
+
+    /// Without counting fragments and writes ([`Stats::fragments`] and [`Stats::written`] stay
+    /// 0; see [`FragmentCount`] for what the counts cost).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+    /// let (mut c, mut d) = ([Rgb565::new(0, 0, 0); 16], [u16::MAX; 16]);
+    /// let mut color = FrameBuffer::new(&mut c, 4, 4).unwrap();
+    /// let mut depth = DepthBuffer::new(&mut d, 4, 4).unwrap();
+    /// let target = ColorDepth::new(&mut color, &mut depth).unwrap().uncounted();
+    /// # let _ = target;
+    /// ```
+    #[must_use]
+    pub fn uncounted(self) -> ColorDepth<'t, 'a, C, D, Q, T, Uncounted> {
+        ColorDepth {
+            color: self.color,
+            depth: self.depth,
+            first_row: self.first_row,
+            test: self.test,
+            quantize: self.quantize,
+            count: Uncounted,
         }
     }
 
     /// With ordered dithering (for 1-bit, grey and 16-bit displays).
     #[must_use]
-    pub fn dithered(self) -> ColorDepth<'t, 'a, C, D, OrderedDither, T> {
+    pub fn dithered(self) -> ColorDepth<'t, 'a, C, D, OrderedDither, T, K> {
         ColorDepth {
             color: self.color,
             depth: self.depth,
             first_row: self.first_row,
             test: self.test,
             quantize: OrderedDither,
+            count: self.count,
         }
     }
 }
 
-impl<C, D, Q, T> ColorDepth<'_, '_, C, D, Q, T>
+impl<C, D, Q, T, K> ColorDepth<'_, '_, C, D, Q, T, K>
 where
     C: PixelColor,
     D: DepthFormat,
     T: DepthTest,
+    K: FragmentCount,
 {
     /// Depth-tests the spans of one triangle; `colors_for(span)` gives the colour of each of
     /// the span's pixels in turn.
@@ -182,7 +215,7 @@ where
         match unclamped {
             Some((rows, st)) => {
                 self.each_span(spans, rows, stats, colors_for, |ds, cs, start, g, w| {
-                    D::test_span_unclamped::<C, T>(ds, cs, start, st, g, w)
+                    D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w)
                 });
             }
             None => {
@@ -194,7 +227,7 @@ where
                     plane.rows(0, y),
                     stats,
                     colors_for,
-                    |ds, cs, start, g, w| D::test_span::<C, T>(ds, cs, start, step, g, w),
+                    |ds, cs, start, g, w| D::test_span::<C, T, K>(ds, cs, start, step, g, w),
                 )
             }
         }
@@ -234,7 +267,9 @@ where
                 // One check: both buffers are `n` long, so the second range is the first's.
                 if let Some(cs) = colors.get_mut(first..end) {
                     if let Some(ds) = depths.get_mut(first..end) {
-                        fragments = fragments.wrapping_add(cs.len() as u32);
+                        if K::COUNTED {
+                            fragments = fragments.wrapping_add(cs.len() as u32);
+                        }
                         let g = colors_for(Span { y, x0, x1 });
                         failed = test_span(ds, cs, depth.at(x0), g, failed);
                     }
@@ -250,12 +285,13 @@ where
     }
 }
 
-impl<C, D, Q, T> RasterTarget for ColorDepth<'_, '_, C, D, Q, T>
+impl<C, D, Q, T, K> RasterTarget for ColorDepth<'_, '_, C, D, Q, T, K>
 where
     C: PixelColor + From<Rgb888>,
     D: DepthFormat,
     Q: Quantize<C>,
     T: DepthTest,
+    K: FragmentCount,
 {
     type Error = core::convert::Infallible;
     const DEPTH: bool = true;
