@@ -7,6 +7,8 @@
 //!
 //! One frame is `clear_buffers` (colour and depth) then `draw_scene` (vertex stage, culling,
 //! shading, rasterising); both are `#[inline(never)]` so that a profiler can count them apart.
+//! The target counts no fragments (the scene needs no counts) unless the example is built with
+//! `TORUS_BENCH_COUNTED` set (see [`COUNTED`]).
 //! The same scene is then drawn by the crate's f64 reference renderer, timed side by side.
 
 #[path = "common/reference.rs"]
@@ -33,6 +35,13 @@ fn clear_buffers(color: &mut [Rgb565], depth: &mut [u16]) {
     depth.fill(u16::MAX);
 }
 
+/// Built with `TORUS_BENCH_COUNTED` set in the environment, the frames are drawn into a target
+/// that counts fragments and writes (`bench/host.sh` measures what the counts cost); otherwise
+/// into one that does not, as the scene needs none. A constant, not a run-time switch: a binary
+/// with both targets' code would inline differently.
+const COUNTED: bool = option_env!("TORUS_BENCH_COUNTED").is_some();
+
+/// One frame's drawing: what bench/SCENE.md times.
 #[inline(never)]
 fn draw_scene(
     frame: &Frame,
@@ -48,10 +57,15 @@ fn draw_scene(
     ) else {
         return Stats::default();
     };
-    match ColorDepth::new(&mut c, &mut d) {
-        Ok(mut target) => prepared.draw(&mut target).unwrap_or_default(),
-        Err(_) => Stats::default(),
-    }
+    let Ok(mut target) = ColorDepth::new(&mut c, &mut d) else {
+        return Stats::default();
+    };
+    let stats = if COUNTED {
+        prepared.draw(&mut target)
+    } else {
+        prepared.draw(&mut target.uncounted())
+    };
+    stats.unwrap_or_default()
 }
 
 fn main() {
@@ -102,12 +116,18 @@ fn main() {
     }
     times.sort();
     let covered = color.iter().filter(|&&c| c != Rgb565::BLACK).count();
+    let fragments = if COUNTED {
+        format!(
+            ", {} fragments tested, {} written",
+            stats.fragments, stats.written
+        )
+    } else {
+        String::from(" (fragments not counted)")
+    };
     println!(
-        "torus 320x240: {n} frames, median {} us per frame; covered {covered} pixels, {} triangles drawn, {} fragments tested, {} written",
+        "torus 320x240: {n} frames, median {} us per frame; covered {covered} pixels, {} triangles drawn{fragments}",
         times[n / 2].as_micros(),
         stats.drawn,
-        stats.fragments,
-        stats.written
     );
     if std::env::var_os("NO_REFERENCE").is_none() {
         reference_side_by_side(&p, &t, model, n.min(20), times[n / 2]);

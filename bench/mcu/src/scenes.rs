@@ -197,7 +197,7 @@ pub fn depth_frame<const N: usize, S: fixed3d::shade::Shading, D: DepthFormat>(
         FrameBuffer::new(color, W, H).ok()?,
         DepthBuffer::new(depth, W, H).ok()?,
     );
-    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?)
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?.uncounted())
         .ok()
         .map(|_| ())
 }
@@ -268,7 +268,7 @@ pub fn bands_into(
         );
         c.fill(Rgb565::BLACK);
         d.clear();
-        p.draw(&mut ColorDepth::band(&mut c, &mut d, y0).ok()?)
+        p.draw(&mut ColorDepth::band(&mut c, &mut d, y0).ok()?.uncounted())
             .ok()?;
         hash.pixels(c.pixels());
         send(c.pixels(), y0, rows);
@@ -373,7 +373,7 @@ pub fn mono(
     );
     c.fill(BinaryColor::Off);
     d.clear();
-    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?.dithered())
+    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?.dithered().uncounted())
         .ok()
         .map(|_| ())
 }
