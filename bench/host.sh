@@ -18,8 +18,14 @@ fi
 # The headline count from a build made as the firmware is (one codegen unit, fat LTO: the
 # `bench-lto` profile); the stage breakdown from the default release build, whose function
 # boundaries the breakdown needs (fat LTO inlines most of them).
+# First the same frame into a target that counts fragments and writes (the example's
+# TORUS_BENCH_COUNTED, a constant: see examples/torus_bench.rs), for what the counts cost.
+TORUS_BENCH_COUNTED=1 cargo build --profile bench-lto --example torus_bench
+cp target/bench-lto/examples/torus_bench target/bench-lto/examples/torus_bench_counted
 cargo build --release --example torus_bench
 cargo build --profile bench-lto --example torus_bench
+counted_out=target/callgrind.torus-counted
+counted_line=$(NO_REFERENCE=1 valgrind --tool=callgrind --callgrind-out-file="$counted_out" target/bench-lto/examples/torus_bench_counted "$frames" 2>/dev/null)
 lto_out=target/callgrind.torus-lto
 line=$(NO_REFERENCE=1 valgrind --tool=callgrind --callgrind-out-file="$lto_out" target/bench-lto/examples/torus_bench "$frames" 2>/dev/null)
 out=target/callgrind.torus
@@ -30,15 +36,17 @@ ir() { # inclusive instructions of the first function whose name ends with $2, i
         awk -v f="$2" '{ name = $0; sub(/ \[.*$/, "", name) } name ~ (f "$") { gsub(",", "", $1); print $1; exit }'
 }
 headline=$(ir "$lto_out" "torus_bench::draw_scene"); clear=$(ir "$lto_out" "torus_bench::clear_buffers")
+counted=$(ir "$counted_out" "torus_bench::draw_scene")
 draw=$(ir "$out" "torus_bench::draw_scene")
 prepare=$(ir "$out" "pipeline::Frame::prepare"); walk=$(ir "$out" "Prepared<_,S>>::draw"); face=$(ir "$out" "Prepared<_,S>>::fill_face")
 fill=$(ir "$out" "pipeline::draw::fill"); spans=$(ir "$out" "raster::triangle::spans_in_range")
 shading=$(ir "$out" "Shading>::paint")
 timing=$(target/bench-lto/examples/torus_bench 200)
 report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$covered" -v pr="${prepare:-0}" -v wk="${walk:-0}" \
-    -v fc="${face:-0}" -v fl="${fill:-0}" -v sp="${spans:-0}" -v sh="${shading:-0}" 'BEGIN {
+    -v fc="${face:-0}" -v fl="${fill:-0}" -v sp="${spans:-0}" -v sh="${shading:-0}" -v ct="$counted" 'BEGIN {
     f = 1 / n;
     printf "draw_scene: %.3f M instructions per frame, %.1f per covered pixel (clear_buffers: %.3f M)\n\n", h*f/1e6, h*f/px, c*f/1e6;
+    printf "Into a target that counts fragments and writes (without \x60.uncounted()\x60): %.3f M (%+.1f%%)\n\n", ct*f/1e6, 100*(ct-h)/h;
     printf "Where they go, in the default release build (%.3f M per frame: several codegen units, no\nLTO, the stages\x27 functions kept apart):\n\n", d*f/1e6;
     printf "| stage | instructions per frame | share |\n|---|---:|---:|\n";
     row("vertex stage (transform, outcodes, projection), once per vertex", pr);
@@ -50,6 +58,7 @@ report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$
     row("rest of draw_scene", d - pr - wk);
 }
 function row(name, v) { printf "| %s | %.0f | %.1f%% |\n", name, v * f, 100 * v / d }')
+echo "$counted_line"
 echo "$line"
 echo "$report"
 echo "$timing"
@@ -70,7 +79,9 @@ release build splits the crate into several codegen units and links without LTO;
 given beside the stage breakdown, which needs the function boundaries it keeps, and it moves by
 about 1% when code moves between modules (what is inlined depends on the split). The scene is
 bench/SCENE.md's tilted torus at 320x240: flat Lambert, u16 depth, back faces culled; one frame
-is the drawing, clears excluded.
+is the drawing, clears excluded, into a target that counts no fragments (\`ColorDepth::uncounted\`:
+the scene needs no counts, and the firmware presets draw the same way; what counting them
+costs is given below the headline).
 
 ## x86-64
 
@@ -115,10 +126,15 @@ $stages
   walk of \`RoundedRows\`, below, freed a register, which the compiler gave the colour in
   one build of this round and not in the next, with the walk's later changes: about 1.5% of
   the frame); and on Cortex-M depths are compared in 32 bits so
-  that the stored halfword needs no masking). Only the fragments that fail are counted, one count
-  carried through every span of a triangle (writes are the fragments less the failures): a
+  that the stored halfword needs no masking). A target that counts fragments (the default,
+  for \`Stats\`) adds each span's length and counts the fragments that fail, one count
+  carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.6% fewer
+  instructions per frame, the M0 2.2%, x86-64 0.9% (the counts held registers in the row
+  loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
+  it cost a load and a branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
+  the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
   frame); the pixels now take about 0.35 M there.
@@ -153,10 +169,10 @@ $stages
   cost more than the rows saved: 6.5% and 5.2% more per frame, 900 bytes more flash (the row
   step went from 28 instructions to 16, but each edge's set-up took 22 more, and the
   triangle's own about 77 more: copies of the wider steppers, the re-seeding checks). About
-  61 instructions per row with pixels on the M4 (35 for every row, 26 more for its span;
-  69 before \`DivideStepper\`), where the arithmetic needs about 35: the rest moves the
-  row's state (the depth walk, the clip columns, the buffers, the counts) between registers
-  and the stack around the pixel loop. On Cortex-M the rows run
+  42 instructions per row with pixels on the M4 (30 for every row, 12 more for its span;
+  61 while fragments were counted, 69 before \`DivideStepper\`), where the arithmetic needs
+  about 25: the rest moves the row's state (the edges, the depth walk, the clip column, the
+  buffers) between registers and the stack around the pixel loop. On Cortex-M the rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
   below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
   state between stack slots, 26 instructions a run on the M0 (one loop: 0.7% fewer

@@ -28,7 +28,7 @@ BB = "core::hint::black_box"
 # (the script stops otherwise: update it with the code).
 CUTS = [
     ("pixels (depth test and writes)", "everything", []),
-    ("span entry (bounds check, depth start, counts)", "no pixel loops", [(
+    ("span entry (bounds check, depth start)", "no pixel loops", [(
         "src/target/depth.rs",
         "    let (mut acc, st) = (acc as u32, st as u32);\n"
         "    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {",
