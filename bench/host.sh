@@ -247,12 +247,16 @@ $stages
 - **The goals**: with the pixels at what they take now (0.35 M on the M4), 1.0 M leaves
   0.65 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, two fifths of what they take now. The largest excess found is per drawn triangle: on
-  the M4 about 615 instructions (fill set-up, set-up, shading and inputs in the table above)
+  the M4 about 620 instructions (fill set-up, set-up, shading and inputs in the table above)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
   dozens of pieces of 5 to 25 instructions: about 0.28 M. Next come the rows' register
-  traffic, worth at most about 0.28 M on the M4 (rows and span entries, 0.54 M, at the 35
-  instructions a row their arithmetic needs). On the M0 the vertex stage (0.72 M, about 630
+  traffic, worth at most about 0.28 M on the M4 (rows and span entries, 0.47 M, at the 25
+  instructions a row their arithmetic needs). Hand-written Thumb-2 would take some of it:
+  the pixel loop alone in inline assembly (ten instructions a pixel, predicated stores, the
+  failure count in the same IT block) measured 3.4% fewer instructions on the M4 (before
+  the counts became optional), but it needs \`unsafe\`, which the crate forbids, and it cannot
+  serve the M0 (Thumb-1 inline assembly gets six registers, the loop needs nine). On the M0 the vertex stage (0.72 M, about 630
   a vertex, of which the transform and the divisions by w take about 200 each) and the depth
   walk's two divisions (6.6% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
