@@ -8,7 +8,9 @@
     clippy::expect_used,
     clippy::panic
 )]
-#![forbid(unsafe_code)]
+// Without the `asm` feature no `unsafe` at all; with it, only target::thumb2's pixel loop.
+#![cfg_attr(not(feature = "asm"), forbid(unsafe_code))]
+#![cfg_attr(feature = "asm", deny(unsafe_code))]
 #![cfg_attr(test, allow(clippy::unwrap_used, clippy::expect_used, clippy::panic))]
 #![doc(test(attr(deny(warnings))))]
 

@@ -39,6 +39,9 @@ else
     TARGETS=${TARGETS:-"thumbv6m-none-eabi thumbv7em-none-eabihf"}
     PRESETS=${PRESETS:-"wire flat full gouraud bands obj display"}
     features=()
+    # ASM=0: without the library's `asm` feature (the Thumb-2 pixel loop), which the presets
+    # have by default.
+    [[ ${ASM:-1} == 0 ]] && features=(--no-default-features --features board-mps2)
 fi
 # `knobs` (every configuration of docs/accuracy.md) needs micromath; ask for it alone, as the
 # other presets would then be built with it too.

@@ -36,6 +36,12 @@ CUTS = [
         f"    if {BB}(true) {{ let _ = (&mut next_color, st, acc, depths.len(), colors.len()); "
         f"return {BB}(failed); }}\n"
         "    for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {",
+    ), (
+        # The `asm` feature's Thumb-2 loop (the M4F's presets have it).
+        "src/target/thumb2.rs",
+        "    let d = depths.as_mut_ptr().wrapping_add(n);",
+        f"    if {BB}(true) {{ let _ = (st, acc, bits); return {BB}(failed); }}\n"
+        "    let d = depths.as_mut_ptr().wrapping_add(n);",
     )]),
     ("rows (edge stepping, clipping, depth walk)", "no spans", [(
         "src/target/surface.rs",

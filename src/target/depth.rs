@@ -1,6 +1,8 @@
 //! Depth buffers: per-pixel depth in a caller-supplied `&mut [u16]` or `&mut [u32]`.
 
 use super::grid::{BufferError, Grid};
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+use super::thumb2;
 use crate::math::{mul_short, DivideBy, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 use crate::raster::{first_centre_from32, Plane, RowStarts, ScreenPoint};
 
@@ -43,7 +45,8 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
 
     /// [`test_span`](Self::test_span) for a span of a triangle that
     /// [`unclamped`](Self::unclamped) accepted: `start` and `step` in the 32-bit loop's unit,
-    /// 2⁻³¹ of the depth range (2⁻¹³ of the interpolator's), half a u16 step added.
+    /// 2⁻³¹ of the depth range (2⁻¹³ of the interpolator's), half a u16 step added; `solid`
+    /// is the span's one colour when it has one (`next_color` then gives it every time).
     #[doc(hidden)]
     #[inline(always)]
     fn test_span_unclamped<C: Copy, T: DepthTest, K: FragmentCount>(
@@ -51,9 +54,11 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         colors: &mut [C],
         start: i32,
         step: i32,
+        solid: Option<SolidColor<C>>,
         next_color: impl FnMut() -> C,
         failed: u32,
     ) -> u32 {
+        let _ = solid;
         // Formats without a fast path never hand out a step; this only keeps the contract.
         let start = ((start as i64) << DROPPED).wrapping_sub(HALF_STEP);
         Self::test_span::<C, T, K>(
@@ -145,7 +150,7 @@ impl DepthFormat for u16 {
             return clamped_span::<u16, C, T, K>(depths, colors, start, step, next_color, failed);
         }
         Self::test_span_unclamped::<C, T, K>(
-            depths, colors, a as i32, st as i32, next_color, failed,
+            depths, colors, a as i32, st as i32, None, next_color, failed,
         )
     }
 
@@ -165,11 +170,42 @@ impl DepthFormat for u16 {
         colors: &mut [C],
         acc: i32,
         st: i32,
+        solid: Option<SolidColor<C>>,
         next_color: impl FnMut() -> C,
         failed: u32,
     ) -> u32 {
         // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
+        #[cfg(all(feature = "asm", fixed3d_thumb2))]
+        if let Some(bits) = solid.and_then(|s| s.bits) {
+            return thumb2::solid_span::<C, T, K>(
+                depths, colors, acc as u32, st as u32, bits, failed,
+            );
+        }
+        let _ = solid;
         unclamped_u16::<C, T, K>(depths, colors, acc, st, next_color, failed)
+    }
+}
+
+/// A span's one colour, prepared once a triangle for the span loops that take it whole (with
+/// the `asm` feature on Thumb-2 cores: its two bytes as a word, see `thumb2`).
+#[doc(hidden)]
+#[derive(Clone, Copy, Debug)]
+pub struct SolidColor<C> {
+    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    bits: Option<u32>,
+    _color: core::marker::PhantomData<C>,
+}
+
+impl<C: Copy> SolidColor<C> {
+    /// Prepares `color`.
+    #[inline(always)]
+    pub(crate) fn new(color: &C) -> Self {
+        let _ = color;
+        SolidColor {
+            #[cfg(all(feature = "asm", fixed3d_thumb2))]
+            bits: thumb2::color_bits(color),
+            _color: core::marker::PhantomData,
+        }
     }
 }
 

@@ -15,6 +15,8 @@ mod dither;
 mod framebuffer;
 mod grid;
 mod surface;
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+mod thumb2;
 
 pub use depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LessOrEqual, Uncounted,

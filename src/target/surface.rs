@@ -7,7 +7,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
-    Uncounted,
+    SolidColor, Uncounted,
 };
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
@@ -194,13 +194,14 @@ where
     K: FragmentCount,
 {
     /// Depth-tests the spans of one triangle; `colors_for(span)` gives the colour of each of
-    /// the span's pixels in turn.
+    /// the span's pixels in turn, `solid` the triangle's one colour if it has one.
     #[inline(always)]
     fn depth_tested_spans<G: FnMut() -> C>(
         &mut self,
         spans: TriangleSpans,
         depth: &DepthPlane,
         stats: &mut Stats,
+        solid: Option<SolidColor<C>>,
         colors_for: impl FnMut(Span) -> G,
     ) {
         let y = spans.row();
@@ -215,7 +216,7 @@ where
         match unclamped {
             Some((rows, st)) => {
                 self.each_span(spans, rows, stats, colors_for, |ds, cs, start, g, w| {
-                    D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w)
+                    D::test_span_unclamped::<C, T, K>(ds, cs, start, st, solid, g, w)
                 });
             }
             None => {
@@ -314,11 +315,13 @@ where
             Some(rgb) if Q::UNIFORM => {
                 // One conversion per triangle.
                 let c = self.quantize.quantize(rgb, 0, 0);
-                self.depth_tested_spans(spans, depth, stats, |_| move || c);
+                self.depth_tested_spans(spans, depth, stats, Some(SolidColor::new(&c)), |_| {
+                    move || c
+                });
             }
             _ => {
                 let q = self.quantize;
-                self.depth_tested_spans(spans, depth, stats, |span| {
+                self.depth_tested_spans(spans, depth, stats, None, |span| {
                     let mut cursor = paint.cursor(span.x0, span.y);
                     let (mut x, y) = (span.x0, span.y);
                     move || {
