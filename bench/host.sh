@@ -120,13 +120,11 @@ $stages
 
 ## Where the rest goes, and what would take it
 
-- **Pixels**: a shift, a compare and two stores each (x86-64: about 9 instructions;
-  Cortex-M4 about 12, M0 about 11: on both cores the pixel loop's colour does not stay in a
-  register beside the row loop's state, one load a written pixel (on the M4 the 32-bit depth
-  walk of \`RoundedRows\`, below, freed a register, which the compiler gave the colour in
-  one build of this round and not in the next, with the walk's later changes: about 1.5% of
-  the frame); and on Cortex-M depths are compared in 32 bits so
-  that the stored halfword needs no masking). A target that counts fragments (the default,
+- **Pixels**: a shift, a compare and two stores each (x86-64: about 8 instructions; the
+  compiler's loop on the Cortex-M4 12, on the M0 about 11: on every core the colour does not
+  stay in a register beside the row loop's state, one load a written pixel; Cortex-M compares
+  depths in 32 bits so that the stored halfword needs no masking). On the M4 the \`asm\`
+  feature's hand-written loop, which the firmware presets have, takes nine. A target that counts fragments (the default,
   for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
@@ -252,11 +250,12 @@ $stages
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
   dozens of pieces of 5 to 25 instructions: about 0.28 M. Next come the rows' register
   traffic, worth at most about 0.28 M on the M4 (rows and span entries, 0.47 M, at the 25
-  instructions a row their arithmetic needs). Hand-written Thumb-2 would take some of it:
-  the pixel loop alone in inline assembly (ten instructions a pixel, predicated stores, the
-  failure count in the same IT block) measured 3.4% fewer instructions on the M4 (before
-  the counts became optional), but it needs \`unsafe\`, which the crate forbids, and it cannot
-  serve the M0 (Thumb-1 inline assembly gets six registers, the loop needs nine). On the M0 the vertex stage (0.72 M, about 630
+  instructions a row their arithmetic needs). The M4's pixels are already hand-written (the
+  \`asm\` feature, which the firmware presets have: nine instructions a pixel, both stores
+  predicated in one IT block, one index for both buffers, against the compiler's twelve:
+  3.8% of the frame); the same loop cannot serve the M0 (Thumb-1 inline assembly gets six
+  registers, the loop needs eight), and the rows' state does not fit the M4's registers in
+  assembly either. On the M0 the vertex stage (0.72 M, about 630
   a vertex, of which the transform and the divisions by w take about 200 each) and the depth
   walk's two divisions (6.6% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
