@@ -135,7 +135,7 @@ $stages
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); the pixels now take about 0.35 M there.
+  frame); with the \`asm\` loop in line the pixels take about 0.28 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target, and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
@@ -242,14 +242,14 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.35 M on the M4), 1.0 M leaves
-  0.65 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, two fifths of what they take now. The largest excess found is per drawn triangle: on
+- **The goals**: with the pixels at what they take now (0.28 M on the M4), 1.0 M leaves
+  0.72 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  rows, half of what they take now. The largest excess found is per drawn triangle: on
   the M4 about 620 instructions (fill set-up, set-up, shading and inputs in the table above)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
   dozens of pieces of 5 to 25 instructions: about 0.28 M. Next come the rows' register
-  traffic, worth at most about 0.28 M on the M4 (rows and span entries, 0.47 M, at the 25
+  traffic, worth at most about 0.27 M on the M4 (rows and span entries, 0.46 M, at the 25
   instructions a row their arithmetic needs). The M4's pixels are already hand-written (the
   \`asm\` feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve:
