@@ -56,6 +56,20 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     let obj_hash = framed(&mut |f, c, fb, d| {
         obj(&gem, f, c, fb, d);
     });
+    let mut cache2 = vec![ScreenVertex::DEFAULT; 2 * TORUS_VERTICES];
+    let variant_hashes: Vec<(&'static str, u32)> = VARIANTS
+        .iter()
+        .map(|&name| {
+            let key: &'static str = Box::leak(format!("variants:{name}").into_boxed_str());
+            let h = chain(|f| {
+                fb.fill(Rgb565::BLACK);
+                depth.fill(u16::MAX);
+                let word = variant(name, &mesh, f, &mut cache2, &mut fb, &mut depth);
+                frame_hash(&fb) ^ word.unwrap_or(0)
+            });
+            (key, h)
+        })
+        .collect();
     let rows = (W * BAND_ROWS) as usize;
     let (mut band, mut band_depth) = (vec![Rgb565::BLACK; rows], vec![0u16; rows]);
     let bands_hash =
@@ -90,7 +104,7 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         wire(&small, f, &mut small_cache, &mut display);
         display.hash.0
     });
-    vec![
+    let mut hashes = vec![
         ("wire", wire_hash),
         ("wire@microbit", microbit_hash),
         ("flat", flat_hash),
@@ -99,7 +113,9 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         ("bands", bands_hash),
         ("obj", obj_hash),
         ("display", display_chain),
-    ]
+    ];
+    hashes.extend(variant_hashes);
+    hashes
 }
 
 #[test]
@@ -110,6 +126,17 @@ fn host_hashes_match_the_firmware_file() {
     assert_eq!(
         full, bands,
         "a frame drawn in bands is the frame drawn at once"
+    );
+    let variant = |name: &str| hashes.iter().find(|(p, _)| *p == name).map(|h| h.1);
+    assert_eq!(
+        variant("variants:less"),
+        full,
+        "the torus drawn again at the same depths wins no pixel under the strict test"
+    );
+    assert_ne!(
+        variant("variants:less-or-equal"),
+        full,
+        "it wins them all under <="
     );
     let text: String = hashes
         .iter()

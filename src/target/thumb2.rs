@@ -18,36 +18,21 @@ use core::mem::{align_of, size_of};
 
 use super::depth::{DepthTest, FragmentCount};
 
-/// The pixel loop in assembly, for one condition pair: `$pass` where the fragment wins
-/// (`lo`: strictly nearer; `ls`: nearer or equal), `$fail` its opposite, and the failure
-/// count in the same IT block or none.
+/// The pixel loop in assembly: `$it` the IT block (`itt`, or `itte` with the failure count),
+/// `$pass` the condition where the fragment wins (`lo`: strictly nearer; `ls`: nearer or
+/// equal), then the failure count's instruction if any, then the operands.
 macro_rules! span_loop {
-    ($pass:literal, $fail:literal, counted, $($operands:tt)*) => {
+    ($it:literal, $pass:literal, [$($count:literal)?], $($operands:tt)*) => {
         core::arch::asm!(
             "2:",
             "lsr {z}, {acc}, #15",
             "ldrh {o}, [{d}, {i}, lsl #1]",
             "add {acc}, {st}",
             "cmp {z}, {o}",
-            concat!("itte ", $pass),
+            concat!($it, " ", $pass),
             concat!("strh", $pass, " {z}, [{d}, {i}, lsl #1]"),
             concat!("strh", $pass, " {col}, [{c}, {i}, lsl #1]"),
-            concat!("add", $fail, " {f}, {f}, #1"),
-            "adds {i}, {i}, #1",
-            "bne 2b",
-            $($operands)*
-        )
-    };
-    ($pass:literal, uncounted, $($operands:tt)*) => {
-        core::arch::asm!(
-            "2:",
-            "lsr {z}, {acc}, #15",
-            "ldrh {o}, [{d}, {i}, lsl #1]",
-            "add {acc}, {st}",
-            "cmp {z}, {o}",
-            concat!("itt ", $pass),
-            concat!("strh", $pass, " {z}, [{d}, {i}, lsl #1]"),
-            concat!("strh", $pass, " {col}, [{c}, {i}, lsl #1]"),
+            $($count,)?
             "adds {i}, {i}, #1",
             "bne 2b",
             $($operands)*
@@ -117,19 +102,19 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     //   the flags it changes are not preserved, as asm! allows by default.
     unsafe {
         match (T::OR_EQUAL, K::COUNTED) {
-            (false, true) => span_loop!("lo", "hs", counted,
+            (false, true) => span_loop!("itte", "lo", ["addhs {f}, {f}, #1"],
                 z = out(reg) _, o = out(reg) _, acc = inout(reg) acc, st = in(reg) st,
                 d = in(reg) d, c = in(reg) c, i = inout(reg) i, f = inout(reg) f,
                 col = in(reg) bits, options(nostack)),
-            (true, true) => span_loop!("ls", "hi", counted,
+            (true, true) => span_loop!("itte", "ls", ["addhi {f}, {f}, #1"],
                 z = out(reg) _, o = out(reg) _, acc = inout(reg) acc, st = in(reg) st,
                 d = in(reg) d, c = in(reg) c, i = inout(reg) i, f = inout(reg) f,
                 col = in(reg) bits, options(nostack)),
-            (false, false) => span_loop!("lo", uncounted,
+            (false, false) => span_loop!("itt", "lo", [],
                 z = out(reg) _, o = out(reg) _, acc = inout(reg) acc, st = in(reg) st,
                 d = in(reg) d, c = in(reg) c, i = inout(reg) i,
                 col = in(reg) bits, options(nostack)),
-            (true, false) => span_loop!("ls", uncounted,
+            (true, false) => span_loop!("itt", "ls", [],
                 z = out(reg) _, o = out(reg) _, acc = inout(reg) acc, st = in(reg) st,
                 d = in(reg) d, c = in(reg) c, i = inout(reg) i,
                 col = in(reg) bits, options(nostack)),

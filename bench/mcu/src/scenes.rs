@@ -13,7 +13,7 @@ use fixed3d::pipeline::{Frame, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, Gouraud, Unlit};
-use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer};
+use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 
 /// Frames per preset (the hash chains over them).
 pub const FRAMES: u32 = 4;
@@ -219,6 +219,48 @@ pub fn full(
         color,
         depth,
     )
+}
+
+/// The `variants` preset's configurations: the depth tests and counts of `ColorDepth`.
+pub const VARIANTS: [&str; 4] = [
+    "less",
+    "less-counted",
+    "less-or-equal",
+    "less-or-equal-counted",
+];
+
+/// `full`'s torus drawn twice in frame `f`, orange then blue at the very same depths (a tie at
+/// every pixel: strictly nearer keeps the orange, nearer-or-equal shows the blue), through
+/// variant `name` of the target (see [`VARIANTS`]). Returns the word to fold into the frame's
+/// hash: the fragments and writes a counting target counted (0 otherwise).
+pub fn variant(
+    name: &str,
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<u32> {
+    let objects = [
+        Object::new(mesh, torus_model(f), ORANGE),
+        Object::new(mesh, torus_model(f), Rgb888::new(40, 90, 255)),
+    ];
+    let scene = Scene::new(&objects, sun());
+    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    let mut target = ColorDepth::new(&mut c, &mut d).ok()?;
+    let stats = match name {
+        "less" => p.draw(&mut target.uncounted()).ok()?,
+        "less-counted" => p.draw(&mut target).ok()?,
+        "less-or-equal" => p
+            .draw(&mut target.with_test(LessOrEqual).uncounted())
+            .ok()?,
+        _ => p.draw(&mut target.with_test(LessOrEqual)).ok()?,
+    };
+    Some(stats.fragments.rotate_left(16) ^ stats.written)
 }
 
 /// `gouraud`: the torus with per-vertex normals, Gouraud shading, three coloured lights.

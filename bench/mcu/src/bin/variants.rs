@@ -1,0 +1,42 @@
+//! Preset `variants`: `full`'s torus drawn twice at the same depths (see `scenes::variant`)
+//! through each depth test and count of `ColorDepth`, one line each, with the counts folded
+//! into each frame's hash: every u16 pixel loop the library has (Rust, and with the `asm`
+//! feature its Thumb-2 variants on the Cortex-M4F) checked against the host's
+//! (`tests/firmware.rs`). Not in footprint.md's table.
+#![no_std]
+#![no_main]
+
+use core::cell::Cell;
+
+use cortex_m_rt::entry;
+use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use fixed3d::pipeline::ScreenVertex;
+use mcu_bench::scenes::*;
+use mcu_bench::{storage, torus_storage, Op};
+use panic_semihosting as _;
+
+#[entry]
+fn main() -> ! {
+    let (_, pos, nor, tri) = torus_storage!();
+    let (cache, fb, depth) = storage!(
+        // The torus twice.
+        CACHE2: [ScreenVertex; 2 * TORUS_VERTICES] = [ScreenVertex::DEFAULT; 2 * TORUS_VERTICES],
+        FB: [Rgb565; (W * H) as usize] = [Rgb565::BLACK; (W * H) as usize],
+        DEPTH: [u16; (W * H) as usize] = [0; (W * H) as usize],
+    );
+    let mesh = torus_mesh(pos, nor, tri);
+    let counts = Cell::new(0);
+    mcu_bench::run_each(&VARIANTS, |name, op| match op {
+        Op::Clear => {
+            fb.fill(Rgb565::BLACK);
+            depth.fill(u16::MAX);
+            0
+        }
+        Op::Draw(f) => {
+            let word = variant(name, &mesh, f, cache, fb, depth);
+            counts.set(word.unwrap_or(0));
+            word.is_some() as u32
+        }
+        Op::Hash => frame_hash(fb) ^ counts.get(),
+    })
+}
