@@ -78,6 +78,8 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     failed: u32,
 ) -> u32 {
     let n = depths.len().min(colors.len());
+    // The size and alignment are `color_bits`' conditions, which gave `bits`: checked again
+    // here, where the block relies on them (a constant test, compiled away).
     if n == 0 || size_of::<C>() != 2 || align_of::<C>() != 2 {
         return failed;
     }
