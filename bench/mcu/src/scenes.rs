@@ -9,7 +9,7 @@ use embedded_graphics::Pixel;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
-use fixed3d::pipeline::{Frame, ScreenVertex};
+use fixed3d::pipeline::{Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, Gouraud, Unlit};
@@ -183,7 +183,27 @@ pub fn three_lights() -> Lighting<3> {
     l
 }
 
-/// Draws `scene` through `frame` into a 320x240 framebuffer with a depth buffer.
+/// Prepares `scene` through `frame` and lets `draw` fill it into a 320x240 framebuffer with a
+/// depth buffer, through the target it makes of them.
+fn with_depth_target<const N: usize, S: fixed3d::shade::Shading, D: DepthFormat>(
+    frame: Frame,
+    scene: &Scene<'_, N>,
+    shading: S,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [D],
+    draw: impl FnOnce(&Prepared<'_, '_, N, S>, ColorDepth<'_, '_, Rgb565, D>) -> Option<Stats>,
+) -> Option<Stats> {
+    let p = frame.prepare(scene, cache, shading).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    draw(&p, ColorDepth::new(&mut c, &mut d).ok()?)
+}
+
+/// Draws `scene` through `frame` into a 320x240 framebuffer with a depth buffer, counting no
+/// fragments (nothing reads the counts).
 pub fn depth_frame<const N: usize, S: fixed3d::shade::Shading, D: DepthFormat>(
     frame: Frame,
     scene: &Scene<'_, N>,
@@ -192,14 +212,10 @@ pub fn depth_frame<const N: usize, S: fixed3d::shade::Shading, D: DepthFormat>(
     color: &mut [Rgb565],
     depth: &mut [D],
 ) -> Option<()> {
-    let p = frame.prepare(scene, cache, shading).ok()?;
-    let (mut c, mut d) = (
-        FrameBuffer::new(color, W, H).ok()?,
-        DepthBuffer::new(depth, W, H).ok()?,
-    );
-    p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?.uncounted())
-        .ok()
-        .map(|_| ())
+    with_depth_target(frame, scene, shading, cache, color, depth, |p, target| {
+        p.draw(&mut target.uncounted()).ok()
+    })
+    .map(|_| ())
 }
 
 /// `full`: the torus, flat Lambert, u16 depth, into a 320x240 framebuffer.
@@ -246,20 +262,23 @@ pub fn variant(
         Object::new(mesh, torus_model(f), Rgb888::new(40, 90, 255)),
     ];
     let scene = Scene::new(&objects, sun());
-    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
-    let (mut c, mut d) = (
-        FrameBuffer::new(color, W, H).ok()?,
-        DepthBuffer::new(depth, W, H).ok()?,
-    );
-    let mut target = ColorDepth::new(&mut c, &mut d).ok()?;
-    let stats = match name {
-        "less" => p.draw(&mut target.uncounted()).ok()?,
-        "less-counted" => p.draw(&mut target).ok()?,
-        "less-or-equal" => p
-            .draw(&mut target.with_test(LessOrEqual).uncounted())
-            .ok()?,
-        _ => p.draw(&mut target.with_test(LessOrEqual)).ok()?,
-    };
+    let stats = with_depth_target(
+        frame(W, H)?,
+        &scene,
+        Flat,
+        cache,
+        color,
+        depth,
+        |p, target| match name {
+            "less" => p.draw(&mut target.uncounted()).ok(),
+            "less-counted" => {
+                let mut target = target;
+                p.draw(&mut target).ok()
+            }
+            "less-or-equal" => p.draw(&mut target.with_test(LessOrEqual).uncounted()).ok(),
+            _ => p.draw(&mut target.with_test(LessOrEqual)).ok(),
+        },
+    )?;
     Some(stats.fragments.rotate_left(16) ^ stats.written)
 }
 
