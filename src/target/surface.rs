@@ -138,14 +138,7 @@ impl<'t, 'a, C, D, Q, T, K> ColorDepth<'t, 'a, C, D, Q, T, K> {
     /// ```
     #[must_use]
     pub fn with_test<U: DepthTest>(self, test: U) -> ColorDepth<'t, 'a, C, D, Q, U, K> {
-        ColorDepth {
-            color: self.color,
-            depth: self.depth,
-            first_row: self.first_row,
-            test,
-            quantize: self.quantize,
-            count: self.count,
-        }
+        self.with_types(|quantize, _, count| (quantize, test, count))
     }
 
     /// Without counting fragments and writes ([`Stats::fragments`] and [`Stats::written`] stay
@@ -162,26 +155,29 @@ impl<'t, 'a, C, D, Q, T, K> ColorDepth<'t, 'a, C, D, Q, T, K> {
     /// ```
     #[must_use]
     pub fn uncounted(self) -> ColorDepth<'t, 'a, C, D, Q, T, Uncounted> {
-        ColorDepth {
-            color: self.color,
-            depth: self.depth,
-            first_row: self.first_row,
-            test: self.test,
-            quantize: self.quantize,
-            count: Uncounted,
-        }
+        self.with_types(|quantize, test, _| (quantize, test, Uncounted))
     }
 
     /// With ordered dithering (for 1-bit, grey and 16-bit displays).
     #[must_use]
     pub fn dithered(self) -> ColorDepth<'t, 'a, C, D, OrderedDither, T, K> {
+        self.with_types(|_, test, count| (OrderedDither, test, count))
+    }
+
+    /// The same buffers and band, with the quantizer, depth test and count `types` makes of
+    /// these.
+    fn with_types<Q2, T2, K2>(
+        self,
+        types: impl FnOnce(Q, T, K) -> (Q2, T2, K2),
+    ) -> ColorDepth<'t, 'a, C, D, Q2, T2, K2> {
+        let (quantize, test, count) = types(self.quantize, self.test, self.count);
         ColorDepth {
             color: self.color,
             depth: self.depth,
             first_row: self.first_row,
-            test: self.test,
-            quantize: OrderedDither,
-            count: self.count,
+            test,
+            quantize,
+            count,
         }
     }
 }
