@@ -128,9 +128,9 @@ $stages
   for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.6% fewer
-  instructions per frame, the M0 2.2%, x86-64 0.9% (the counts held registers in the row
-  loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.7% fewer
+  instructions per frame (6.4% with the \`asm\` loop, which then needs no count either), the
+  M0 2.2%, x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
   it cost a load and a branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
@@ -167,9 +167,9 @@ $stages
   cost more than the rows saved: 6.5% and 5.2% more per frame, 900 bytes more flash (the row
   step went from 28 instructions to 16, but each edge's set-up took 22 more, and the
   triangle's own about 77 more: copies of the wider steppers, the re-seeding checks). About
-  42 instructions per row with pixels on the M4 (30 for every row, 12 more for its span;
-  61 while fragments were counted, 69 before \`DivideStepper\`), where the arithmetic needs
-  about 25: the rest moves the row's state (the edges, the depth walk, the clip column, the
+  49 instructions per row with pixels on the M4 (29 for every row, 20 more for its span's
+  bounds check and the \`asm\` loop's set-up; 61 while fragments were counted, 69 before
+  \`DivideStepper\`), where the arithmetic needs about 25: the rest moves the row's state (the edges, the depth walk, the clip column, the
   buffers) between registers and the stack around the pixel loop. On Cortex-M the rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
   below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
