@@ -98,6 +98,23 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
+/// A triangle's rows for a target's own row loop ([`TriangleSpans::runs`]): starting at row
+/// `y` with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's span
+/// `max(left, x0)..min(right, x1)` for the clip rectangle's columns
+/// ([`TriangleSpans::columns`]), both edges stepped after each row; after the first `upper`
+/// rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge set up
+/// at that row, takes the place of the left edge if `lower_is_left`, else the right one.
+#[cfg(any(test, all(feature = "asm", fixed3d_thumb2)))]
+#[derive(Clone, Copy, Debug)]
+#[repr(C)]
+pub(crate) struct Runs {
+    pub(crate) edges: [EdgeWalk; 3],
+    pub(crate) y: i32,
+    pub(crate) upper: u32,
+    pub(crate) rows: u32,
+    pub(crate) lower_is_left: bool,
+}
+
 /// The pixels a triangle covers, as spans clipped to `clip`, by the top-left rule (see the
 /// [module documentation](super)). Either winding is accepted; a triangle of zero area, or one
 /// with a coordinate beyond [`COORD_LIMIT`](super::COORD_LIMIT), yields nothing.
@@ -536,6 +553,41 @@ impl TriangleSpans {
         }
     }
 
+    /// The rows left as [`Runs`], for a target's own row loop; `Err(self)`, untouched, for a
+    /// triangle whose edges are set up again on the way down (see [`EdgeWalk`]: none of the
+    /// pipeline's).
+    #[cfg(any(test, all(feature = "asm", fixed3d_thumb2)))]
+    #[inline(always)]
+    pub(crate) fn runs(self) -> Result<Runs, Self> {
+        if self.y_reseed != i32::MAX || self.y >= self.y_end {
+            return Err(self);
+        }
+        // y < y_end: a positive count of rows, and of those above a split ahead (the split
+        // lies after y while pending, `i32::MIN` once switched).
+        let rows = self.y_end.wrapping_sub(self.y) as u32;
+        let [_, b, c] = self.v;
+        let (upper, lower) = if self.y_split > self.y && self.y_split < self.y_end {
+            let upper = self.y_split.wrapping_sub(self.y) as u32;
+            (upper, edge(b, c, self.y_split, u32::MAX))
+        } else {
+            (rows, EdgeWalk::ZERO)
+        };
+        Ok(Runs {
+            edges: [self.left, self.right, lower],
+            y: self.y,
+            upper,
+            rows,
+            lower_is_left: !self.long_is_left,
+        })
+    }
+
+    /// The clip rectangle's columns `x0..x1` that the spans are clipped to.
+    #[cfg(any(test, all(feature = "asm", fixed3d_thumb2)))]
+    #[inline(always)]
+    pub(crate) fn columns(&self) -> (i32, i32) {
+        (self.x_min, self.x_max)
+    }
+
     /// [`for_each_row`](Self::for_each_row) in one loop that checks for the split on every
     /// row: on 32-bit cores, where entering each of two runs moves the row loop's state
     /// between stack slots (Cortex-M0: 0.7% fewer instructions per frame than in runs, the
@@ -630,7 +682,35 @@ mod tests {
             .rows_reseeding(&mut |x0, x1| reseeding.push((x0, x1)));
         assert_eq!(in_runs, one_by_one);
         assert_eq!(in_runs, reseeding);
+        // As runs for a target's own loop, where the edges need no second set-up.
+        match spans.clone().runs() {
+            Ok(runs) => assert_eq!(walk_runs(runs, spans.columns()), in_runs),
+            Err(untouched) => assert_eq!(untouched.row(), spans.row()),
+        }
         in_runs
+    }
+
+    /// The rows of [`Runs`] as their documentation describes them (as the `asm` feature's row
+    /// loop walks them).
+    fn walk_runs(runs: Runs, (x_min, x_max): (i32, i32)) -> Vec<(i32, i32)> {
+        let Runs {
+            mut edges,
+            upper,
+            rows,
+            lower_is_left,
+            ..
+        } = runs;
+        assert!((1..=rows).contains(&upper));
+        let mut out = Vec::new();
+        for k in 0..rows {
+            if k == upper {
+                edges[usize::from(!lower_is_left)] = edges[2];
+            }
+            out.push((edges[0].value().max(x_min), edges[1].value().min(x_max)));
+            edges[0].step();
+            edges[1].step();
+        }
+        out
     }
 
     /// The span end of edge `p → q` on row `py`, `ceil((x(16·py + 8) − 8) / 16)`, from its
@@ -871,7 +951,7 @@ mod tests {
         use crate::raster::RowStarts;
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let clip = PixelRect::new(3, 5, 60, 144);
-        let mut spans_seen = 0;
+        let (mut spans_seen, mut split_runs) = (0, 0);
         for _ in 0..20_000 {
             let scale = rng.pick(&[40, 400, 1200, 16_000]);
             let p = rng.triangle(ScreenPoint::new(500, 1200), scale);
@@ -885,6 +965,7 @@ mod tests {
                 .map(|s| (s, plane.at(s.x0, s.y)))
                 .collect();
             let spans = triangle_spans(p, clip);
+            split_runs += usize::from(spans.clone().runs().is_ok_and(|r| r.upper < r.rows));
             let y0 = spans.row();
             let mut wide = plane.rows(clip.x0, y0);
             let (mut walked, mut y) = (Vec::new(), y0);
@@ -899,5 +980,7 @@ mod tests {
             spans_seen += walked.len();
         }
         assert!(spans_seen > 100_000, "{spans_seen}");
+        // Runs that switch an edge on the way down, which `rows_both_ways` walks too.
+        assert!(split_runs > 5_000, "{split_runs}");
     }
 }
