@@ -129,7 +129,7 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.7% fewer
-  instructions per frame (6.4% with the \`asm\` loop, which then needs no count either), the
+  instructions per frame (4.4% with the \`asm\` loops, which then need no count either), the
   M0 2.2%, x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
   it cost a load and a branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -170,7 +170,20 @@ $stages
   49 instructions per row with pixels on the M4 (29 for every row, 20 more for its span's
   bounds check and the \`asm\` loop's set-up; 61 while fragments were counted, 69 before
   \`DivideStepper\`), where the arithmetic needs about 25: the rest moves the row's state (the edges, the depth walk, the clip column, the
-  buffers) between registers and the stack around the pixel loop. On Cortex-M the rows run
+  buffers) between registers and the stack around the pixel loop. With the \`asm\` feature
+  (the firmware presets have it) the M4's whole row loop is Thumb-2 too, for a solid colour
+  into u16 depth: 25 instructions a row and 4 more to enter a span. It reads the edges and
+  the triangle's constants in pairs (\`ldrd\`) from one block in memory and stores the two
+  numerators back, which leaves twelve registers for the row and the pixel loop together;
+  the runs above and below the middle vertex go through it in one call, the lower short
+  edge set up beforehand and copied over its side by the loop. Its set-up (the edges copied
+  into the block, the buffers' cells checked once a triangle) costs about 60 instructions a
+  triangle more than the compiled loop's (\`profile.py\`), where a triangle's 8 rows save
+  about 20 each: the frame 3.3% fewer instructions (1.722 M → 1.664 M), 480 bytes more
+  flash. Made of two runs a triangle, each set up apart, it saved 1.5%. (In the stage
+  table the M4's fill set-up includes that set-up and the lower short edge's, which the
+  compiled loop sets up among its rows; the cut before the assembly moves more code than
+  the others, so that the M4's rows, span entries and fill set-up are best read together.) On Cortex-M the rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
   below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
   state between stack slots, 26 instructions a run on the M0 (one loop: 0.7% fewer
@@ -245,17 +258,16 @@ $stages
 - **The goals**: with the pixels at what they take now (0.28 M on the M4), 1.0 M leaves
   0.72 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, half of what they take now. The largest excess found is per drawn triangle: on
-  the M4 about 620 instructions (fill set-up, set-up, shading and inputs in the table above)
+  the M4 about 820 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.79 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
-  dozens of pieces of 5 to 25 instructions: about 0.28 M. Next come the rows' register
-  traffic, worth at most about 0.27 M on the M4 (rows and span entries, 0.46 M, at the 25
-  instructions a row their arithmetic needs). The M4's pixels are already hand-written (the
-  \`asm\` feature, which the firmware presets have: nine instructions a pixel, both stores
-  predicated in one IT block, one index for both buffers, against the compiler's twelve:
-  3.8% of the frame); the same loop cannot serve the M0 (Thumb-1 inline assembly gets six
-  registers, the loop needs eight), and the rows' state does not fit the M4's registers in
-  assembly either. On the M0 the vertex stage (0.72 M, about 630
+  dozens of pieces of 5 to 25 instructions: about 0.48 M. The M4's rows and pixels are already hand-written (the \`asm\`
+  feature, which the firmware presets have: nine instructions a pixel, both stores
+  predicated in one IT block, one index for both buffers, against the compiler's twelve;
+  25 a row against about 49), and the same loops cannot serve the M0 (Thumb-1 inline
+  assembly gets six registers, the pixel loop alone needs eight). On the M0 the vertex
+  stage (0.72 M, about 630
   a vertex, of which the transform and the divisions by w take about 200 each) and the depth
   walk's two divisions (6.6% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser

@@ -8,7 +8,8 @@
     clippy::expect_used,
     clippy::panic
 )]
-// Without the `asm` feature no `unsafe` at all; with it, only target::thumb2's pixel loop.
+// Without the `asm` feature no `unsafe` at all; with it, only target::thumb2's row and pixel
+// loops.
 #![cfg_attr(not(feature = "asm"), forbid(unsafe_code))]
 #![cfg_attr(feature = "asm", deny(unsafe_code))]
 #![cfg_attr(test, allow(clippy::unwrap_used, clippy::expect_used, clippy::panic))]

@@ -42,18 +42,32 @@ CUTS = [
         "    let d = depths.as_mut_ptr().wrapping_add(n);",
         f"    if {BB}(true) {{ let _ = (st, acc, bits); return {BB}(failed); }}\n"
         "    let d = depths.as_mut_ptr().wrapping_add(n);",
+    ), (
+        # The same feature's row loop: each span entered, no pixel loop.
+        "src/target/thumb2.rs",
+        '            pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),',
+        '            "b 4f",\n            pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),',
     )]),
     ("rows (edge stepping, clipping, depth walk)", "no spans", [(
         "src/target/surface.rs",
         "failed = test_span(ds, cs, depth.at(x0), g, failed);",
         f"failed = {BB}((ds.len(), cs.len(), depth.at(x0), failed)).3;"
         " let _ = (&mut test_span, g);",
+    ), (
+        "src/target/thumb2.rs",
+        '            "bge 4f",',
+        '            "b 4f",',
     )]),
     ("fill set-up (colour, depth walk: steps and start; first row)", "no rows", [(
         "src/target/surface.rs",
         "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
         f"        if {BB}(true) {{ {BB}((&spans, &depth)); return; }}\n"
         "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
+    ), (
+        "src/target/thumb2.rs",
+        "    // SAFETY:\n    // - Memory: both slices",
+        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len(), cptr, bits)); "
+        "return; }\n    // SAFETY:\n    // - Memory: both slices",
     )]),
     ("span set-up (sorting, edge steppers)", "no fill set-up", [(
         "src/pipeline/draw.rs",

@@ -43,6 +43,16 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         false
     }
 
+    /// The cells as u16s, for the row loop in assembly (`target::thumb2`); `None` for other
+    /// formats.
+    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    #[doc(hidden)]
+    #[inline(always)]
+    fn u16_cells(cells: &mut [Self]) -> Option<&mut [u16]> {
+        let _ = cells;
+        None
+    }
+
     /// [`test_span`](Self::test_span) for a span of a triangle that
     /// [`unclamped`](Self::unclamped) accepted: `start` and `step` in the 32-bit loop's unit,
     /// 2⁻³¹ of the depth range (2⁻¹³ of the interpolator's), half a u16 step added; `solid`
@@ -164,6 +174,12 @@ impl DepthFormat for u16 {
         max <= (1 << 30) - (1 << 14)
     }
 
+    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    #[inline(always)]
+    fn u16_cells(cells: &mut [u16]) -> Option<&mut [u16]> {
+        Some(cells)
+    }
+
     #[inline(always)]
     fn test_span_unclamped<C: Copy, T: DepthTest, K: FragmentCount>(
         depths: &mut [u16],
@@ -197,6 +213,13 @@ pub struct SolidColor<C> {
 }
 
 impl<C: Copy> SolidColor<C> {
+    /// Its two bytes as a word, for colours of 2 bytes (see `thumb2::color_bits`).
+    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    #[inline(always)]
+    pub(super) fn bits(&self) -> Option<u32> {
+        self.bits
+    }
+
     /// Prepares `color`.
     #[inline(always)]
     pub(crate) fn new(color: &C) -> Self {
@@ -281,9 +304,9 @@ fn loop_step(step: i64) -> i64 {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RoundedRows<W: LoopWord = NativeWord> {
     /// The start at column 0 on the current row (as `W` holds values).
-    row: W,
-    step_x: W,
-    step_y: W,
+    pub(super) row: W,
+    pub(super) step_x: W,
+    pub(super) step_y: W,
 }
 
 /// The word [`RoundedRows`] walks in: 64-bit words on 64-bit hosts, 32-bit ones elsewhere.
@@ -443,7 +466,7 @@ impl DepthTest for LessOrEqual {
 ///
 /// A type, chosen when the target is built ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)):
 /// a frame that does not need the counts does not pay for them (on the reference torus, 3.7%
-/// of the Cortex-M4's instructions, 6.4% with the `asm` feature, 2.2% of the Cortex-M0's,
+/// of the Cortex-M4's instructions, 4.4% with the `asm` feature, 2.2% of the Cortex-M0's,
 /// 0.9% of x86-64's: a count per span and one per failed fragment, and the registers they
 /// hold in the row loop).
 pub trait FragmentCount: sealed::Sealed + Copy + Default + core::fmt::Debug {

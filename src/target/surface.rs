@@ -12,6 +12,8 @@ use super::depth::{
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+use super::thumb2;
 use crate::pipeline::Stats;
 use crate::raster::{PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans};
 use crate::shade::Paint;
@@ -211,6 +213,16 @@ where
         };
         match unclamped {
             Some((rows, st)) => {
+                // With the `asm` feature, a solid colour of 2 bytes into u16 depth takes the
+                // row loop in Thumb-2 (spans the pipeline's triangles always have).
+                #[cfg(all(feature = "asm", fixed3d_thumb2))]
+                let spans = match solid.and_then(|s| s.bits()) {
+                    Some(bits) => match self.solid_rows(spans, &rows, bits, stats) {
+                        Ok(()) => return,
+                        Err(spans) => spans,
+                    },
+                    None => spans,
+                };
                 self.each_span(spans, rows, stats, colors_for, |ds, cs, start, g, w| {
                     D::test_span_unclamped::<C, T, K>(ds, cs, start, st, solid, g, w)
                 });
@@ -228,6 +240,33 @@ where
                 )
             }
         }
+    }
+
+    /// [`thumb2::solid_rows`] into these buffers, when the depth format is u16.
+    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    #[inline(always)]
+    fn solid_rows(
+        &mut self,
+        spans: TriangleSpans,
+        rows: &RoundedRows<i32>,
+        bits: u32,
+        stats: &mut Stats,
+    ) -> Result<(), TriangleSpans> {
+        let width = self.color.width();
+        let Some(depths) = D::u16_cells(self.depth.cells_all_mut()) else {
+            return Err(spans);
+        };
+        let colors = self.color.cells_all_mut();
+        thumb2::solid_rows::<C, T, K>(
+            spans,
+            rows,
+            colors,
+            depths,
+            self.first_row,
+            width,
+            bits,
+            stats,
+        )
     }
 
     /// Runs `test_span(depths, colours, depth at the first pixel, colour source, failures so

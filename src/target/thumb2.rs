@@ -1,42 +1,69 @@
-//! The u16 depth loop of a solid-coloured span in hand-written Thumb-2, for Cortex-M3, M4 and
-//! M7 (ARMv7-M) and ARMv8-M mainline cores, with the `asm` feature (the only `unsafe` code of
-//! the crate; without the feature the crate forbids it).
+//! The u16 depth loops of solid-coloured triangles in hand-written Thumb-2, for Cortex-M3, M4
+//! and M7 (ARMv7-M) and ARMv8-M mainline cores, with the `asm` feature (the only `unsafe`
+//! code of the crate; without the feature the crate forbids it).
 //!
-//! Nine instructions a pixel (ten when fragments are counted): the depth from the loop's
-//! value by a shift, the stored depth loaded, compared, and both stores predicated in one IT
-//! block; one index counts from −n up to 0 and addresses both buffers. The compiler's loop
-//! takes twelve or thirteen (a branch over the stores, two pointers and a counter, and the
-//! colour reloaded from the stack): the reference frame on the Cortex-M4F 3.8% fewer
-//! instructions with it (1.790 M → 1.722 M).
+//! The pixel loop: nine instructions a pixel (ten when fragments are counted): the depth from
+//! the loop's value by a shift, the stored depth loaded, compared, and both stores predicated
+//! in one IT block; one index counts from −n up to 0 and addresses both buffers. The
+//! compiler's loop takes twelve or thirteen (a branch over the stores, two pointers and a
+//! counter, and the colour reloaded from the stack): the reference frame on the Cortex-M4F
+//! 3.8% fewer instructions with it (1.790 M → 1.722 M).
 //!
-//! It computes exactly what `unclamped_u16` computes for a span whose colour is constant:
-//! the same depth (`acc >> 15`, below 2¹⁶ since every value lies in [0, 2³¹)), the same test
-//! on the same stored depth (zero-extended to 32 bits in both), the same stores and counts.
-//! The firmware presets' frame hashes, equal to the host's, check it under emulation
-//! (`bench/mcu/run.sh`, in CI): the `variants` preset each of its four forms (depth test ×
-//! counted), on ties too.
+//! The row loop ([`solid_rows`]) around the same pixel loop: a whole triangle, both runs of
+//! rows (above and below its middle vertex), in one block of assembly. A row takes 25
+//! instructions (each edge's end by one division of its numerator, the clamps to the
+//! target's columns, the depth walk and the row address), 4 more to enter a span, where the
+//! compiler's row loop took about 49, moving the row's state between registers and the
+//! stack around the pixel loop; here the edges and the constants are read in pairs from one
+//! block in memory. Its set-up takes about 60 instructions a triangle more than the
+//! compiler's; with it the reference frame on the Cortex-M4F takes 3.3% fewer instructions
+//! (1.722 M → 1.664 M).
+//!
+//! Both compute exactly what the Rust loops compute: the same span ends (the same unsigned
+//! division of the same numerators, clamped to the same columns), the same depths (`acc >>
+//! 15`, below 2¹⁶ since every value lies in [0, 2³¹)), the same test on the same stored
+//! depth (zero-extended to 32 bits in both), the same stores and counts. The row loop's runs
+//! are [`Runs`], whose walk a host test checks against the Rust row loops; the firmware
+//! presets' frame hashes, equal to the host's, check both loops under emulation
+//! (`bench/mcu/run.sh`, in CI): the `variants` preset each of the four forms (depth test ×
+//! counted), on ties too, and `bands` a band's first row other than 0.
 
 use core::mem::{align_of, size_of};
 
-use super::depth::{DepthTest, FragmentCount};
+use super::depth::{DepthTest, FragmentCount, RoundedRows};
+use crate::pipeline::Stats;
+use crate::raster::{DivideStepper, Runs, TriangleSpans};
 
-/// The pixel loop in assembly: `$it` the IT block (`itt`, or `itte` with the failure count),
-/// `$pass` the condition where the fragment wins (`lo`: strictly nearer; `ls`: nearer or
-/// equal), then the failure count's instruction if any, then the operands.
+/// The pixel loop's instructions as one template: from label `$l`, the depth in register
+/// `$z`, the stored depth in `$o`, the step in `$st` (the others named `acc`, `d`, `c`, `i`,
+/// `col`); `$it` the IT block (`itt`, or `itte` with the failure count), `$pass` the
+/// condition where the fragment wins (`lo`: strictly nearer; `ls`: nearer or equal), then the
+/// failure count's instruction if any. One index counts from −n up to 0 and addresses both
+/// buffers, from their cells n (d and c); the loop ends where it reaches 0.
+macro_rules! pixels {
+    ($l:literal, $z:literal, $o:literal, $st:literal, $it:literal, $pass:literal,
+     [$($count:literal)?]) => {
+        concat!(
+            $l, ":\n",
+            "lsr {", $z, "}, {acc}, #15\n",
+            "ldrh {", $o, "}, [{d}, {i}, lsl #1]\n",
+            "add {acc}, {", $st, "}\n",
+            "cmp {", $z, "}, {", $o, "}\n",
+            $it, " ", $pass, "\n",
+            "strh", $pass, " {", $z, "}, [{d}, {i}, lsl #1]\n",
+            "strh", $pass, " {col}, [{c}, {i}, lsl #1]\n",
+            $($count, "\n",)?
+            "adds {i}, {i}, #1\n",
+            "bne ", $l, "b",
+        )
+    };
+}
+
+/// The pixel loop in assembly (`pixels!`), then the operands.
 macro_rules! span_loop {
     ($it:literal, $pass:literal, [$($count:literal)?], $($operands:tt)*) => {
         core::arch::asm!(
-            "2:",
-            "lsr {z}, {acc}, #15",
-            "ldrh {o}, [{d}, {i}, lsl #1]",
-            "add {acc}, {st}",
-            "cmp {z}, {o}",
-            concat!($it, " ", $pass),
-            concat!("strh", $pass, " {z}, [{d}, {i}, lsl #1]"),
-            concat!("strh", $pass, " {col}, [{c}, {i}, lsl #1]"),
-            $($count,)?
-            "adds {i}, {i}, #1",
-            "bne 2b",
+            pixels!("2", "z", "o", "st", $it, $pass, [$($count)?]),
             $($operands)*
         )
     };
@@ -126,4 +153,249 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     }
     let _ = (acc, i);
     f
+}
+
+/// What the row loop reads at fixed offsets (see `rows_loop!`): the triangle's runs of rows
+/// (its edges first), the depth walk's steps, the buffers' layout, where the runs end and
+/// the counts.
+#[repr(C)]
+struct RowBlock {
+    /// Left, right and the lower short edge at offsets 0, 16 and 32 (numerator, step,
+    /// denominator, base), and the rows (48 to 63).
+    runs: Runs,
+    /// The depth walk's step along a row (64).
+    step_x: i32,
+    /// The depth buffer's address less the colour buffer's (68).
+    delta: usize,
+    /// The depth walk's step down a column (72).
+    step_y: i32,
+    /// Bytes from one row to the next (76).
+    stride: usize,
+    /// Pixels a row: spans are clamped to `0..width` (80).
+    width: i32,
+    /// The colour address one past the current run's last row (84), and past the triangle's
+    /// (88).
+    end: usize,
+    last: usize,
+    /// The offset of the edge the lower short edge replaces: 0 (left) or 16 (right) (92).
+    slot: usize,
+    /// Fragments tested and fragments that failed, when counted (96, 100).
+    fragments: u32,
+    failed: u32,
+}
+
+const _: () = {
+    use core::mem::offset_of;
+    assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
+    assert!(size_of::<[DivideStepper; 3]>() == 48 && size_of::<Runs>() == 64);
+    assert!(offset_of!(RowBlock, step_x) == 64 && offset_of!(RowBlock, delta) == 68);
+    assert!(offset_of!(RowBlock, step_y) == 72 && offset_of!(RowBlock, stride) == 76);
+    assert!(offset_of!(RowBlock, width) == 80 && offset_of!(RowBlock, end) == 84);
+    assert!(offset_of!(RowBlock, last) == 88 && offset_of!(RowBlock, slot) == 92);
+    assert!(offset_of!(RowBlock, fragments) == 96 && offset_of!(RowBlock, failed) == 100);
+    assert!(size_of::<RowBlock>() == 104);
+};
+
+/// The row loop in assembly: `$it` and `$pass` as in `pixels!`, then the count's
+/// instructions before the pixel loop, in it, and after it (none uncounted), then the block's
+/// address, the first row's colour address, the depth walk's value and the colour's bits. A row: each edge's span end (one division of its numerator, which then steps),
+/// the span clamped to `0..width`, and where it holds pixels the depth at its first one and
+/// the pixel loop; then the depth walk and the row address step down. At the end of the
+/// first run the lower short edge takes its side, and the second run goes on to `last`.
+macro_rules! rows_loop {
+    ($it:literal, $pass:literal, [$($before:literal),*], [$($count:literal)?],
+     [$($after:literal)?]; $block:expr, $cptr:expr, $rowz:expr, $bits:expr) => {
+        core::arch::asm!(
+            "2:",
+            // Left end: base + numerator / denominator; the numerator steps.
+            "ldrd {a}, {b}, [{s}]",
+            "add {c}, {a}, {b}",
+            "str {c}, [{s}]",
+            "ldrd {b}, {c}, [{s}, #8]",
+            "udiv {x0}, {a}, {b}",
+            "add {x0}, {c}",
+            // Right end.
+            "ldrd {a}, {b}, [{s}, #16]",
+            "add {c}, {a}, {b}",
+            "str {c}, [{s}, #16]",
+            "ldrd {b}, {c}, [{s}, #24]",
+            "udiv {x1}, {a}, {b}",
+            "add {x1}, {c}",
+            // x0 = max(x0, 0), x1 = min(x1, width); no pixels unless x0 < x1 (signed).
+            "bic {x0}, {x0}, {x0}, asr #31",
+            "ldr {b}, [{s}, #80]",
+            "cmp {x1}, {b}",
+            "it gt",
+            "movgt {x1}, {b}",
+            "subs {i}, {x0}, {x1}",
+            "bge 4f",
+            // The depth at x0; both buffers addressed from their cell x1, i from x0 − x1 to 0.
+            "ldrd {a}, {b}, [{s}, #64]",
+            "mla {acc}, {a}, {x0}, {rowz}",
+            "add {c}, {cptr}, {x1}, lsl #1",
+            "add {d}, {c}, {b}",
+            $($before,)*
+            // The pixel loop: the depth in x0, the stored depth in x1, the step in a.
+            pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),
+            $($after,)?
+            "4:",
+            // Next row: the depth walk and the row address; the run ends at `end`.
+            "ldrd {a}, {b}, [{s}, #72]",
+            "add {rowz}, {a}",
+            "add {cptr}, {b}",
+            "ldr {a}, [{s}, #84]",
+            "cmp {cptr}, {a}",
+            "bne 2b",
+            // The last run ends at `last`; before it, the lower short edge takes its side.
+            "ldrd {a}, {b}, [{s}, #88]",
+            "cmp {cptr}, {a}",
+            "beq 5f",
+            "str {a}, [{s}, #84]",
+            "add {b}, {s}",
+            "ldrd {c}, {d}, [{s}, #32]",
+            "strd {c}, {d}, [{b}]",
+            "ldrd {c}, {d}, [{s}, #40]",
+            "strd {c}, {d}, [{b}, #8]",
+            "b 2b",
+            "5:",
+            s = in(reg) $block as *mut RowBlock, cptr = inout(reg) $cptr => _, rowz = inout(reg) $rowz => _,
+            col = in(reg) $bits, a = out(reg) _, b = out(reg) _, c = out(reg) _,
+            d = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
+            acc = out(reg) _, options(nostack),
+        )
+    };
+}
+
+/// Fills a triangle's spans whose every pixel has the colour whose two bytes [`color_bits`]
+/// gave as `bits` into u16 depth and colour buffers of `width` pixels a row holding frame
+/// rows from `first_row`, its depths from the walk `depth` (every value in [0, 2³¹), see
+/// `DepthFormat::unclamped`): what the span loop over
+/// [`for_each_row`](TriangleSpans::for_each_row) with [`solid_span`] does, the counts into
+/// `stats` when `K` counts, with the whole row loop in assembly. `Err(spans)`, untouched,
+/// where the spans are not clipped to `0..width` and the buffers' rows, or their edges are
+/// set up again on the way down (none of which happens to the pipeline's triangles in a
+/// [`ColorDepth`](super::ColorDepth)).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
+    spans: TriangleSpans,
+    depth: &RoundedRows<i32>,
+    colors: &mut [C],
+    depths: &mut [u16],
+    first_row: i32,
+    width: u32,
+    bits: u32,
+    stats: &mut Stats,
+) -> Result<(), TriangleSpans> {
+    let w = match i32::try_from(width) {
+        Ok(w) if w > 0 && spans.columns() == (0, w) => w,
+        _ => return Err(spans),
+    };
+    // The triangle's first row in the buffers (frame rows from `first_row`).
+    let first = spans.row().wrapping_sub(first_row) as u32;
+    let runs = spans.runs()?;
+    let (upper, rows, row_z) = (runs.upper, runs.rows, depth.row);
+    let mut block = RowBlock {
+        slot: if runs.lower_is_left { 0 } else { 16 },
+        runs,
+        step_x: depth.step_x,
+        delta: 0,
+        step_y: depth.step_y,
+        stride: 0,
+        width: w,
+        end: 0,
+        last: 0,
+        fragments: 0,
+        failed: 0,
+    };
+    run_rows::<C, T, K>(&mut block, colors, depths, first, upper, rows, row_z, bits);
+    if K::COUNTED {
+        stats.fragments = stats.fragments.saturating_add(block.fragments);
+        // Each failed fragment was counted among the fragments: no wrap.
+        stats.written = stats
+            .written
+            .saturating_add(block.fragments.wrapping_sub(block.failed));
+    }
+    Ok(())
+}
+
+/// The rows of [`Runs`] (`block` holds its edges) through `rows_loop!`: `rows` rows of
+/// `block.width` cells of `colors` and `depths` from row `first` (nothing is drawn unless
+/// both buffers hold them all, as they do for spans clipped to the target), the lower short
+/// edge taking its place after `upper` rows; the depth walk from `row_z` at column 0 of the
+/// first row.
+#[inline(always)]
+#[allow(unsafe_code, clippy::too_many_arguments)]
+fn run_rows<C: Copy, T: DepthTest, K: FragmentCount>(
+    block: &mut RowBlock,
+    colors: &mut [C],
+    depths: &mut [u16],
+    first: u32,
+    upper: u32,
+    rows: u32,
+    row_z: i32,
+    bits: u32,
+) {
+    // The rows' cells in both buffers, and the other conditions the block relies on, checked
+    // here (constants, or known to the caller: compiled away).
+    let width = usize::try_from(block.width).unwrap_or(0);
+    let cells = (first as usize).checked_mul(width).and_then(|start| {
+        let end = start.checked_add((rows as usize).checked_mul(width)?)?;
+        Some(start..end)
+    });
+    let Some(cells) = cells else {
+        return;
+    };
+    let (Some(colors), Some(depths)) = (colors.get_mut(cells.clone()), depths.get_mut(cells))
+    else {
+        return;
+    };
+    if width == 0
+        || !(1..=rows).contains(&upper)
+        || (block.slot != 0 && block.slot != 16)
+        || size_of::<C>() != 2
+        || align_of::<C>() != 2
+    {
+        return;
+    }
+    let cptr = colors.as_mut_ptr();
+    // Bytes of a row, and the ends of the runs: below the buffer's length in bytes, so no
+    // overflow, and the last one past the end of `colors` (no pointer leaves its allocation).
+    block.stride = width.wrapping_mul(2);
+    block.end = cptr.wrapping_add((upper as usize).wrapping_mul(width)) as usize;
+    block.last = cptr.wrapping_add(colors.len()) as usize;
+    block.delta = (depths.as_mut_ptr() as usize).wrapping_sub(cptr as usize);
+    // SAFETY:
+    // - Memory: both slices are rows·width cells long (2 bytes a cell, aligned to 2), and this
+    //   function borrows them mutably. Row k (0 ≤ k < rows) starts at cell k·width of
+    //   `colors` (`cptr` steps by a row's bytes, `stride`). A row's span is clamped to
+    //   x0 ≥ 0 and x1 ≤ width, and touched only where x0 < x1: the halfwords at c + 2i and
+    //   d + 2i for i from x0 − x1 to −1, with c the address of the row's cell x1 and
+    //   d = c + delta the same cell of `depths`: cells k·width + x for x0 ≤ x < x1, below
+    //   rows·width. It also reads `block` (104 bytes, borrowed mutably), and writes its
+    //   edges' numerators (offsets 0 and 16), the lower edge over the one at `slot` (0 or
+    //   16: bytes 0 to 31), `end` (84) and, counted, its counts (96, 100); nothing else, and
+    //   no stack (`nostack`).
+    // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid `C`
+    //   (see `color_bits`) unchanged; an edge gets a copy of a valid edge or a new
+    //   numerator (any u32), `end` the address `last`, the counts u32s.
+    // - Division: every denominator is a `NonZeroU32` (an edge's den), never 0.
+    // - Termination: each row ends with i rising by one to 0 from x0 − x1 ≥ −width. `cptr`
+    //   rises by `stride` > 0 a row from the first cell: it meets `end` after `upper` ≥ 1
+    //   rows; unless that is `last` (upper = rows), `end` becomes `last`, which it meets
+    //   after the other rows ≥ 1.
+    // - Registers: every register the block writes is an output; the flags it changes are
+    //   not preserved, as asm! allows by default.
+    unsafe {
+        match (T::OR_EQUAL, K::COUNTED) {
+            (false, true) => rows_loop!("itte", "lo",
+                ["ldrd {x0}, {b}, [{s}, #96]", "sub {x0}, {x0}, {i}", "str {x0}, [{s}, #96]"],
+                ["addhs {b}, {b}, #1"], ["str {b}, [{s}, #100]"]; block, cptr, row_z, bits),
+            (true, true) => rows_loop!("itte", "ls",
+                ["ldrd {x0}, {b}, [{s}, #96]", "sub {x0}, {x0}, {i}", "str {x0}, [{s}, #96]"],
+                ["addhi {b}, {b}, #1"], ["str {b}, [{s}, #100]"]; block, cptr, row_z, bits),
+            (false, false) => rows_loop!("itt", "lo", [], [], []; block, cptr, row_z, bits),
+            (true, false) => rows_loop!("itt", "ls", [], [], []; block, cptr, row_z, bits),
+        }
+    }
 }
