@@ -556,9 +556,24 @@ impl TriangleSpans {
     /// The rows left as [`Runs`], for a target's own row loop; `Err(self)`, untouched, for a
     /// triangle whose edges are set up again on the way down (see [`EdgeWalk`]: none of the
     /// pipeline's).
+    #[cfg(test)]
+    pub(crate) fn runs(self) -> Result<Runs, Self> {
+        let mut runs = Runs {
+            edges: [EdgeWalk::ZERO; 3],
+            y: 0,
+            upper: 0,
+            rows: 0,
+            lower_is_left: false,
+        };
+        self.write_runs(&mut runs)?;
+        Ok(runs)
+    }
+
+    /// [`runs`](Self::runs) into `out` (left as it is on `Err`), field by field: the row loop
+    /// in assembly reads them where they are written.
     #[cfg(any(test, all(feature = "asm", fixed3d_thumb2)))]
     #[inline(always)]
-    pub(crate) fn runs(self) -> Result<Runs, Self> {
+    pub(crate) fn write_runs(self, out: &mut Runs) -> Result<(), Self> {
         if self.y_reseed != i32::MAX || self.y >= self.y_end {
             return Err(self);
         }
@@ -566,19 +581,18 @@ impl TriangleSpans {
         // lies after y while pending, `i32::MIN` once switched).
         let rows = self.y_end.wrapping_sub(self.y) as u32;
         let [_, b, c] = self.v;
-        let (upper, lower) = if self.y_split > self.y && self.y_split < self.y_end {
-            let upper = self.y_split.wrapping_sub(self.y) as u32;
-            (upper, edge(b, c, self.y_split, u32::MAX))
+        out.edges[0] = self.left;
+        out.edges[1] = self.right;
+        out.upper = if self.y_split > self.y && self.y_split < self.y_end {
+            out.edges[2] = edge(b, c, self.y_split, u32::MAX);
+            self.y_split.wrapping_sub(self.y) as u32
         } else {
-            (rows, EdgeWalk::ZERO)
+            rows
         };
-        Ok(Runs {
-            edges: [self.left, self.right, lower],
-            y: self.y,
-            upper,
-            rows,
-            lower_is_left: !self.long_is_left,
-        })
+        out.y = self.y;
+        out.rows = rows;
+        out.lower_is_left = !self.long_is_left;
+        Ok(())
     }
 
     /// The clip rectangle's columns `x0..x1` that the spans are clipped to.

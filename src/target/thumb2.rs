@@ -293,11 +293,14 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
     };
     // The triangle's first row in the buffers (frame rows from `first_row`).
     let first = spans.row().wrapping_sub(first_row) as u32;
-    let runs = spans.runs()?;
-    let (upper, rows, row_z) = (runs.upper, runs.rows, depth.row);
     let mut block = RowBlock {
-        slot: if runs.lower_is_left { 0 } else { 16 },
-        runs,
+        runs: Runs {
+            edges: [DivideStepper::ZERO; 3],
+            y: 0,
+            upper: 0,
+            rows: 0,
+            lower_is_left: false,
+        },
         step_x: depth.step_x,
         delta: 0,
         step_y: depth.step_y,
@@ -305,9 +308,19 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
         width: w,
         end: 0,
         last: 0,
+        slot: 0,
         fragments: 0,
         failed: 0,
     };
+    spans.write_runs(&mut block.runs)?;
+    let Runs {
+        upper,
+        rows,
+        lower_is_left,
+        ..
+    } = block.runs;
+    block.slot = if lower_is_left { 0 } else { 16 };
+    let row_z = depth.row;
     run_rows::<C, T, K>(&mut block, colors, depths, first, upper, rows, row_z, bits);
     if K::COUNTED {
         stats.fragments = stats.fragments.saturating_add(block.fragments);
