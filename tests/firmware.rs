@@ -70,6 +70,28 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
             (key, h)
         })
         .collect();
+    // The clipped variant does what it is there for: the near plane cuts triangles, and
+    // spans reach every side of the screen (clamped to the target's columns).
+    {
+        use fixed3d::mesh::Object;
+        use fixed3d::scene::Scene;
+        use fixed3d::shade::Flat;
+        use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+        let objects = [Object::new(&mesh, torus_model(0), ORANGE)];
+        let scene = Scene::new(&objects, sun());
+        let frame = clipped_frame(W, H).expect("frame");
+        let p = frame.prepare(&scene, &mut cache2, Flat).expect("prepare");
+        fb.fill(Rgb565::BLACK);
+        depth.fill(u16::MAX);
+        let mut c = FrameBuffer::new(&mut fb, W, H).expect("colour buffer");
+        let mut d = DepthBuffer::new(&mut depth, W, H).expect("depth buffer");
+        let stats = p.draw(&mut ColorDepth::new(&mut c, &mut d).expect("target"));
+        let stats = stats.expect("drawn");
+        assert!(stats.clipped > 50, "{stats:?}");
+        let lit = |x: u32, y: u32| fb[(y * W + x) as usize] != Rgb565::BLACK;
+        assert!((0..H).any(|y| lit(0, y)) && (0..H).any(|y| lit(W - 1, y)));
+        assert!((0..W).any(|x| lit(x, 0)) && (0..W).any(|x| lit(x, H - 1)));
+    }
     let rows = (W * BAND_ROWS) as usize;
     let (mut band, mut band_depth) = (vec![Rgb565::BLACK; rows], vec![0u16; rows]);
     let bands_hash =

@@ -26,7 +26,8 @@
 //! are [`Runs`], whose walk a host test checks against the Rust row loops; the firmware
 //! presets' frame hashes, equal to the host's, check both loops under emulation
 //! (`bench/mcu/run.sh`, in CI): the `variants` preset each of the four forms (depth test ×
-//! counted), on ties too, and `bands` a band's first row other than 0.
+//! counted), on ties too, and spans clamped to the target's columns (its `clipped`
+//! configuration), `bands` a band's first row other than 0.
 
 use core::mem::{align_of, size_of};
 

@@ -237,13 +237,23 @@ pub fn full(
     )
 }
 
-/// The `variants` preset's configurations: the depth tests and counts of `ColorDepth`.
-pub const VARIANTS: [&str; 4] = [
+/// The `variants` preset's configurations: the depth tests and counts of `ColorDepth`, then
+/// `clipped`, the strict counted target with the eye so close that the tori cross the near
+/// plane and every side of the screen (spans clamped to the target's columns, polygons cut by
+/// the near plane).
+pub const VARIANTS: [&str; 5] = [
     "less",
     "less-counted",
     "less-or-equal",
     "less-or-equal-counted",
+    "clipped",
 ];
+
+/// The `clipped` variant's frame: the eye at (0, 1.2, 1.2), looking down at the ring from
+/// 1.7 instead of 2.6, nearer than the torus's outer edge plus the near plane's distance.
+pub fn clipped_frame(w: u32, h: u32) -> Option<Frame> {
+    camera(w, h, Vec3::new(Scalar::ZERO, s(12, 10), s(12, 10)))
+}
 
 /// `full`'s torus drawn twice in frame `f`, orange then blue at the very same depths (a tie at
 /// every pixel: strictly nearer keeps the orange, nearer-or-equal shows the blue), through
@@ -262,8 +272,13 @@ pub fn variant(
         Object::new(mesh, torus_model(f), Rgb888::new(40, 90, 255)),
     ];
     let scene = Scene::new(&objects, sun());
+    let frame = if name == "clipped" {
+        clipped_frame(W, H)?
+    } else {
+        frame(W, H)?
+    };
     let stats = with_depth_target(
-        frame(W, H)?,
+        frame,
         &scene,
         Flat,
         cache,
@@ -276,7 +291,11 @@ pub fn variant(
                 p.draw(&mut target).ok()
             }
             "less-or-equal" => p.draw(&mut target.with_test(LessOrEqual).uncounted()).ok(),
-            _ => p.draw(&mut target.with_test(LessOrEqual)).ok(),
+            "less-or-equal-counted" => p.draw(&mut target.with_test(LessOrEqual)).ok(),
+            _ => {
+                let mut target = target;
+                p.draw(&mut target).ok()
+            }
         },
     )?;
     Some(stats.fragments.rotate_left(16) ^ stats.written)
