@@ -1,15 +1,26 @@
-//! Tells the crate whether its target runs Thumb-2 with IT blocks (ARMv7-M and ARMv8-M
-//! mainline: `thumbv7m`, `thumbv7em`, `thumbv8m.main`), where the `asm` feature's pixel loop
-//! (src/target/thumb2.rs) assembles; no `cfg` tells those apart from ARMv8-M baseline, which
-//! has the same atomics but neither IT blocks nor shifted register offsets.
+//! Tells the crate which Thumb instruction set its target runs, for the `asm` feature's loops:
+//! `fixed3d_thumb2` where it has IT blocks and a divide (ARMv7-M and ARMv8-M mainline:
+//! `thumbv7m`, `thumbv7em`, `thumbv8m.main`; src/target/thumb2.rs), `fixed3d_thumb1` on
+//! ARMv6-M (`thumbv6m`; src/target/thumb1.rs), and `fixed3d_thumb` for either. No `cfg` tells
+//! ARMv7-M from ARMv8-M baseline, which has the same atomics but neither IT blocks nor shifted
+//! register offsets, nor ARMv6-M's edge walk (the crate walks edges by the target's atomics):
+//! it gets neither.
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
-    println!("cargo:rustc-check-cfg=cfg(fixed3d_thumb2)");
+    for cfg in ["fixed3d_thumb", "fixed3d_thumb1", "fixed3d_thumb2"] {
+        println!("cargo:rustc-check-cfg=cfg({cfg})");
+    }
     let target = std::env::var("TARGET").unwrap_or_default();
-    if ["thumbv7m-", "thumbv7em-", "thumbv8m.main-"]
-        .iter()
-        .any(|prefix| target.starts_with(prefix))
-    {
-        println!("cargo:rustc-cfg=fixed3d_thumb2");
+    let starts = |prefixes: &[&str]| prefixes.iter().any(|p| target.starts_with(p));
+    let set = if starts(&["thumbv7m-", "thumbv7em-", "thumbv8m.main-"]) {
+        Some("fixed3d_thumb2")
+    } else if starts(&["thumbv6m-"]) {
+        Some("fixed3d_thumb1")
+    } else {
+        None
+    };
+    if let Some(cfg) = set {
+        println!("cargo:rustc-cfg={cfg}");
+        println!("cargo:rustc-cfg=fixed3d_thumb");
     }
 }

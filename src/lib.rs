@@ -8,8 +8,8 @@
     clippy::expect_used,
     clippy::panic
 )]
-// Without the `asm` feature no `unsafe` at all; with it, only target::thumb2's row and pixel
-// loops.
+// Without the `asm` feature no `unsafe` at all; with it, only the row and pixel loops of
+// target::thumb1 and target::thumb2, and target::arm's read of a colour's bytes.
 #![cfg_attr(not(feature = "asm"), forbid(unsafe_code))]
 #![cfg_attr(feature = "asm", deny(unsafe_code))]
 #![cfg_attr(test, allow(clippy::unwrap_used, clippy::expect_used, clippy::panic))]

@@ -47,6 +47,11 @@ CUTS = [
         "src/target/thumb2.rs",
         '            pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),',
         '            "b 4f",\n            pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),',
+    ), (
+        # The M0's row loop in Thumb-1.
+        "src/target/thumb1.rs",
+        '                "3:",\n                "lsrs r0, r2, #15",',
+        '                "b 4f",\n                "3:",\n                "lsrs r0, r2, #15",',
     )]),
     ("rows (edge stepping, clipping, depth walk)", "no spans", [(
         "src/target/surface.rs",
@@ -57,6 +62,10 @@ CUTS = [
         "src/target/thumb2.rs",
         '            "bge 4f",',
         '            "b 4f",',
+    ), (
+        "src/target/thumb1.rs",
+        '                "bge 4f",',
+        '                "b 4f",',
     )]),
     ("fill set-up (colour, depth walk: steps and start; first row)", "no rows", [(
         "src/target/surface.rs",
@@ -68,6 +77,11 @@ CUTS = [
         "    // SAFETY:\n    // - Memory: both slices",
         f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len(), cptr, bits)); "
         "return; }\n    // SAFETY:\n    // - Memory: both slices",
+    ), (
+        "src/target/thumb1.rs",
+        "    let block: *mut RowBlock = block;\n",
+        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return; }}\n"
+        "    let block: *mut RowBlock = block;\n",
     )]),
     ("span set-up (sorting, edge steppers)", "no fill set-up", [(
         "src/pipeline/draw.rs",

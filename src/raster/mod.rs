@@ -28,7 +28,7 @@ mod triangle;
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
 pub(crate) use triangle::spans_in_range;
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
+#[cfg(all(feature = "asm", fixed3d_thumb))]
 pub(crate) use triangle::Runs;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
@@ -281,7 +281,11 @@ fn floor_divmod32(n: i32, d: i32) -> (i32, i32) {
 /// Walks `ceil(N(k) / D)` or `floor(N(k) / D)` for `N(k) = N0 + k·step` over consecutive
 /// integers `k`, exactly, with an i32 quotient and remainder (Bresenham's error term). Used for
 /// triangle edges (ceil) and lines (floor).
+///
+/// Its five words lie in the order of its fields (`repr(C)`): the `asm` feature's row loop on
+/// Cortex-M0 (`target::thumb1`) reads them at offsets 0 to 16.
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub(crate) struct RationalStepper<const CEIL: bool> {
     /// The current value.
     pub value: i32,
@@ -306,11 +310,13 @@ pub(crate) type CeilStepper = RationalStepper<true>;
 pub(crate) type FloorStepper = RationalStepper<false>;
 
 impl<const CEIL: bool> RationalStepper<CEIL> {
-    /// The constant 0 (for iterators that yield nothing).
+    /// The constant 0 (for iterators that yield nothing, which never step it), all zero bytes
+    /// so that a block holding some is cleared rather than copied (Cortex-M0's `asm` row loop:
+    /// 1% of its frame).
     pub(crate) const ZERO: Self = RationalStepper {
         value: 0,
         rem: 0,
-        den: 1,
+        den: 0,
         step_q: 0,
         step_r: 0,
     };
@@ -515,6 +521,14 @@ impl DivideStepper {
         self.num = self.num.wrapping_add(self.step);
     }
 }
+
+// The layout `target::thumb1` reads: value, remainder, denominator, whole and fractional step.
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(CeilStepper, value) == 0 && offset_of!(CeilStepper, rem) == 4);
+    assert!(offset_of!(CeilStepper, den) == 8 && offset_of!(CeilStepper, step_q) == 12);
+    assert!(offset_of!(CeilStepper, step_r) == 16 && size_of::<CeilStepper>() == 20);
+};
 
 // The layout `target::thumb2` reads: numerator, step, denominator, base.
 #[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]

@@ -104,7 +104,7 @@ pub struct TriangleSpans {
 /// ([`TriangleSpans::columns`]), both edges stepped after each row; after the first `upper`
 /// rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge set up
 /// at that row, takes the place of the left edge if `lower_is_left`, else the right one.
-#[cfg(any(test, all(feature = "asm", fixed3d_thumb2)))]
+#[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 pub(crate) struct Runs {
@@ -113,6 +113,18 @@ pub(crate) struct Runs {
     pub(crate) upper: u32,
     pub(crate) rows: u32,
     pub(crate) lower_is_left: bool,
+}
+
+#[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
+impl Runs {
+    /// No rows (to be written by [`TriangleSpans::write_runs`]).
+    pub(crate) const EMPTY: Runs = Runs {
+        edges: [EdgeWalk::ZERO; 3],
+        y: 0,
+        upper: 0,
+        rows: 0,
+        lower_is_left: false,
+    };
 }
 
 /// The pixels a triangle covers, as spans clipped to `clip`, by the top-left rule (see the
@@ -558,23 +570,25 @@ impl TriangleSpans {
     /// pipeline's).
     #[cfg(test)]
     pub(crate) fn runs(self) -> Result<Runs, Self> {
-        let mut runs = Runs {
-            edges: [EdgeWalk::ZERO; 3],
-            y: 0,
-            upper: 0,
-            rows: 0,
-            lower_is_left: false,
-        };
+        let mut runs = Runs::EMPTY;
         self.write_runs(&mut runs)?;
         Ok(runs)
     }
 
     /// [`runs`](Self::runs) into `out` (left as it is on `Err`), field by field: the row loop
     /// in assembly reads them where they are written.
-    #[cfg(any(test, all(feature = "asm", fixed3d_thumb2)))]
+    #[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
     #[inline(always)]
     pub(crate) fn write_runs(self, out: &mut Runs) -> Result<(), Self> {
-        if self.y_reseed != i32::MAX || self.y >= self.y_end {
+        // (Cortex-M0's exact edges are never set up again.)
+        #[cfg(any(
+            target_pointer_width = "64",
+            all(target_pointer_width = "32", target_has_atomic = "32")
+        ))]
+        if self.y_reseed != i32::MAX {
+            return Err(self);
+        }
+        if self.y >= self.y_end {
             return Err(self);
         }
         // y < y_end: a positive count of rows, and of those above a split ahead (the split
@@ -596,7 +610,7 @@ impl TriangleSpans {
     }
 
     /// The clip rectangle's columns `x0..x1` that the spans are clipped to.
-    #[cfg(any(test, all(feature = "asm", fixed3d_thumb2)))]
+    #[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
     #[inline(always)]
     pub(crate) fn columns(&self) -> (i32, i32) {
         (self.x_min, self.x_max)

@@ -10,11 +10,15 @@
 //! - [`Nearest`] and [`OrderedDither`] turn the shaded 24-bit colour into the target's colour;
 //!   the dither keeps shading visible on 1-bit and grey displays.
 
+#[cfg(all(feature = "asm", fixed3d_thumb))]
+mod arm;
 mod depth;
 mod dither;
 mod framebuffer;
 mod grid;
 mod surface;
+#[cfg(all(feature = "asm", fixed3d_thumb1))]
+mod thumb1;
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
 mod thumb2;
 

@@ -12,8 +12,10 @@ use super::depth::{
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
+#[cfg(all(feature = "asm", fixed3d_thumb1))]
+use super::thumb1 as rows_asm;
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
-use super::thumb2;
+use super::thumb2 as rows_asm;
 use crate::pipeline::Stats;
 use crate::raster::{PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans};
 use crate::shade::Paint;
@@ -214,8 +216,8 @@ where
         match unclamped {
             Some((rows, st)) => {
                 // With the `asm` feature, a solid colour of 2 bytes into u16 depth takes the
-                // row loop in Thumb-2 (spans the pipeline's triangles always have).
-                #[cfg(all(feature = "asm", fixed3d_thumb2))]
+                // row loop in assembly (spans the pipeline's triangles always have).
+                #[cfg(all(feature = "asm", fixed3d_thumb))]
                 let spans = match solid.and_then(|s| s.bits()) {
                     Some(bits) => match self.solid_rows(spans, &rows, bits, stats) {
                         Ok(()) => return,
@@ -242,8 +244,9 @@ where
         }
     }
 
-    /// [`thumb2::solid_rows`] into these buffers, when the depth format is u16.
-    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    /// The row loop in assembly (`thumb1::solid_rows` or `thumb2::solid_rows`) into these
+    /// buffers, when the depth format is u16.
+    #[cfg(all(feature = "asm", fixed3d_thumb))]
     #[inline(always)]
     fn solid_rows(
         &mut self,
@@ -257,7 +260,7 @@ where
             return Err(spans);
         };
         let colors = self.color.cells_all_mut();
-        thumb2::solid_rows::<C, T, K>(
+        rows_asm::solid_rows::<C, T, K>(
             spans,
             rows,
             colors,

@@ -1,6 +1,6 @@
 //! The u16 depth loops of solid-coloured triangles in hand-written Thumb-2, for Cortex-M3, M4
-//! and M7 (ARMv7-M) and ARMv8-M mainline cores, with the `asm` feature (the only `unsafe`
-//! code of the crate; without the feature the crate forbids it).
+//! and M7 (ARMv7-M) and ARMv8-M mainline cores, with the `asm` feature (with thumb1.rs and
+//! arm.rs the only `unsafe` code of the crate; without the feature the crate forbids it).
 //!
 //! The pixel loop: nine instructions a pixel (ten when fragments are counted): the depth from
 //! the loop's value by a shift, the stored depth loaded, compared, and both stores predicated
@@ -31,6 +31,7 @@
 
 use core::mem::{align_of, size_of};
 
+use super::arm;
 use super::depth::{DepthTest, FragmentCount, RoundedRows};
 use crate::pipeline::Stats;
 use crate::raster::{DivideStepper, Runs, TriangleSpans};
@@ -70,30 +71,7 @@ macro_rules! span_loop {
     };
 }
 
-/// The two bytes of a colour of 2 bytes and alignment 2, as a word for [`solid_span`]; `None`
-/// for other colour types (their spans take the caller's loop).
-#[inline(always)]
-#[allow(unsafe_code)]
-pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {
-    if size_of::<C>() != 2 || align_of::<C>() != 2 {
-        return None;
-    }
-    let bits: u32;
-    // SAFETY: reads the two bytes at `color` (a valid reference to 2 bytes, aligned to 2) into
-    // a register; no Rust value is made of them (they could be padding for some `C`), and
-    // the block reads nothing else and writes no memory.
-    unsafe {
-        core::arch::asm!(
-            "ldrh {bits}, [{color}]",
-            bits = out(reg) bits,
-            color = in(reg) color as *const C,
-            options(pure, readonly, nostack, preserves_flags)
-        );
-    }
-    Some(bits)
-}
-
-/// Depth-tests a span whose every pixel has the colour whose two bytes [`color_bits`] gave as
+/// Depth-tests a span whose every pixel has the colour whose two bytes [`color_bits`](super::arm::color_bits) gave as
 /// `bits` (so `C` has 2 bytes and alignment 2): the loop's value `acc` (in [0, 2³¹) at every
 /// pixel, see `DepthFormat::unclamped`) stepped by `st`. Returns the failures so far: `failed`
 /// plus the span's, when `K` counts them.
@@ -125,7 +103,7 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     //   which this function borrows mutably (n ≤ both lengths, n ≥ 1); it touches nothing
     //   else, and no stack (`nostack`).
     // - Values: a depth cell gets a u16 (any bit pattern is one). A colour cell gets `bits`,
-    //   the two bytes of a valid `C` (see `color_bits`) unchanged: a byte-for-byte copy of a
+    //   the two bytes of a valid `C` (see `arm::color_bits`) unchanged: a byte-for-byte copy of a
     //   valid value is the same valid value, exactly what `*cell = color` stores.
     // - Termination: i starts at −n (n < 2³¹ for a slice of 2-byte cells on a 32-bit core)
     //   and rises by one to 0, where the loop ends; `acc` wraps by definition (it never does
@@ -267,7 +245,7 @@ macro_rules! rows_loop {
     };
 }
 
-/// Fills a triangle's spans whose every pixel has the colour whose two bytes [`color_bits`]
+/// Fills a triangle's spans whose every pixel has the colour whose two bytes [`color_bits`](super::arm::color_bits)
 /// gave as `bits` into u16 depth and colour buffers of `width` pixels a row holding frame
 /// rows from `first_row`, its depths from the walk `depth` (every value in [0, 2³¹), see
 /// `DepthFormat::unclamped`): what the span loop over
@@ -288,20 +266,11 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
     bits: u32,
     stats: &mut Stats,
 ) -> Result<(), TriangleSpans> {
-    let w = match i32::try_from(width) {
-        Ok(w) if w > 0 && spans.columns() == (0, w) => w,
-        _ => return Err(spans),
+    let Some((w, first)) = arm::row_frame(&spans, first_row, width) else {
+        return Err(spans);
     };
-    // The triangle's first row in the buffers (frame rows from `first_row`).
-    let first = spans.row().wrapping_sub(first_row) as u32;
     let mut block = RowBlock {
-        runs: Runs {
-            edges: [DivideStepper::ZERO; 3],
-            y: 0,
-            upper: 0,
-            rows: 0,
-            lower_is_left: false,
-        },
+        runs: Runs::EMPTY,
         step_x: depth.step_x,
         delta: 0,
         step_y: depth.step_y,
@@ -323,13 +292,7 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
     block.slot = if lower_is_left { 0 } else { 16 };
     let row_z = depth.row;
     run_rows::<C, T, K>(&mut block, colors, depths, first, upper, rows, row_z, bits);
-    if K::COUNTED {
-        stats.fragments = stats.fragments.saturating_add(block.fragments);
-        // Each failed fragment was counted among the fragments: no wrap.
-        stats.written = stats
-            .written
-            .saturating_add(block.fragments.wrapping_sub(block.failed));
-    }
+    arm::add_counts::<K>(stats, block.fragments, block.failed);
     Ok(())
 }
 
@@ -353,15 +316,7 @@ fn run_rows<C: Copy, T: DepthTest, K: FragmentCount>(
     // The rows' cells in both buffers, and the other conditions the block relies on, checked
     // here (constants, or known to the caller: compiled away).
     let width = usize::try_from(block.width).unwrap_or(0);
-    let cells = (first as usize).checked_mul(width).and_then(|start| {
-        let end = start.checked_add((rows as usize).checked_mul(width)?)?;
-        Some(start..end)
-    });
-    let Some(cells) = cells else {
-        return;
-    };
-    let (Some(colors), Some(depths)) = (colors.get_mut(cells.clone()), depths.get_mut(cells))
-    else {
+    let Some((colors, depths)) = arm::run_cells(colors, depths, first, rows, width) else {
         return;
     };
     if width == 0
@@ -391,7 +346,7 @@ fn run_rows<C: Copy, T: DepthTest, K: FragmentCount>(
     //   16: bytes 0 to 31), `end` (84) and, counted, its counts (96, 100); nothing else, and
     //   no stack (`nostack`).
     // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid `C`
-    //   (see `color_bits`) unchanged; an edge gets a copy of a valid edge or a new
+    //   (see `arm::color_bits`) unchanged; an edge gets a copy of a valid edge or a new
     //   numerator (any u32), `end` the address `last`, the counts u32s.
     // - Division: every denominator is a `NonZeroU32` (an edge's den), never 0.
     // - Termination: each row ends with i rising by one to 0 from x0 − x1 ≥ −width. `cptr`
