@@ -129,8 +129,8 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.7% fewer
-  instructions per frame (4.4% with the \`asm\` loops, which then need no count either), the
-  M0 2.2%, x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
+  instructions per frame (4.9% with the \`asm\` loops, which then need no count either), the
+  M0 2.1% (1.7% with its \`asm\` loop), x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
   it cost a load and a branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
@@ -179,11 +179,22 @@ $stages
   edge set up beforehand and copied over its side by the loop. Its set-up (the edges copied
   into the block, the buffers' cells checked once a triangle) costs about 60 instructions a
   triangle more than the compiled loop's (\`profile.py\`), where a triangle's 8 rows save
-  about 20 each: the frame 3.3% fewer instructions (1.722 M → 1.664 M), 480 bytes more
-  flash. Made of two runs a triangle, each set up apart, it saved 1.5%. (In the stage
+  about 20 each: the frame 4.6% fewer instructions (1.722 M → 1.642 M), about 400 bytes
+  more flash. Made of two runs a triangle, each set up apart, it saved 1.5%. (In the stage
   table the M4's fill set-up includes that set-up and the lower short edge's, which the
-  compiled loop sets up among its rows; the cut before the assembly moves more code than
-  the others, so that the M4's rows, span entries and fill set-up are best read together.) On Cortex-M the rows run
+  compiled loop sets up among its rows, and so does the M0's below; the cut before the
+  assembly moves more code than the others, so that on both cores the rows, span entries
+  and fill set-up are best read together.)
+  On the M0 the \`asm\` feature's row loop is Thumb-1, a naked function: inline assembly
+  there gets six registers and the pixel loop needs eight, so the function saves r8 to r11
+  and keeps the step along a row, the colour, the depth walk, the row's address and the
+  width there. It walks the same exact edges from the same kind of block: 25 instructions a
+  row (3 more when an edge's remainder borrows) and 9 to enter a span, against about 60 for
+  the compiled row loop; its pixel loop takes what the compiler's does (10 instructions, 7
+  for a fragment that loses). The M0's frame 3.1% fewer instructions (3.536 M → 3.426 M),
+  540 bytes more flash; its set-up clears the block (a ceiling walk's zero is all zero
+  bytes: copied from a constant, it took a library call, 1% of the frame) and checks the
+  run's cells without 64-bit products (2%). On Cortex-M the compiled rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
   below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
   state between stack slots, 26 instructions a run on the M0 (one loop: 0.7% fewer
@@ -265,8 +276,8 @@ $stages
   dozens of pieces of 5 to 25 instructions: about 0.48 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
-  25 a row against about 49), and the same loops cannot serve the M0 (Thumb-1 inline
-  assembly gets six registers, the pixel loop alone needs eight). On the M0 the vertex
+  25 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, the
+  pixels as the compiler's). On the M0 the vertex
   stage (0.72 M, about 630
   a vertex, of which the transform and the divisions by w take about 200 each) and the depth
   walk's two divisions (6.6% of its frame) come first. The rest would need less work per
