@@ -31,8 +31,8 @@ pub(super) fn add_counts<K: FragmentCount>(stats: &mut Stats, fragments: u32, fa
     }
 }
 
-/// The two bytes of a colour of 2 bytes and alignment 2, as a word for the loops in assembly; `None`
-/// for other colour types (their spans take the caller's loop).
+/// The two bytes of a colour of 2 bytes and alignment 2, as a word for the loops in assembly;
+/// `None` for other colour types (their spans take the caller's loop).
 #[inline(always)]
 #[allow(unsafe_code)]
 pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {

@@ -71,9 +71,10 @@ macro_rules! span_loop {
     };
 }
 
-/// Depth-tests a span whose every pixel has the colour whose two bytes [`color_bits`](super::arm::color_bits) gave as
-/// `bits` (so `C` has 2 bytes and alignment 2): the loop's value `acc` (in [0, 2³¹) at every
-/// pixel, see `DepthFormat::unclamped`) stepped by `st`. Returns the failures so far: `failed`
+/// Depth-tests a span whose every pixel has the colour whose two bytes
+/// [`color_bits`](super::arm::color_bits) gave as `bits` (so `C` has 2 bytes and alignment
+/// 2): the loop's value `acc` (in [0, 2³¹) at every pixel, see `DepthFormat::unclamped`)
+/// stepped by `st`. Returns the failures so far: `failed`
 /// plus the span's, when `K` counts them.
 #[inline(always)]
 #[allow(unsafe_code)]
@@ -177,9 +178,10 @@ const _: () = {
 
 /// The row loop in assembly: `$it` and `$pass` as in `pixels!`, then the count's
 /// instructions before the pixel loop, in it, and after it (none uncounted), then the block's
-/// address, the first row's colour address, the depth walk's value and the colour's bits. A row: each edge's span end (one division of its numerator, which then steps),
-/// the span clamped to `0..width`, and where it holds pixels the depth at its first one and
-/// the pixel loop; then the depth walk and the row address step down. At the end of the
+/// address, the first row's colour address, the depth walk's value and the colour's bits. A
+/// row: each edge's span end (one division of its numerator, which then steps), the span
+/// clamped to `0..width`, and where it holds pixels the depth at its first one and the pixel
+/// loop; then the depth walk and the row address step down. At the end of the
 /// first run the lower short edge takes its side, and the second run goes on to `last`.
 macro_rules! rows_loop {
     ($it:literal, $pass:literal, [$($before:literal),*], [$($count:literal)?],
@@ -237,18 +239,18 @@ macro_rules! rows_loop {
             "strd {c}, {d}, [{b}, #8]",
             "b 2b",
             "5:",
-            s = in(reg) $block as *mut RowBlock, cptr = inout(reg) $cptr => _, rowz = inout(reg) $rowz => _,
-            col = in(reg) $bits, a = out(reg) _, b = out(reg) _, c = out(reg) _,
+            s = in(reg) $block as *mut RowBlock, cptr = inout(reg) $cptr => _,
+            rowz = inout(reg) $rowz => _, col = in(reg) $bits, a = out(reg) _, b = out(reg) _, c = out(reg) _,
             d = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
             acc = out(reg) _, options(nostack),
         )
     };
 }
 
-/// Fills a triangle's spans whose every pixel has the colour whose two bytes [`color_bits`](super::arm::color_bits)
-/// gave as `bits` into u16 depth and colour buffers of `width` pixels a row holding frame
-/// rows from `first_row`, its depths from the walk `depth` (every value in [0, 2³¹), see
-/// `DepthFormat::unclamped`): what the span loop over
+/// Fills a triangle's spans whose every pixel has the colour whose two bytes
+/// [`color_bits`](super::arm::color_bits) gave as `bits` into u16 depth and colour buffers of
+/// `width` pixels a row holding frame rows from `first_row`, its depths from the walk `depth`
+/// (every value in [0, 2³¹), see `DepthFormat::unclamped`): what the span loop over
 /// [`for_each_row`](TriangleSpans::for_each_row) with [`solid_span`] does, the counts into
 /// `stats` when `K` counts, with the whole row loop in assembly. `Err(spans)`, untouched,
 /// where the spans are not clipped to `0..width` and the buffers' rows, or their edges are
