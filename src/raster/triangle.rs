@@ -98,9 +98,9 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
-/// A triangle's rows for a target's own row loop ([`TriangleSpans::runs`]): starting at row
-/// `y` with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's span
-/// `max(left, x0)..min(right, x1)` for the clip rectangle's columns
+/// A triangle's rows for a target's own row loop ([`TriangleSpans::write_runs`]): starting at
+/// row `y` with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's
+/// span `max(left, x0)..min(right, x1)` for the clip rectangle's columns
 /// ([`TriangleSpans::columns`]), both edges stepped after each row; after the first `upper`
 /// rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge set up
 /// at that row, takes the place of the left edge if `lower_is_left`, else the right one.
@@ -565,9 +565,7 @@ impl TriangleSpans {
         }
     }
 
-    /// The rows left as [`Runs`], for a target's own row loop; `Err(self)`, untouched, for a
-    /// triangle whose edges are set up again on the way down (see [`EdgeWalk`]: none of the
-    /// pipeline's).
+    /// [`write_runs`](Self::write_runs) into a new [`Runs`] (the tests' form).
     #[cfg(test)]
     pub(crate) fn runs(self) -> Result<Runs, Self> {
         let mut runs = Runs::EMPTY;
@@ -575,8 +573,10 @@ impl TriangleSpans {
         Ok(runs)
     }
 
-    /// [`runs`](Self::runs) into `out` (left as it is on `Err`), field by field: the row loop
-    /// in assembly reads them where they are written.
+    /// The rows left as [`Runs`] into `out`, for a target's own row loop, field by field (the
+    /// row loops in assembly read them where they are written); `Err(self)`, untouched, and
+    /// `out` as it was, for a triangle without rows or whose edges are set up again on the way
+    /// down (see [`EdgeWalk`]: none of the pipeline's).
     #[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
     #[inline(always)]
     pub(crate) fn write_runs(self, out: &mut Runs) -> Result<(), Self> {

@@ -240,8 +240,8 @@ macro_rules! rows_loop {
             "b 2b",
             "5:",
             s = in(reg) $block as *mut RowBlock, cptr = inout(reg) $cptr => _,
-            rowz = inout(reg) $rowz => _, col = in(reg) $bits, a = out(reg) _, b = out(reg) _, c = out(reg) _,
-            d = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
+            rowz = inout(reg) $rowz => _, col = in(reg) $bits, a = out(reg) _, b = out(reg) _,
+            c = out(reg) _, d = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
             acc = out(reg) _, options(nostack),
         )
     };
