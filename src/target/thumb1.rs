@@ -4,15 +4,16 @@
 //!
 //! A whole triangle's rows, both runs (above and below its middle vertex), in one naked
 //! function: inline assembly on ARMv6-M gets six registers, and the pixel loop alone needs
-//! eight, so the function saves and uses the high registers r8 to r11 as the calling
-//! convention lets it (the step along a row and the colour in r8 and r9, which the pixel
-//! loop adds and moves from; the depth walk, the row's address and the width in r10 to r12).
-//! The edges and the triangle's constants live in one block in memory ([`RowBlock`]), the
-//! edges as the exact quotient-and-remainder walk (`CeilStepper`) the compiled loop steps. A
-//! row takes 25 instructions (3 more for each edge whose remainder borrows) and 9 more to
-//! enter a span, where the compiled row loop took about 60; a pixel 10 instructions (7 when
-//! the fragment loses), as the compiler's loop did. The reference frame on the Cortex-M0
-//! 3.1% fewer instructions (3.536 M → 3.426 M), 540 bytes more flash.
+//! eight, so the function saves and uses the high registers r8 to r11 and lr as the calling
+//! convention lets it: the step along a row in r8, which the pixel loop adds; the colour in
+//! r9, moved into r6 for each span while the block's address waits in lr; the depth walk,
+//! the row's address and the width in r10 to r12. The edges and the triangle's constants live
+//! in one block in memory ([`RowBlock`]), the edges as the exact quotient-and-remainder walk
+//! (`CeilStepper`) the compiled loop steps, each edge's five words loaded by one `ldm`. A row
+//! takes 28 instructions (2 more for each edge whose remainder borrows) and 10 more to enter
+//! a span, where the compiled row loop took about 60; a pixel 9 instructions (7 when the
+//! fragment loses), where the compiler's loop took 10. The reference frame on the Cortex-M0
+//! 4.8% fewer instructions (3.536 M → 3.367 M), 530 bytes more flash.
 //!
 //! It computes exactly what the Rust loops compute: the same span ends (the same steps of the
 //! same quotients and remainders, clamped to the same columns), the same depths (`acc >> 15`,
@@ -92,7 +93,8 @@ macro_rules! rows_fn {
     (counted $name:ident, $fail:literal) => {
         rows_fn!($name, $fail,
             ["asrs r1, r3, #1", "ldr r0, [r6, #120]", "subs r0, r0, r1", "str r0, [r6, #120]"],
-            ["b 4f", "5:", "ldr r0, [r6, #124]", "adds r0, #1", "str r0, [r6, #124]", "b 6b"]);
+            ["b 4f", "5:", "mov r0, lr", "ldr r1, [r0, #124]", "adds r1, #1", "str r1, [r0, #124]",
+             "b 6b"]);
     };
     ($name:ident, $fail:literal, [$($span:literal),*], [$($tail:literal),*]) => {
         /// The row loop (see `rows_fn!`) on the block at `block`.
@@ -110,8 +112,9 @@ macro_rules! rows_fn {
                 "mov r6, r10",
                 "mov r7, r11",
                 "push {{r4, r5, r6, r7}}",
-                // The block in r6; the step, colour, walk, row and width above r7.
+                // The block in r6 and lr; the step, colour, walk, row and width above r7.
                 "mov r6, r0",
+                "mov lr, r0",
                 "ldr r0, [r6, #76]",
                 "mov r8, r0",
                 "ldr r0, [r6, #108]",
@@ -123,55 +126,52 @@ macro_rules! rows_fn {
                 "ldr r0, [r6, #92]",
                 "mov r12, r0",
                 "2:",
-                // Left end x0 (r0); its walk steps.
-                "ldr r0, [r6, #0]",
-                "ldr r1, [r6, #12]",
-                "adds r2, r0, r1",
-                "ldr r1, [r6, #4]",
-                "ldr r3, [r6, #16]",
-                "subs r1, r1, r3",
-                "bpl 7f",
-                "ldr r3, [r6, #8]",
-                "adds r1, r1, r3",
-                "adds r2, #1",
-                "7:",
-                "str r2, [r6, #0]",
-                "str r1, [r6, #4]",
-                // Right end x1 (r3); its walk steps.
-                "ldr r3, [r6, #20]",
-                "ldr r1, [r6, #32]",
-                "adds r2, r3, r1",
-                "ldr r1, [r6, #24]",
-                "ldr r4, [r6, #36]",
+                // Left end x0 (r0): the edge's five words loaded at once (value, remainder,
+                // denominator, whole step, remainder's step), r5 left at the right edge; the
+                // walk steps.
+                "mov r5, r6",
+                "ldm r5!, {{r0, r1, r2, r3, r4}}",
+                "adds r3, r0, r3",
                 "subs r1, r1, r4",
+                "bpl 7f",
+                "adds r1, r1, r2",
+                "adds r3, #1",
+                "7:",
+                "str r3, [r6, #0]",
+                "str r1, [r6, #4]",
+                // Right end x1 (r1); its walk steps.
+                "ldm r5, {{r1, r2, r3, r4, r5}}",
+                "adds r4, r1, r4",
+                "subs r2, r2, r5",
                 "bpl 8f",
-                "ldr r4, [r6, #28]",
-                "adds r1, r1, r4",
-                "adds r2, #1",
+                "adds r2, r2, r3",
+                "adds r4, #1",
                 "8:",
-                "str r2, [r6, #20]",
-                "str r1, [r6, #24]",
+                "str r4, [r6, #20]",
+                "str r2, [r6, #24]",
                 // x0 = max(x0, 0), x1 = min(x1, width); no pixels unless x0 < x1 (signed).
-                "asrs r1, r0, #31",
-                "bics r0, r1",
-                "mov r1, r12",
-                "cmp r3, r1",
+                "asrs r2, r0, #31",
+                "bics r0, r2",
+                "mov r2, r12",
+                "cmp r1, r2",
                 "ble 9f",
-                "mov r3, r1",
+                "mov r1, r2",
                 "9:",
-                "cmp r0, r3",
+                "cmp r0, r1",
                 "bge 4f",
                 // The depth at x0; both buffers addressed from their cell x1.
                 "mov r2, r8",
                 "muls r2, r0, r2",
                 "add r2, r10",
-                "lsls r4, r3, #1",
+                "lsls r4, r1, #1",
                 "add r4, r11",
                 "ldr r5, [r6, #80]",
                 "adds r5, r5, r4",
-                "subs r3, r0, r3",
+                "subs r3, r0, r1",
                 "lsls r3, r3, #1",
                 $($span,)*
+                // The colour in r6 for the pixel loop (the block stays in lr).
+                "mov r6, r9",
                 "3:",
                 "lsrs r0, r2, #15",
                 "ldrh r1, [r5, r3]",
@@ -179,14 +179,14 @@ macro_rules! rows_fn {
                 "cmp r0, r1",
                 $fail,
                 "strh r0, [r5, r3]",
-                "mov r0, r9",
-                "strh r0, [r4, r3]",
+                "strh r6, [r4, r3]",
                 "6:",
                 "adds r3, #2",
                 "bne 3b",
                 $($tail,)*
                 "4:",
                 // Next row: the depth walk and the row address; the run ends at `end`.
+                "mov r6, lr",
                 "ldr r0, [r6, #84]",
                 "add r10, r0",
                 "ldr r0, [r6, #88]",
