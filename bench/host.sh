@@ -130,7 +130,7 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.7% fewer
   instructions per frame (4.9% with the \`asm\` loops, which then need no count either), the
-  M0 2.1% (1.7% with its \`asm\` loop), x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
+  M0 2.1% (1.8% with its \`asm\` loop), x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
   it cost a load and a branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
@@ -187,12 +187,14 @@ $stages
   and fill set-up are best read together.)
   On the M0 the \`asm\` feature's row loop is Thumb-1, a naked function: inline assembly
   there gets six registers and the pixel loop needs eight, so the function saves r8 to r11
-  and keeps the step along a row, the colour, the depth walk, the row's address and the
-  width there. It walks the same exact edges from the same kind of block: 25 instructions a
-  row (3 more when an edge's remainder borrows) and 9 to enter a span, against about 60 for
-  the compiled row loop; its pixel loop takes what the compiler's does (10 instructions, 7
-  for a fragment that loses). The M0's frame 3.1% fewer instructions (3.536 M → 3.426 M),
-  540 bytes more flash; its set-up clears the block (a ceiling walk's zero is all zero
+  and lr and keeps the step along a row, the colour, the depth walk, the row's address, the
+  width and the block's address there. It walks the same exact edges from the same kind of
+  block, each edge's five words loaded by one \`ldm\` (1.3% of the frame against a load a
+  word): 28 instructions a row (2 more when an edge's remainder borrows) and 10 to enter a
+  span, against about 60 for the compiled row loop; its pixel loop 9 instructions (7 for a
+  fragment that loses) against the compiler's 10, the colour moved into a low register for
+  each span (0.4%). The M0's frame 4.8% fewer instructions (3.536 M → 3.367 M), 530 bytes
+  more flash; its set-up clears the block (a ceiling walk's zero is all zero
   bytes: copied from a constant, it took a library call, 1% of the frame) and checks the
   run's cells without 64-bit products (2%). On Cortex-M the compiled rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
@@ -276,8 +278,8 @@ $stages
   dozens of pieces of 5 to 25 instructions: about 0.48 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
-  25 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, the
-  pixels as the compiler's). On the M0 the vertex
+  25 a row against about 49), and so are the M0's (Thumb-1: 28 a row against about 60, 9 a
+  pixel against 10). On the M0 the vertex
   stage (0.72 M, about 630
   a vertex, of which the transform and the divisions by w take about 200 each) and the depth
   walk's two divisions (6.6% of its frame) come first. The rest would need less work per
