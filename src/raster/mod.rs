@@ -28,9 +28,9 @@ mod triangle;
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
 pub(crate) use triangle::spans_in_range;
-#[cfg(all(feature = "asm", fixed3d_thumb))]
-pub(crate) use triangle::Runs;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
+#[cfg(all(feature = "asm", fixed3d_thumb))]
+pub(crate) use triangle::{EdgeWalk, Runs};
 
 use embedded_graphics::primitives::Rectangle;
 

@@ -50,16 +50,16 @@ const HALF: i64 = S / 2;
 /// triangles the pipeline draws); elsewhere the exact [`CeilStepper`](super::CeilStepper),
 /// whose set-up needs no 64-bit division (a library routine on 32-bit cores).
 #[cfg(target_pointer_width = "64")]
-type EdgeWalk = FractionStepper;
+pub(crate) type EdgeWalk = FractionStepper;
 /// The walk of an edge's span ends: see the 64-bit definition.
 #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
-type EdgeWalk = DivideStepper;
+pub(crate) type EdgeWalk = DivideStepper;
 /// The walk of an edge's span ends: see the 64-bit definition.
 #[cfg(not(any(
     target_pointer_width = "64",
     all(target_pointer_width = "32", target_has_atomic = "32")
 )))]
-type EdgeWalk = CeilStepper;
+pub(crate) type EdgeWalk = CeilStepper;
 
 /// One row of covered pixels: `x0..x1` (exclusive) on row `y`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -98,9 +98,9 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
-/// A triangle's rows for a target's own row loop ([`TriangleSpans::write_runs`]): starting at
-/// row `y` with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's
-/// span `max(left, x0)..min(right, x1)` for the clip rectangle's columns
+/// A triangle's rows for a target's own row loop ([`TriangleSpans::write_runs`]): from the
+/// spans' first row with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows,
+/// each row's span `max(left, x0)..min(right, x1)` for the clip rectangle's columns
 /// ([`TriangleSpans::columns`]), both edges stepped after each row; after the first `upper`
 /// rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge set up
 /// at that row, takes the place of the left edge if `lower_is_left`, else the right one.
@@ -109,7 +109,6 @@ pub struct TriangleSpans {
 #[repr(C)]
 pub(crate) struct Runs {
     pub(crate) edges: [EdgeWalk; 3],
-    pub(crate) y: i32,
     pub(crate) upper: u32,
     pub(crate) rows: u32,
     pub(crate) lower_is_left: bool,
@@ -120,7 +119,6 @@ impl Runs {
     /// No rows (to be written by [`TriangleSpans::write_runs`]).
     pub(crate) const EMPTY: Runs = Runs {
         edges: [EdgeWalk::ZERO; 3],
-        y: 0,
         upper: 0,
         rows: 0,
         lower_is_left: false,
@@ -603,7 +601,6 @@ impl TriangleSpans {
         } else {
             rows
         };
-        out.y = self.y;
         out.rows = rows;
         out.lower_is_left = !self.long_is_left;
         Ok(())

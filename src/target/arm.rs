@@ -1,34 +1,155 @@
-//! What the `asm` feature's loops on Cortex-M share (src/target/thumb1.rs on ARMv6-M,
-//! src/target/thumb2.rs on ARMv7-M and ARMv8-M mainline): a solid colour's two bytes, and the
-//! row loops' checks and counts around the assembly.
+//! What the `asm` feature's row loops on Cortex-M share (src/target/thumb1.rs on ARMv6-M,
+//! src/target/thumb2.rs on ARMv7-M and ARMv8-M mainline): the block they read, filled in and
+//! checked here, and a solid colour's two bytes. Each core's module holds its assembly and the
+//! proof that it keeps to the block's contract ([`RowBlock`]).
 
 use core::mem::{align_of, size_of};
 
-use super::depth::FragmentCount;
+use super::depth::{DepthTest, FragmentCount, RoundedRows};
+#[cfg(fixed3d_thumb1)]
+use super::thumb1 as core_rows;
+#[cfg(fixed3d_thumb2)]
+use super::thumb2 as core_rows;
 use crate::pipeline::Stats;
-use crate::raster::TriangleSpans;
+use crate::raster::{EdgeWalk, Runs, TriangleSpans};
 
-/// The row loops' width of a row as their assembly reads it, and the triangle's first row in
-/// the buffers (which hold frame rows from `first_row`); `None` where the spans are not
-/// clipped to the buffers' columns `0..width` (which the assembly clamps them to).
-#[inline(always)]
-pub(super) fn row_frame(spans: &TriangleSpans, first_row: i32, width: u32) -> Option<(i32, u32)> {
-    match i32::try_from(width) {
-        Ok(w) if w > 0 && spans.columns() == (0, w) => {
-            Some((w, spans.row().wrapping_sub(first_row) as u32))
-        }
-        _ => None,
-    }
+/// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
+/// steps; elsewhere its numerator, step, denominator and base).
+pub(super) const EDGE: usize = size_of::<EdgeWalk>();
+
+/// What a row loop in assembly reads and writes, each field at its `offset_of!` (which the
+/// assembly takes as `const` operands): a triangle's runs of rows, its edges first, then its
+/// depth walk, the buffers' layout, where the runs end, the colour and the counts.
+///
+/// Contract of the loops (`thumb1::rows`, `thumb2::rows`), which [`solid_rows`] establishes
+/// and checks before it calls them:
+/// - `row` is the address of the first of `rows · width` cells of a colour buffer (2 bytes a
+///   cell, aligned to 2) and `row + delta` that of the same cells of a u16 depth buffer, both
+///   borrowed mutably for the call, with `runs.rows ≥ 1` and `width > 0`;
+/// - `stride` is `2 · width`, `end` is `row + upper · stride` with `1 ≤ runs.upper ≤
+///   runs.rows`, and `last` is `row + rows · stride`;
+/// - `slot` is the offset of the edge the lower short edge replaces: 0 (left) or one edge's
+///   size (right);
+/// - `bits` holds the two bytes of a valid colour of the buffer's type.
+#[repr(C)]
+pub(super) struct RowBlock {
+    /// Left, right and the lower short edge (`runs.edges`), and the rows.
+    pub(super) runs: Runs,
+    /// The depth walk's step along a row, then the depth buffer's address less the colour
+    /// buffer's (read as a pair).
+    pub(super) step_x: i32,
+    pub(super) delta: usize,
+    /// The depth walk's step down a column, then the bytes from one row to the next (a pair).
+    pub(super) step_y: i32,
+    pub(super) stride: usize,
+    /// Pixels a row: spans are clamped to `0..width`.
+    pub(super) width: i32,
+    /// The colour address one past the current run's last row, then past the triangle's
+    /// (`last`) and the offset of the edge the lower short edge replaces (`slot`, a pair).
+    pub(super) end: usize,
+    pub(super) last: usize,
+    pub(super) slot: usize,
+    /// The colour's two bytes, the depth walk at column 0 of the first row, and the colour
+    /// address of the first row.
+    pub(super) bits: u32,
+    pub(super) row_z: i32,
+    pub(super) row: usize,
+    /// Fragments tested and fragments that failed, when counted (a pair).
+    pub(super) fragments: u32,
+    pub(super) failed: u32,
 }
 
-/// A row loop's counts into `stats`, when `K` counts.
+// The pairs the loops load with one instruction lie one word apart.
+const _: () = {
+    use core::mem::offset_of;
+    assert!(offset_of!(RowBlock, delta) == offset_of!(RowBlock, step_x) + 4);
+    assert!(offset_of!(RowBlock, stride) == offset_of!(RowBlock, step_y) + 4);
+    assert!(offset_of!(RowBlock, slot) == offset_of!(RowBlock, last) + 4);
+    assert!(offset_of!(RowBlock, failed) == offset_of!(RowBlock, fragments) + 4);
+};
+
+/// Fills a triangle's spans whose every pixel has the colour whose two bytes [`color_bits`]
+/// gave as `bits` into u16 depth and colour buffers of `width` pixels a row holding frame
+/// rows from `first_row`, its depths from the walk `depth` (every value in [0, 2³¹), see
+/// `DepthFormat::unclamped`): what the span loop over
+/// [`for_each_row`](TriangleSpans::for_each_row) does, the counts into `stats` when `K`
+/// counts, with the whole row loop in assembly. `Err(spans)`, untouched, where the spans are
+/// not clipped to `0..width` or their edges are set up again on the way down (neither happens
+/// to the pipeline's triangles in a [`ColorDepth`](super::ColorDepth)); nothing is drawn where
+/// the buffers do not hold the triangle's rows (never, for spans clipped to the target).
 #[inline(always)]
-pub(super) fn add_counts<K: FragmentCount>(stats: &mut Stats, fragments: u32, failed: u32) {
-    if K::COUNTED {
-        stats.fragments = stats.fragments.saturating_add(fragments);
-        // Each failed fragment was counted among the fragments: no wrap.
-        stats.written = stats.written.saturating_add(fragments.wrapping_sub(failed));
+#[allow(unsafe_code, clippy::too_many_arguments)]
+pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
+    spans: TriangleSpans,
+    depth: &RoundedRows<i32>,
+    colors: &mut [C],
+    depths: &mut [u16],
+    first_row: i32,
+    width: u32,
+    bits: u32,
+    stats: &mut Stats,
+) -> Result<(), TriangleSpans> {
+    let w = match i32::try_from(width) {
+        Ok(w) if w > 0 && spans.columns() == (0, w) => w,
+        _ => return Err(spans),
+    };
+    // The triangle's first row in the buffers.
+    let first = spans.row().wrapping_sub(first_row) as u32;
+    let mut block = RowBlock {
+        runs: Runs::EMPTY,
+        step_x: depth.step_x,
+        delta: 0,
+        step_y: depth.step_y,
+        stride: 0,
+        width: w,
+        end: 0,
+        last: 0,
+        slot: 0,
+        bits,
+        row_z: depth.row,
+        row: 0,
+        fragments: 0,
+        failed: 0,
+    };
+    spans.write_runs(&mut block.runs)?;
+    let Runs {
+        upper,
+        rows,
+        lower_is_left,
+        ..
+    } = block.runs;
+    block.slot = if lower_is_left { 0 } else { EDGE };
+    // The rows' cells in both buffers, and the rest of the contract, checked here (constants,
+    // or known to the caller: compiled away).
+    let width = width as usize;
+    let Some((colors, depths)) = run_cells(colors, depths, first, rows, width) else {
+        return Ok(());
+    };
+    if !(1..=rows).contains(&upper) || size_of::<C>() != 2 || align_of::<C>() != 2 {
+        return Ok(());
     }
+    let row = colors.as_mut_ptr();
+    // Below the buffer's length in bytes, so no overflow; the last one past the end of
+    // `colors` (no pointer leaves its allocation).
+    block.row = row as usize;
+    block.stride = width.wrapping_mul(2);
+    block.end = row.wrapping_add((upper as usize).wrapping_mul(width)) as usize;
+    block.last = row.wrapping_add(colors.len()) as usize;
+    block.delta = (depths.as_mut_ptr() as usize).wrapping_sub(row as usize);
+    // SAFETY: the block keeps `RowBlock`'s contract. `colors` and `depths` are rows · width
+    // cells long (`run_cells`), borrowed mutably here until the call returns; `C` has 2 bytes
+    // and alignment 2 (checked); `rows ≥ upper ≥ 1` and `width > 0` (checked); `row`,
+    // `delta`, `stride`, `end` and `last` are set from them just above; `slot` is 0 or an
+    // edge's size; `bits` came from `color_bits` of a valid `C` (the caller's).
+    unsafe { core_rows::rows::<T, K>(&mut block) };
+    if K::COUNTED {
+        stats.fragments = stats.fragments.saturating_add(block.fragments);
+        // Each failed fragment was counted among the fragments: no wrap.
+        stats.written = stats
+            .written
+            .saturating_add(block.fragments.wrapping_sub(block.failed));
+    }
+    Ok(())
 }
 
 /// The two bytes of a colour of 2 bytes and alignment 2, as a word for the loops in assembly;
@@ -57,7 +178,7 @@ pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {
 /// The cells of `rows` rows of `width` from row `first` in both buffers, or `None` where
 /// either buffer does not hold them all (never, for spans clipped to the target).
 #[inline(always)]
-pub(super) fn run_cells<'b, C>(
+fn run_cells<'b, C>(
     colors: &'b mut [C],
     depths: &'b mut [u16],
     first: u32,

@@ -5,6 +5,8 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 
+#[cfg(all(feature = "asm", fixed3d_thumb))]
+use super::arm;
 use super::depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
     SolidColor, Uncounted,
@@ -12,10 +14,6 @@ use super::depth::{
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
-#[cfg(all(feature = "asm", fixed3d_thumb1))]
-use super::thumb1 as rows_asm;
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-use super::thumb2 as rows_asm;
 use crate::pipeline::Stats;
 use crate::raster::{PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans};
 use crate::shade::Paint;
@@ -244,7 +242,7 @@ where
         }
     }
 
-    /// The row loop in assembly (`thumb1::solid_rows` or `thumb2::solid_rows`) into these
+    /// The row loop in assembly ([`arm::solid_rows`]) into these
     /// buffers, when the depth format is u16.
     #[cfg(all(feature = "asm", fixed3d_thumb))]
     #[inline(always)]
@@ -260,7 +258,7 @@ where
             return Err(spans);
         };
         let colors = self.color.cells_all_mut();
-        rows_asm::solid_rows::<C, T, K>(
+        arm::solid_rows::<C, T, K>(
             spans,
             rows,
             colors,

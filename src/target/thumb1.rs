@@ -23,65 +23,18 @@
 //! (depth test × counted), on ties too, and spans clamped to the target's columns (its
 //! `clipped` configuration).
 
-use core::mem::{align_of, size_of};
+use core::mem::{offset_of, size_of};
 
-use super::arm;
-use super::depth::{DepthTest, FragmentCount, RoundedRows};
-use crate::pipeline::Stats;
-use crate::raster::{Runs, TriangleSpans};
+use super::arm::{RowBlock, EDGE};
+use super::depth::{DepthTest, FragmentCount};
+use crate::raster::Runs;
 
-/// What the row loop reads at fixed offsets (see `rows_fn!`): the triangle's runs of rows (its
-/// edges first), the depth walk's steps, the buffers' layout, where the runs end, the colour
-/// and the counts. Thumb-1 loads words at offsets up to 124 from a register: all of it.
-#[repr(C)]
-struct RowBlock {
-    /// Left, right and the lower short edge at offsets 0, 20 and 40 (value, remainder,
-    /// denominator, whole step, remainder's step), and the rows (60 to 75).
-    runs: Runs,
-    /// The depth walk's step along a row (76).
-    step_x: i32,
-    /// The depth buffer's address less the colour buffer's (80).
-    delta: usize,
-    /// The depth walk's step down a column (84).
-    step_y: i32,
-    /// Bytes from one row to the next (88).
-    stride: usize,
-    /// Pixels a row: spans are clamped to `0..width` (92).
-    width: i32,
-    /// The colour address one past the current run's last row (96), and past the triangle's
-    /// (100).
-    end: usize,
-    last: usize,
-    /// The offset of the edge the lower short edge replaces: 0 (left) or 20 (right) (104).
-    slot: usize,
-    /// The colour's two bytes (108), the depth walk at column 0 of the first row (112), the
-    /// colour address of the first row (116).
-    bits: u32,
-    row_z: i32,
-    row: usize,
-    /// Fragments tested and fragments that failed, when counted (120, 124).
-    fragments: u32,
-    failed: u32,
-}
-
-const _: () = {
-    use core::mem::offset_of;
-    assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
-    assert!(size_of::<Runs>() == 76 && offset_of!(RowBlock, step_x) == 76);
-    assert!(offset_of!(RowBlock, delta) == 80 && offset_of!(RowBlock, step_y) == 84);
-    assert!(offset_of!(RowBlock, stride) == 88 && offset_of!(RowBlock, width) == 92);
-    assert!(offset_of!(RowBlock, end) == 96 && offset_of!(RowBlock, last) == 100);
-    assert!(offset_of!(RowBlock, slot) == 104 && offset_of!(RowBlock, bits) == 108);
-    assert!(offset_of!(RowBlock, row_z) == 112 && offset_of!(RowBlock, row) == 116);
-    assert!(offset_of!(RowBlock, fragments) == 120 && offset_of!(RowBlock, failed) == 124);
-    assert!(size_of::<RowBlock>() == 128);
-};
-
-/// One row loop as a naked function of the block's address (r0): `$fail` the branch taken by
-/// a fragment that loses (`bhs`: strictly nearer wins; `bhi`: nearer or equal), then the
-/// count's instructions at each span and after the pixel loop (its failure path; none
-/// uncounted). A row: each edge's span end (its value, then the walk steps: the whole step,
-/// the remainder's, and one more where the remainder borrows), the span clamped to
+/// One row loop as a naked function of the block's address (r0), its fields at their offsets
+/// (`const` operands): `$fail` the branch taken by a fragment that loses (`bhs`: strictly
+/// nearer wins; `bhi`: nearer or equal), then the count's instructions at each span and after
+/// the pixel loop (its failure path; none uncounted) and their operands. A row: each edge's
+/// span end (its value, then the walk steps: the whole step, the remainder's, and one more
+/// where the remainder borrows), the span clamped to
 /// `0..width`, and where it holds pixels the depth at its first one and the pixel loop (z in
 /// r0, the stored depth in r1, the walk in r2, the byte index in r3 from 2·(x0 − x1) up to 0,
 /// the colour cell x1 in r4, the depth cell in r5); then the depth walk and the row address
@@ -92,15 +45,18 @@ macro_rules! rows_fn {
     // and each losing fragment to `failed`, on a path of its own.
     (counted $name:ident, $fail:literal) => {
         rows_fn!($name, $fail,
-            ["asrs r1, r3, #1", "ldr r0, [r6, #120]", "subs r0, r0, r1", "str r0, [r6, #120]"],
-            ["b 4f", "5:", "mov r0, lr", "ldr r1, [r0, #124]", "adds r1, #1", "str r1, [r0, #124]",
-             "b 6b"]);
+            ["asrs r1, r3, #1", "ldr r0, [r6, #{frag}]", "subs r0, r0, r1",
+             "str r0, [r6, #{frag}]"],
+            ["b 4f", "5:", "mov r0, lr", "ldr r1, [r0, #{frag} + 4]", "adds r1, #1",
+             "str r1, [r0, #{frag} + 4]",
+             "b 6b"], frag = const offset_of!(RowBlock, fragments));
     };
-    ($name:ident, $fail:literal, [$($span:literal),*], [$($tail:literal),*]) => {
+    ($name:ident, $fail:literal, [$($span:literal),*], [$($tail:literal),*]
+     $(, $extra:ident = const $value:expr)*) => {
         /// The row loop (see `rows_fn!`) on the block at `block`.
         ///
         /// # Safety
-        /// `block` points to a [`RowBlock`] that [`run_rows`] has checked and filled in.
+        /// `block` points to a [`RowBlock`] that keeps its contract.
         #[unsafe(naked)]
         #[allow(unsafe_code)]
         unsafe extern "C" fn $name(block: *mut RowBlock) {
@@ -115,15 +71,15 @@ macro_rules! rows_fn {
                 // The block in r6 and lr; the step, colour, walk, row and width above r7.
                 "mov r6, r0",
                 "mov lr, r0",
-                "ldr r0, [r6, #76]",
+                "ldr r0, [r6, #{step_x}]",
                 "mov r8, r0",
-                "ldr r0, [r6, #108]",
+                "ldr r0, [r6, #{bits}]",
                 "mov r9, r0",
-                "ldr r0, [r6, #112]",
+                "ldr r0, [r6, #{row_z}]",
                 "mov r10, r0",
-                "ldr r0, [r6, #116]",
+                "ldr r0, [r6, #{row}]",
                 "mov r11, r0",
-                "ldr r0, [r6, #92]",
+                "ldr r0, [r6, #{width}]",
                 "mov r12, r0",
                 "2:",
                 // Left end x0 (r0): the edge's five words loaded at once (value, remainder,
@@ -147,8 +103,8 @@ macro_rules! rows_fn {
                 "adds r2, r2, r3",
                 "adds r4, #1",
                 "8:",
-                "str r4, [r6, #20]",
-                "str r2, [r6, #24]",
+                "str r4, [r6, #{right}]",
+                "str r2, [r6, #{right} + 4]",
                 // x0 = max(x0, 0), x1 = min(x1, width); no pixels unless x0 < x1 (signed).
                 "asrs r2, r0, #31",
                 "bics r0, r2",
@@ -165,7 +121,7 @@ macro_rules! rows_fn {
                 "add r2, r10",
                 "lsls r4, r1, #1",
                 "add r4, r11",
-                "ldr r5, [r6, #80]",
+                "ldr r5, [r6, #{delta}]",
                 "adds r5, r5, r4",
                 "subs r3, r0, r1",
                 "lsls r3, r3, #1",
@@ -187,22 +143,22 @@ macro_rules! rows_fn {
                 "4:",
                 // Next row: the depth walk and the row address; the run ends at `end`.
                 "mov r6, lr",
-                "ldr r0, [r6, #84]",
+                "ldr r0, [r6, #{step_y}]",
                 "add r10, r0",
-                "ldr r0, [r6, #88]",
+                "ldr r0, [r6, #{stride}]",
                 "add r11, r0",
-                "ldr r0, [r6, #96]",
+                "ldr r0, [r6, #{end}]",
                 "cmp r11, r0",
                 "bne 2b",
                 // The last run ends at `last`; before it, the lower short edge takes its side.
-                "ldr r0, [r6, #100]",
+                "ldr r0, [r6, #{last}]",
                 "cmp r11, r0",
                 "beq 1f",
-                "str r0, [r6, #96]",
-                "movs r0, #40",
+                "str r0, [r6, #{end}]",
+                "movs r0, #{lower}",
                 "adds r0, r0, r6",
                 "ldm r0!, {{r1, r2, r3, r4, r5}}",
-                "ldr r0, [r6, #104]",
+                "ldr r0, [r6, #{slot}]",
                 "adds r0, r0, r6",
                 "stm r0!, {{r1, r2, r3, r4, r5}}",
                 "b 2b",
@@ -213,6 +169,16 @@ macro_rules! rows_fn {
                 "mov r10, r6",
                 "mov r11, r7",
                 "pop {{r4, r5, r6, r7, pc}}",
+                right = const EDGE, lower = const 2 * EDGE,
+                step_x = const offset_of!(RowBlock, step_x),
+                delta = const offset_of!(RowBlock, delta),
+                step_y = const offset_of!(RowBlock, step_y),
+                stride = const offset_of!(RowBlock, stride),
+                width = const offset_of!(RowBlock, width),
+                end = const offset_of!(RowBlock, end), last = const offset_of!(RowBlock, last),
+                slot = const offset_of!(RowBlock, slot), bits = const offset_of!(RowBlock, bits),
+                row_z = const offset_of!(RowBlock, row_z), row = const offset_of!(RowBlock, row),
+                $($extra = const $value,)*
             )
         }
     };
@@ -223,113 +189,39 @@ rows_fn!(rows_less_or_equal, "bhi 6f", [], []);
 rows_fn!(counted rows_less_counted, "bhs 5f");
 rows_fn!(counted rows_less_or_equal_counted, "bhi 5f");
 
-/// Fills a triangle's spans whose every pixel has the colour whose two bytes
-/// [`color_bits`](super::arm::color_bits) gave as `bits` into u16 depth and colour buffers of
-/// `width` pixels a row holding frame rows from `first_row`, its depths from the walk `depth`
-/// (every value in [0, 2³¹), see `DepthFormat::unclamped`): what the span loop over
-/// [`for_each_row`](TriangleSpans::for_each_row) does, the counts into `stats` when `K`
-/// counts, with the whole row loop in assembly. `Err(spans)`, untouched, where the spans are
-/// not clipped to `0..width` (never for the pipeline's triangles in a
-/// [`ColorDepth`](super::ColorDepth)).
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
-    spans: TriangleSpans,
-    depth: &RoundedRows<i32>,
-    colors: &mut [C],
-    depths: &mut [u16],
-    first_row: i32,
-    width: u32,
-    bits: u32,
-    stats: &mut Stats,
-) -> Result<(), TriangleSpans> {
-    let Some((w, first)) = arm::row_frame(&spans, first_row, width) else {
-        return Err(spans);
-    };
-    let mut block = RowBlock {
-        runs: Runs::EMPTY,
-        step_x: depth.step_x,
-        delta: 0,
-        step_y: depth.step_y,
-        stride: 0,
-        width: w,
-        end: 0,
-        last: 0,
-        slot: 0,
-        bits,
-        row_z: depth.row,
-        row: 0,
-        fragments: 0,
-        failed: 0,
-    };
-    spans.write_runs(&mut block.runs)?;
-    let Runs {
-        upper,
-        rows,
-        lower_is_left,
-        ..
-    } = block.runs;
-    block.slot = if lower_is_left { 0 } else { 20 };
-    run_rows::<C, T, K>(&mut block, colors, depths, first, upper, rows);
-    arm::add_counts::<K>(stats, block.fragments, block.failed);
-    Ok(())
-}
+// The edges lie at the block's start, one edge's size apart; every field lies within reach
+// of Thumb-1's word loads from a register (offsets up to 124).
+const _: () = {
+    assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
+    assert!(size_of::<RowBlock>() <= 128);
+};
 
-/// The rows of [`Runs`] (`block` holds its edges) through the row loop: `rows` rows of
-/// `block.width` cells of `colors` and `depths` from row `first` (nothing is drawn unless both
-/// buffers hold them all, as they do for spans clipped to the target), the lower short edge
-/// taking its place after `upper` rows.
+/// The rows of a triangle in `block` (see [`RowBlock`]) through the naked function of `T` and
+/// `K`.
+///
+/// # Safety
+/// `block` keeps [`RowBlock`]'s contract.
 #[inline(always)]
 #[allow(unsafe_code)]
-fn run_rows<C: Copy, T: DepthTest, K: FragmentCount>(
-    block: &mut RowBlock,
-    colors: &mut [C],
-    depths: &mut [u16],
-    first: u32,
-    upper: u32,
-    rows: u32,
-) {
-    // The rows' cells in both buffers, and the other conditions the loop relies on, checked
-    // here (constants, or known to the caller: compiled away).
-    let width = usize::try_from(block.width).unwrap_or(0);
-    let Some((colors, depths)) = arm::run_cells(colors, depths, first, rows, width) else {
-        return;
-    };
-    if width == 0
-        || !(1..=rows).contains(&upper)
-        || (block.slot != 0 && block.slot != 20)
-        || size_of::<C>() != 2
-        || align_of::<C>() != 2
-    {
-        return;
-    }
-    let row = colors.as_mut_ptr();
-    // Bytes of a row, and the ends of the runs: below the buffer's length in bytes, so no
-    // overflow, and the last one past the end of `colors` (no pointer leaves its allocation).
-    block.row = row as usize;
-    block.stride = width.wrapping_mul(2);
-    block.end = row.wrapping_add((upper as usize).wrapping_mul(width)) as usize;
-    block.last = row.wrapping_add(colors.len()) as usize;
-    block.delta = (depths.as_mut_ptr() as usize).wrapping_sub(row as usize);
+pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) {
     let block: *mut RowBlock = block;
-    // SAFETY:
+    // SAFETY (the caller keeps `RowBlock`'s contract):
     // - Calling convention: the functions are `extern "C"` (AAPCS) and keep it: they save r4
     //   to r11 and the return address on entry and restore them on return (r0 to r3, r12 and
     //   the flags are the caller's to lose), use the stack only for that (balanced), and
     //   return with `pop {.., pc}`; their argument, the block's address, comes in r0.
-    // - Memory: both slices are rows·width cells long (2 bytes a cell, aligned to 2), and this
-    //   function borrows them mutably. Row k (0 ≤ k < rows) starts at cell k·width of
-    //   `colors` (the row address, r11, steps by a row's bytes, `stride`). A row's span is
-    //   clamped to x0 ≥ 0 and x1 ≤ width, and touched only where x0 < x1: the halfwords at
-    //   r4 + i and r5 + i for byte indices i from 2·(x0 − x1) to −2, with r4 the address of
-    //   the row's cell x1 and r5 = r4 + delta the same cell of `depths`: cells k·width + x
-    //   for x0 ≤ x < x1, below rows·width. It also reads the block (128 bytes, borrowed
-    //   mutably) and writes its edges' values and remainders (offsets 0 to 7, 20 to 27), the
-    //   lower edge over the one at `slot` (0 or 20: bytes 0 to 39), `end` (96) and, counted,
-    //   its counts (120, 124); nothing else.
-    // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid `C`
-    //   (see `arm::color_bits`) unchanged; an edge gets a copy of a valid edge or new i32s,
-    //   `end` the address `last`, the counts u32s.
+    // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row` (the
+    //   row address, r11, steps by a row's bytes, `stride`). A row's span is clamped to
+    //   x0 ≥ 0 and x1 ≤ width, and touched only where x0 < x1: the halfwords at r4 + i and
+    //   r5 + i for byte indices i from 2·(x0 − x1) to −2, with r4 the address of the row's
+    //   cell x1 and r5 = r4 + delta the same cell of the depth cells: cells k·width + x for
+    //   x0 ≤ x < x1, below rows·width, which the caller holds mutably. It also reads the block
+    //   (borrowed mutably) and writes its edges' values and remainders (the first two words of
+    //   the first two edges), the lower edge over the one at `slot` (0 or one edge's size),
+    //   `end` and, counted, its counts; nothing else.
+    // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid colour
+    //   unchanged; an edge gets a copy of a valid edge or new i32s, `end` the address `last`,
+    //   the counts u32s.
     // - Termination: each row ends with the byte index rising by 2 to 0 from 2·(x0 − x1)
     //   ≥ −2·width. The row address rises by `stride` > 0 a row from the first cell: it meets
     //   `end` after `upper` ≥ 1 rows; unless that is `last` (upper = rows), `end` becomes

@@ -9,8 +9,9 @@
 //! counter, and the colour reloaded from the stack): the reference frame on the Cortex-M4F
 //! 3.8% fewer instructions with it (1.790 M → 1.722 M).
 //!
-//! The row loop ([`solid_rows`]) around the same pixel loop: a whole triangle, both runs of
-//! rows (above and below its middle vertex), in one block of assembly. A row takes 25
+//! The row loop ([`rows`], on the block `arm::solid_rows` fills in) around the same pixel
+//! loop: a whole triangle, both runs of rows (above and below its middle vertex), in one
+//! block of assembly. A row takes 25
 //! instructions (each edge's end by one division of its numerator, the clamps to the
 //! target's columns, the depth walk and the row address), 4 more to enter a span, where the
 //! compiler's row loop took about 49, moving the row's state between registers and the
@@ -29,12 +30,11 @@
 //! counted), on ties too, and spans clamped to the target's columns (its `clipped`
 //! configuration), `bands` a band's first row other than 0.
 
-use core::mem::{align_of, size_of};
+use core::mem::{align_of, offset_of, size_of};
 
-use super::arm;
-use super::depth::{DepthTest, FragmentCount, RoundedRows};
-use crate::pipeline::Stats;
-use crate::raster::{DivideStepper, Runs, TriangleSpans};
+use super::arm::{RowBlock, EDGE};
+use super::depth::{DepthTest, FragmentCount};
+use crate::raster::Runs;
 
 /// The pixel loop's instructions as one template: from label `$l`, the depth in register
 /// `$z`, the stored depth in `$o`, the step in `$st` (the others named `acc`, `d`, `c`, `i`,
@@ -74,8 +74,8 @@ macro_rules! span_loop {
 /// Depth-tests a span whose every pixel has the colour whose two bytes
 /// [`color_bits`](super::arm::color_bits) gave as `bits` (so `C` has 2 bytes and alignment
 /// 2): the loop's value `acc` (in [0, 2³¹) at every pixel, see `DepthFormat::unclamped`)
-/// stepped by `st`. Returns the failures so far: `failed`
-/// plus the span's, when `K` counts them.
+/// stepped by `st`. Returns the failures so far: `failed` plus the span's, when `K` counts
+/// them.
 #[inline(always)]
 #[allow(unsafe_code)]
 pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
@@ -135,58 +135,23 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     f
 }
 
-/// What the row loop reads at fixed offsets (see `rows_loop!`): the triangle's runs of rows
-/// (its edges first), the depth walk's steps, the buffers' layout, where the runs end and
-/// the counts.
-#[repr(C)]
-struct RowBlock {
-    /// Left, right and the lower short edge at offsets 0, 16 and 32 (numerator, step,
-    /// denominator, base), and the rows (48 to 63).
-    runs: Runs,
-    /// The depth walk's step along a row (64).
-    step_x: i32,
-    /// The depth buffer's address less the colour buffer's (68).
-    delta: usize,
-    /// The depth walk's step down a column (72).
-    step_y: i32,
-    /// Bytes from one row to the next (76).
-    stride: usize,
-    /// Pixels a row: spans are clamped to `0..width` (80).
-    width: i32,
-    /// The colour address one past the current run's last row (84), and past the triangle's
-    /// (88).
-    end: usize,
-    last: usize,
-    /// The offset of the edge the lower short edge replaces: 0 (left) or 16 (right) (92).
-    slot: usize,
-    /// Fragments tested and fragments that failed, when counted (96, 100).
-    fragments: u32,
-    failed: u32,
-}
-
-const _: () = {
-    use core::mem::offset_of;
-    assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
-    assert!(size_of::<[DivideStepper; 3]>() == 48 && size_of::<Runs>() == 64);
-    assert!(offset_of!(RowBlock, step_x) == 64 && offset_of!(RowBlock, delta) == 68);
-    assert!(offset_of!(RowBlock, step_y) == 72 && offset_of!(RowBlock, stride) == 76);
-    assert!(offset_of!(RowBlock, width) == 80 && offset_of!(RowBlock, end) == 84);
-    assert!(offset_of!(RowBlock, last) == 88 && offset_of!(RowBlock, slot) == 92);
-    assert!(offset_of!(RowBlock, fragments) == 96 && offset_of!(RowBlock, failed) == 100);
-    assert!(size_of::<RowBlock>() == 104);
-};
-
 /// The row loop in assembly: `$it` and `$pass` as in `pixels!`, then the count's
 /// instructions before the pixel loop, in it, and after it (none uncounted), then the block's
-/// address, the first row's colour address, the depth walk's value and the colour's bits. A
-/// row: each edge's span end (one division of its numerator, which then steps), the span
-/// clamped to `0..width`, and where it holds pixels the depth at its first one and the pixel
-/// loop; then the depth walk and the row address step down. At the end of the
-/// first run the lower short edge takes its side, and the second run goes on to `last`.
+/// address and the counts' operands if any. The block's fields at their offsets (`const`
+/// operands), first the first row's colour address, the depth walk and the colour; an edge's
+/// numerator and step as a pair, its denominator and base as another. A row: each edge's span
+/// end (one division of its numerator, which then steps), the span clamped to `0..width`, and
+/// where it holds pixels the depth at its first one and the pixel loop; then the depth walk
+/// and the row address step down. At the end of the first run the lower short edge takes its
+/// side, and the second run goes on to `last`.
 macro_rules! rows_loop {
     ($it:literal, $pass:literal, [$($before:literal),*], [$($count:literal)?],
-     [$($after:literal)?]; $block:expr, $cptr:expr, $rowz:expr, $bits:expr) => {
+     [$($after:literal)?]; $block:expr $(, $extra:ident = const $value:expr)*) => {
         core::arch::asm!(
+            // The first row's colour address, the depth walk and the colour from the block.
+            "ldr {cptr}, [{s}, #{row}]",
+            "ldr {rowz}, [{s}, #{row_z}]",
+            "ldr {col}, [{s}, #{bits}]",
             "2:",
             // Left end: base + numerator / denominator; the numerator steps.
             "ldrd {a}, {b}, [{s}]",
@@ -196,22 +161,22 @@ macro_rules! rows_loop {
             "udiv {x0}, {a}, {b}",
             "add {x0}, {c}",
             // Right end.
-            "ldrd {a}, {b}, [{s}, #16]",
+            "ldrd {a}, {b}, [{s}, #{right}]",
             "add {c}, {a}, {b}",
-            "str {c}, [{s}, #16]",
-            "ldrd {b}, {c}, [{s}, #24]",
+            "str {c}, [{s}, #{right}]",
+            "ldrd {b}, {c}, [{s}, #{right} + 8]",
             "udiv {x1}, {a}, {b}",
             "add {x1}, {c}",
             // x0 = max(x0, 0), x1 = min(x1, width); no pixels unless x0 < x1 (signed).
             "bic {x0}, {x0}, {x0}, asr #31",
-            "ldr {b}, [{s}, #80]",
+            "ldr {b}, [{s}, #{width}]",
             "cmp {x1}, {b}",
             "it gt",
             "movgt {x1}, {b}",
             "subs {i}, {x0}, {x1}",
             "bge 4f",
             // The depth at x0; both buffers addressed from their cell x1, i from x0 − x1 to 0.
-            "ldrd {a}, {b}, [{s}, #64]",
+            "ldrd {a}, {b}, [{s}, #{step_x}]",
             "mla {acc}, {a}, {x0}, {rowz}",
             "add {c}, {cptr}, {x1}, lsl #1",
             "add {d}, {c}, {b}",
@@ -221,135 +186,63 @@ macro_rules! rows_loop {
             $($after,)?
             "4:",
             // Next row: the depth walk and the row address; the run ends at `end`.
-            "ldrd {a}, {b}, [{s}, #72]",
+            "ldrd {a}, {b}, [{s}, #{step_y}]",
             "add {rowz}, {a}",
             "add {cptr}, {b}",
-            "ldr {a}, [{s}, #84]",
+            "ldr {a}, [{s}, #{end}]",
             "cmp {cptr}, {a}",
             "bne 2b",
             // The last run ends at `last`; before it, the lower short edge takes its side.
-            "ldrd {a}, {b}, [{s}, #88]",
+            "ldrd {a}, {b}, [{s}, #{last}]",
             "cmp {cptr}, {a}",
             "beq 5f",
-            "str {a}, [{s}, #84]",
+            "str {a}, [{s}, #{end}]",
             "add {b}, {s}",
-            "ldrd {c}, {d}, [{s}, #32]",
+            "ldrd {c}, {d}, [{s}, #{lower}]",
             "strd {c}, {d}, [{b}]",
-            "ldrd {c}, {d}, [{s}, #40]",
+            "ldrd {c}, {d}, [{s}, #{lower} + 8]",
             "strd {c}, {d}, [{b}, #8]",
             "b 2b",
             "5:",
-            s = in(reg) $block as *mut RowBlock, cptr = inout(reg) $cptr => _,
-            rowz = inout(reg) $rowz => _, col = in(reg) $bits, a = out(reg) _, b = out(reg) _,
+            s = in(reg) $block as *mut RowBlock, cptr = out(reg) _, rowz = out(reg) _,
+            col = out(reg) _, a = out(reg) _, b = out(reg) _,
             c = out(reg) _, d = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
-            acc = out(reg) _, options(nostack),
+            acc = out(reg) _,
+            right = const EDGE, lower = const 2 * EDGE,
+            width = const offset_of!(RowBlock, width), step_x = const offset_of!(RowBlock, step_x),
+            step_y = const offset_of!(RowBlock, step_y), end = const offset_of!(RowBlock, end),
+            last = const offset_of!(RowBlock, last), row = const offset_of!(RowBlock, row),
+            row_z = const offset_of!(RowBlock, row_z), bits = const offset_of!(RowBlock, bits),
+            $($extra = const $value,)*
+            options(nostack),
         )
     };
 }
 
-/// Fills a triangle's spans whose every pixel has the colour whose two bytes
-/// [`color_bits`](super::arm::color_bits) gave as `bits` into u16 depth and colour buffers of
-/// `width` pixels a row holding frame rows from `first_row`, its depths from the walk `depth`
-/// (every value in [0, 2³¹), see `DepthFormat::unclamped`): what the span loop over
-/// [`for_each_row`](TriangleSpans::for_each_row) with [`solid_span`] does, the counts into
-/// `stats` when `K` counts, with the whole row loop in assembly. `Err(spans)`, untouched,
-/// where the spans are not clipped to `0..width` and the buffers' rows, or their edges are
-/// set up again on the way down (none of which happens to the pipeline's triangles in a
-/// [`ColorDepth`](super::ColorDepth)).
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
-    spans: TriangleSpans,
-    depth: &RoundedRows<i32>,
-    colors: &mut [C],
-    depths: &mut [u16],
-    first_row: i32,
-    width: u32,
-    bits: u32,
-    stats: &mut Stats,
-) -> Result<(), TriangleSpans> {
-    let Some((w, first)) = arm::row_frame(&spans, first_row, width) else {
-        return Err(spans);
-    };
-    let mut block = RowBlock {
-        runs: Runs::EMPTY,
-        step_x: depth.step_x,
-        delta: 0,
-        step_y: depth.step_y,
-        stride: 0,
-        width: w,
-        end: 0,
-        last: 0,
-        slot: 0,
-        fragments: 0,
-        failed: 0,
-    };
-    spans.write_runs(&mut block.runs)?;
-    let Runs {
-        upper,
-        rows,
-        lower_is_left,
-        ..
-    } = block.runs;
-    block.slot = if lower_is_left { 0 } else { 16 };
-    let row_z = depth.row;
-    run_rows::<C, T, K>(&mut block, colors, depths, first, upper, rows, row_z, bits);
-    arm::add_counts::<K>(stats, block.fragments, block.failed);
-    Ok(())
-}
+// The edges lie at the block's start, one edge's size apart.
+const _: () = assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
 
-/// The rows of [`Runs`] (`block` holds its edges) through `rows_loop!`: `rows` rows of
-/// `block.width` cells of `colors` and `depths` from row `first` (nothing is drawn unless
-/// both buffers hold them all, as they do for spans clipped to the target), the lower short
-/// edge taking its place after `upper` rows; the depth walk from `row_z` at column 0 of the
-/// first row.
+/// The rows of a triangle in `block` (see [`RowBlock`]) through `rows_loop!`, the fragments
+/// counted when `K` counts.
+///
+/// # Safety
+/// `block` keeps [`RowBlock`]'s contract.
 #[inline(always)]
-#[allow(unsafe_code, clippy::too_many_arguments)]
-fn run_rows<C: Copy, T: DepthTest, K: FragmentCount>(
-    block: &mut RowBlock,
-    colors: &mut [C],
-    depths: &mut [u16],
-    first: u32,
-    upper: u32,
-    rows: u32,
-    row_z: i32,
-    bits: u32,
-) {
-    // The rows' cells in both buffers, and the other conditions the block relies on, checked
-    // here (constants, or known to the caller: compiled away).
-    let width = usize::try_from(block.width).unwrap_or(0);
-    let Some((colors, depths)) = arm::run_cells(colors, depths, first, rows, width) else {
-        return;
-    };
-    if width == 0
-        || !(1..=rows).contains(&upper)
-        || (block.slot != 0 && block.slot != 16)
-        || size_of::<C>() != 2
-        || align_of::<C>() != 2
-    {
-        return;
-    }
-    let cptr = colors.as_mut_ptr();
-    // Bytes of a row, and the ends of the runs: below the buffer's length in bytes, so no
-    // overflow, and the last one past the end of `colors` (no pointer leaves its allocation).
-    block.stride = width.wrapping_mul(2);
-    block.end = cptr.wrapping_add((upper as usize).wrapping_mul(width)) as usize;
-    block.last = cptr.wrapping_add(colors.len()) as usize;
-    block.delta = (depths.as_mut_ptr() as usize).wrapping_sub(cptr as usize);
-    // SAFETY:
-    // - Memory: both slices are rows·width cells long (2 bytes a cell, aligned to 2), and this
-    //   function borrows them mutably. Row k (0 ≤ k < rows) starts at cell k·width of
-    //   `colors` (`cptr` steps by a row's bytes, `stride`). A row's span is clamped to
-    //   x0 ≥ 0 and x1 ≤ width, and touched only where x0 < x1: the halfwords at c + 2i and
-    //   d + 2i for i from x0 − x1 to −1, with c the address of the row's cell x1 and
-    //   d = c + delta the same cell of `depths`: cells k·width + x for x0 ≤ x < x1, below
-    //   rows·width. It also reads `block` (104 bytes, borrowed mutably), and writes its
-    //   edges' numerators (offsets 0 and 16), the lower edge over the one at `slot` (0 or
-    //   16: bytes 0 to 31), `end` (84) and, counted, its counts (96, 100); nothing else, and
-    //   no stack (`nostack`).
-    // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid `C`
-    //   (see `arm::color_bits`) unchanged; an edge gets a copy of a valid edge or a new
-    //   numerator (any u32), `end` the address `last`, the counts u32s.
+#[allow(unsafe_code)]
+pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) {
+    // SAFETY (the caller keeps `RowBlock`'s contract):
+    // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row`
+    //   (`cptr` steps by a row's bytes, `stride`). A row's span is clamped to x0 ≥ 0 and
+    //   x1 ≤ width, and touched only where x0 < x1: the halfwords at c + 2i and d + 2i for i
+    //   from x0 − x1 to −1, with c the address of the row's cell x1 and d = c + delta the same
+    //   cell of the depth cells: cells k·width + x for x0 ≤ x < x1, below rows·width, which
+    //   the caller holds mutably. It also reads `block` (borrowed mutably), and writes its
+    //   edges' numerators (the first word of the first two edges), the lower edge over the
+    //   one at `slot` (0 or one edge's size), `end` and, counted, its counts; nothing else,
+    //   and no stack (`nostack`).
+    // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid colour
+    //   unchanged; an edge gets a copy of a valid edge or a new numerator (any u32), `end` the
+    //   address `last`, the counts u32s.
     // - Division: every denominator is a `NonZeroU32` (an edge's den), never 0.
     // - Termination: each row ends with i rising by one to 0 from x0 − x1 ≥ −width. `cptr`
     //   rises by `stride` > 0 a row from the first cell: it meets `end` after `upper` ≥ 1
@@ -360,13 +253,17 @@ fn run_rows<C: Copy, T: DepthTest, K: FragmentCount>(
     unsafe {
         match (T::OR_EQUAL, K::COUNTED) {
             (false, true) => rows_loop!("itte", "lo",
-                ["ldrd {x0}, {b}, [{s}, #96]", "sub {x0}, {x0}, {i}", "str {x0}, [{s}, #96]"],
-                ["addhs {b}, {b}, #1"], ["str {b}, [{s}, #100]"]; block, cptr, row_z, bits),
+                ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
+                 "str {x0}, [{s}, #{frag}]"],
+                ["addhs {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"];
+                block, frag = const offset_of!(RowBlock, fragments)),
             (true, true) => rows_loop!("itte", "ls",
-                ["ldrd {x0}, {b}, [{s}, #96]", "sub {x0}, {x0}, {i}", "str {x0}, [{s}, #96]"],
-                ["addhi {b}, {b}, #1"], ["str {b}, [{s}, #100]"]; block, cptr, row_z, bits),
-            (false, false) => rows_loop!("itt", "lo", [], [], []; block, cptr, row_z, bits),
-            (true, false) => rows_loop!("itt", "ls", [], [], []; block, cptr, row_z, bits),
+                ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
+                 "str {x0}, [{s}, #{frag}]"],
+                ["addhi {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"];
+                block, frag = const offset_of!(RowBlock, fragments)),
+            (false, false) => rows_loop!("itt", "lo", [], [], []; block),
+            (true, false) => rows_loop!("itt", "ls", [], [], []; block),
         }
     }
 }
