@@ -121,21 +121,21 @@ $stages
 ## Where the rest goes, and what would take it
 
 - **Pixels**: a shift, a compare and two stores each (x86-64: about 8 instructions; the
-  compiler's loop on the Cortex-M4 12, on the M0 about 11: on every core the colour does not
+  compiler's loop on the Cortex-M4 12, on the M0 10: on every core the colour does not
   stay in a register beside the row loop's state, one load a written pixel; Cortex-M compares
-  depths in 32 bits so that the stored halfword needs no masking). On the M4 the \`asm\`
-  feature's hand-written loop, which the firmware presets have, takes nine. A target that counts fragments (the default,
+  depths in 32 bits so that the stored halfword needs no masking). The \`asm\` feature's
+  hand-written loops, which the firmware presets have, take nine on both cores. A target that counts fragments (the default,
   for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.7% fewer
-  instructions per frame (4.9% with the \`asm\` loops, which then need no count either), the
-  M0 2.1% (1.8% with its \`asm\` loop), x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
+  instructions per frame (4.3% with the \`asm\` loops, which then need no count either), the
+  M0 2.1% (1.9% with its \`asm\` loop), x86-64 0.9% (the counts held registers in the row loop). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
   it cost a load and a branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); with the \`asm\` loop in line the pixels take about 0.28 M there.
+  frame); with the \`asm\` loop in line the pixels take about 0.26 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target, and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
@@ -179,7 +179,7 @@ $stages
   edge set up beforehand and copied over its side by the loop. Its set-up (the edges copied
   into the block, the buffers' cells checked once a triangle) costs about 60 instructions a
   triangle more than the compiled loop's (\`profile.py\`), where a triangle's 8 rows save
-  about 20 each: the frame 4.6% fewer instructions (1.722 M → 1.642 M), about 400 bytes
+  about 20 each: the frame 3.9% fewer instructions (1.722 M → 1.655 M), about 500 bytes
   more flash. Made of two runs a triangle, each set up apart, it saved 1.5%. (In the stage
   table the M4's fill set-up includes that set-up and the lower short edge's, which the
   compiled loop sets up among its rows, and so does the M0's below; the cut before the
@@ -193,7 +193,7 @@ $stages
   word): 28 instructions a row (2 more when an edge's remainder borrows) and 10 to enter a
   span, against about 60 for the compiled row loop; its pixel loop 9 instructions (7 for a
   fragment that loses) against the compiler's 10, the colour moved into a low register for
-  each span (0.4%). The M0's frame 4.8% fewer instructions (3.536 M → 3.367 M), 530 bytes
+  each span (0.4%). The M0's frame 5.1% fewer instructions (3.536 M → 3.357 M), 510 bytes
   more flash; its set-up clears the block (a ceiling walk's zero is all zero
   bytes: copied from a constant, it took a library call, 1% of the frame) and checks the
   run's cells without 64-bit products (2%). On Cortex-M the compiled rows run
@@ -268,8 +268,8 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.28 M on the M4), 1.0 M leaves
-  0.72 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+- **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
+  0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, half of what they take now. The largest excess found is per drawn triangle: on
   the M4 about 820 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
   and the edge set-ups it calls, 0.79 M, about 60 of them the \`asm\` row loop's set-up)

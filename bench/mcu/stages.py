@@ -73,15 +73,11 @@ CUTS = [
         f"        if {BB}(true) {{ {BB}((&spans, &depth)); return; }}\n"
         "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
     ), (
-        "src/target/thumb2.rs",
-        "    // SAFETY:\n    // - Memory: both slices",
-        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len(), cptr, bits)); "
-        "return; }\n    // SAFETY:\n    // - Memory: both slices",
-    ), (
-        "src/target/thumb1.rs",
-        "    let block: *mut RowBlock = block;\n",
-        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return; }}\n"
-        "    let block: *mut RowBlock = block;\n",
+        # The `asm` feature's row loops (both cores): everything up to the call.
+        "src/target/arm.rs",
+        "    unsafe { core_rows::rows::<T, K>(&mut block) };",
+        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return Ok(()); }}\n"
+        "    unsafe { core_rows::rows::<T, K>(&mut block) };",
     )]),
     ("span set-up (sorting, edge steppers)", "no fill set-up", [(
         "src/pipeline/draw.rs",

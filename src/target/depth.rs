@@ -468,7 +468,7 @@ impl DepthTest for LessOrEqual {
 ///
 /// A type, chosen when the target is built ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)):
 /// a frame that does not need the counts does not pay for them (on the reference torus, 3.7%
-/// of the Cortex-M4's instructions, 4.9% with the `asm` feature, 2.1% of the Cortex-M0's (1.8%
+/// of the Cortex-M4's instructions, 4.3% with the `asm` feature, 2.1% of the Cortex-M0's (1.9%
 /// with it),
 /// 0.9% of x86-64's: a count per span and one per failed fragment, and the registers they
 /// hold in the row loop).

@@ -17,8 +17,8 @@
 //! compiler's row loop took about 49, moving the row's state between registers and the
 //! stack around the pixel loop; here the edges and the constants are read in pairs from one
 //! block in memory. Its set-up takes about 60 instructions a triangle more than the
-//! compiler's; with it the reference frame on the Cortex-M4F takes 4.6% fewer instructions
-//! (1.722 M → 1.642 M).
+//! compiler's; with it the reference frame on the Cortex-M4F takes 3.9% fewer instructions
+//! (1.722 M → 1.655 M).
 //!
 //! Both compute exactly what the Rust loops compute: the same span ends (the same unsigned
 //! division of the same numerators, clamped to the same columns), the same depths (`acc >>
