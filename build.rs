@@ -4,10 +4,16 @@
 //! ARMv6-M (`thumbv6m`; src/target/thumb1.rs), and `fixed3d_thumb` for either. No `cfg` tells
 //! ARMv7-M from ARMv8-M baseline, which has the same atomics but neither IT blocks nor shifted
 //! register offsets, nor ARMv6-M's edge walk (the crate walks edges by the target's atomics):
-//! it gets neither.
+//! it gets neither. `fixed3d_asm_rows` marks every target with a row loop in assembly: those
+//! two and x86-64 (src/target/x86_64.rs).
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
-    for cfg in ["fixed3d_thumb", "fixed3d_thumb1", "fixed3d_thumb2"] {
+    for cfg in [
+        "fixed3d_thumb",
+        "fixed3d_thumb1",
+        "fixed3d_thumb2",
+        "fixed3d_asm_rows",
+    ] {
         println!("cargo:rustc-check-cfg=cfg({cfg})");
     }
     let target = std::env::var("TARGET").unwrap_or_default();
@@ -22,5 +28,8 @@ fn main() {
     if let Some(cfg) = set {
         println!("cargo:rustc-cfg={cfg}");
         println!("cargo:rustc-cfg=fixed3d_thumb");
+    }
+    if set.is_some() || std::env::var("CARGO_CFG_TARGET_ARCH").as_deref() == Ok("x86_64") {
+        println!("cargo:rustc-cfg=fixed3d_asm_rows");
     }
 }

@@ -29,7 +29,7 @@ pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
 pub(crate) use triangle::spans_in_range;
 pub use triangle::{triangle_spans, Span, TriangleSpans};
-#[cfg(all(feature = "asm", fixed3d_thumb))]
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
 pub(crate) use triangle::{EdgeWalk, Runs};
 
 use embedded_graphics::primitives::Rectangle;
@@ -420,8 +420,12 @@ impl CeilStepper {
 /// `(k + 1)(D − 1)/D`, below `2³² / D`; the exact sum is a multiple of `2³² / D`, so a multiple
 /// of 2³² lies at or below both or above both: the carries, and so the high word, are
 /// `q(k)`'s.
+///
+/// Its two words lie in the order of its fields (`repr(C)`): the `asm` feature's row loop on
+/// x86-64 (`target::x86_64`) reads them at offsets 0 and 8.
 #[cfg(any(test, target_pointer_width = "64"))]
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub(crate) struct FractionStepper {
     acc: u64,
     step: u64,
@@ -538,6 +542,14 @@ const _: () = {
     assert!(offset_of!(DivideStepper, num) == 0 && offset_of!(DivideStepper, step) == 4);
     assert!(offset_of!(DivideStepper, den) == 8 && offset_of!(DivideStepper, base) == 12);
     assert!(size_of::<DivideStepper>() == 16);
+};
+
+// The layout `target::x86_64` reads: the walk (its value in the high half), then the step.
+#[cfg(any(test, target_pointer_width = "64"))]
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(FractionStepper, acc) == 0 && offset_of!(FractionStepper, step) == 8);
+    assert!(size_of::<FractionStepper>() == 16);
 };
 
 /// `⌊v / d⌋` in the high word (modulo 2³²) and `⌈(v mod d)·2³² / d⌉` in the low word (`d` in

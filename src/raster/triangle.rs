@@ -104,7 +104,7 @@ pub struct TriangleSpans {
 /// ([`TriangleSpans::columns`]), both edges stepped after each row; after the first `upper`
 /// rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge set up
 /// at that row, takes the place of the left edge if `lower_is_left`, else the right one.
-#[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
+#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 pub(crate) struct Runs {
@@ -114,7 +114,7 @@ pub(crate) struct Runs {
     pub(crate) lower_is_left: bool,
 }
 
-#[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
+#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 impl Runs {
     /// No rows (to be written by [`TriangleSpans::write_runs`]).
     pub(crate) const EMPTY: Runs = Runs {
@@ -575,7 +575,7 @@ impl TriangleSpans {
     /// row loops in assembly read them where they are written); `Err(self)`, untouched, and
     /// `out` as it was, for a triangle without rows or whose edges are set up again on the way
     /// down (see [`EdgeWalk`]: none of the pipeline's).
-    #[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
     #[inline(always)]
     pub(crate) fn write_runs(self, out: &mut Runs) -> Result<(), Self> {
         // (Cortex-M0's exact edges are never set up again.)
@@ -607,7 +607,7 @@ impl TriangleSpans {
     }
 
     /// The clip rectangle's columns `x0..x1` that the spans are clipped to.
-    #[cfg(any(test, all(feature = "asm", fixed3d_thumb)))]
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
     #[inline(always)]
     pub(crate) fn columns(&self) -> (i32, i32) {
         (self.x_min, self.x_max)

@@ -1,7 +1,7 @@
 //! Depth buffers: per-pixel depth in a caller-supplied `&mut [u16]` or `&mut [u32]`.
 
-#[cfg(all(feature = "asm", fixed3d_thumb))]
-use super::arm;
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
+use super::asm_rows;
 use super::grid::{BufferError, Grid};
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
 use super::thumb2;
@@ -47,7 +47,7 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
 
     /// The cells as u16s, for the row loops in assembly (`target::thumb1`, `target::thumb2`);
     /// `None` for other formats.
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
+    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
     #[doc(hidden)]
     #[inline(always)]
     fn u16_cells(cells: &mut [Self]) -> Option<&mut [u16]> {
@@ -176,7 +176,7 @@ impl DepthFormat for u16 {
         max <= (1 << 30) - (1 << 14)
     }
 
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
+    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
     #[inline(always)]
     fn u16_cells(cells: &mut [u16]) -> Option<&mut [u16]> {
         Some(cells)
@@ -205,18 +205,18 @@ impl DepthFormat for u16 {
 }
 
 /// A span's one colour, prepared once a triangle for the span loops that take it whole (with
-/// the `asm` feature on Cortex-M cores: its two bytes as a word, see `arm::color_bits`).
+/// the `asm` feature on Cortex-M cores: its two bytes as a word, see `asm_rows::color_bits`).
 #[doc(hidden)]
 #[derive(Clone, Copy, Debug)]
 pub struct SolidColor<C> {
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
+    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
     bits: Option<u32>,
     _color: core::marker::PhantomData<C>,
 }
 
 impl<C: Copy> SolidColor<C> {
-    /// Its two bytes as a word, for colours of 2 bytes (see `arm::color_bits`).
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
+    /// Its two bytes as a word, for colours of 2 bytes (see `asm_rows::color_bits`).
+    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
     #[inline(always)]
     pub(super) fn bits(&self) -> Option<u32> {
         self.bits
@@ -227,8 +227,8 @@ impl<C: Copy> SolidColor<C> {
     pub(crate) fn new(color: &C) -> Self {
         let _ = color;
         SolidColor {
-            #[cfg(all(feature = "asm", fixed3d_thumb))]
-            bits: arm::color_bits(color),
+            #[cfg(all(feature = "asm", fixed3d_asm_rows))]
+            bits: asm_rows::color_bits(color),
             _color: core::marker::PhantomData,
         }
     }

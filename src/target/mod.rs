@@ -10,8 +10,8 @@
 //! - [`Nearest`] and [`OrderedDither`] turn the shaded 24-bit colour into the target's colour;
 //!   the dither keeps shading visible on 1-bit and grey displays.
 
-#[cfg(all(feature = "asm", fixed3d_thumb))]
-mod arm;
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
+mod asm_rows;
 mod depth;
 mod dither;
 mod framebuffer;
@@ -21,6 +21,8 @@ mod surface;
 mod thumb1;
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
 mod thumb2;
+#[cfg(all(feature = "asm", target_arch = "x86_64"))]
+mod x86_64;
 
 pub use depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LessOrEqual, Uncounted,

@@ -5,8 +5,8 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 
-#[cfg(all(feature = "asm", fixed3d_thumb))]
-use super::arm;
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
+use super::asm_rows;
 use super::depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
     SolidColor, Uncounted,
@@ -215,7 +215,7 @@ where
             Some((rows, st)) => {
                 // With the `asm` feature, a solid colour of 2 bytes into u16 depth takes the
                 // row loop in assembly (spans the pipeline's triangles always have).
-                #[cfg(all(feature = "asm", fixed3d_thumb))]
+                #[cfg(all(feature = "asm", fixed3d_asm_rows))]
                 let spans = match solid.and_then(|s| s.bits()) {
                     Some(bits) => match self.solid_rows(spans, &rows, bits, stats) {
                         Ok(()) => return,
@@ -242,14 +242,14 @@ where
         }
     }
 
-    /// The row loop in assembly ([`arm::solid_rows`]) into these
+    /// The row loop in assembly ([`asm_rows::solid_rows`]) into these
     /// buffers, when the depth format is u16.
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
+    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
     #[inline(always)]
     fn solid_rows(
         &mut self,
         spans: TriangleSpans,
-        rows: &RoundedRows<i32>,
+        rows: &RoundedRows,
         bits: u32,
         stats: &mut Stats,
     ) -> Result<(), TriangleSpans> {
@@ -258,7 +258,7 @@ where
             return Err(spans);
         };
         let colors = self.color.cells_all_mut();
-        arm::solid_rows::<C, T, K>(
+        asm_rows::solid_rows::<C, T, K, _>(
             spans,
             rows,
             colors,

@@ -1,5 +1,5 @@
 //! The u16 depth loops of solid-coloured triangles in hand-written Thumb-1, for Cortex-M0 and
-//! M0+ (ARMv6-M), with the `asm` feature (with src/target/thumb2.rs and arm.rs the only
+//! M0+ (ARMv6-M), with the `asm` feature (with thumb2.rs, x86_64.rs and asm_rows.rs the only
 //! `unsafe` code of the crate; without the feature the crate forbids it).
 //!
 //! A whole triangle's rows, both runs (above and below its middle vertex), in one naked
@@ -25,7 +25,7 @@
 
 use core::mem::{offset_of, size_of};
 
-use super::arm::{RowBlock, EDGE};
+use super::asm_rows::{RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount};
 use crate::raster::Runs;
 

@@ -1,6 +1,7 @@
 //! The u16 depth loops of solid-coloured triangles in hand-written Thumb-2, for Cortex-M3, M4
-//! and M7 (ARMv7-M) and ARMv8-M mainline cores, with the `asm` feature (with thumb1.rs and
-//! arm.rs the only `unsafe` code of the crate; without the feature the crate forbids it).
+//! and M7 (ARMv7-M) and ARMv8-M mainline cores, with the `asm` feature (with thumb1.rs,
+//! x86_64.rs and asm_rows.rs the only `unsafe` code of the crate; without the feature the
+//! crate forbids it).
 //!
 //! The pixel loop: nine instructions a pixel (ten when fragments are counted): the depth from
 //! the loop's value by a shift, the stored depth loaded, compared, and both stores predicated
@@ -9,7 +10,7 @@
 //! counter, and the colour reloaded from the stack): the reference frame on the Cortex-M4F
 //! 3.8% fewer instructions with it (1.790 M → 1.722 M).
 //!
-//! The row loop ([`rows`], on the block `arm::solid_rows` fills in) around the same pixel
+//! The row loop ([`rows`], on the block `asm_rows::solid_rows` fills in) around the same pixel
 //! loop: a whole triangle, both runs of rows (above and below its middle vertex), in one
 //! block of assembly. A row takes 25
 //! instructions (each edge's end by one division of its numerator, the clamps to the
@@ -32,7 +33,7 @@
 
 use core::mem::{align_of, offset_of, size_of};
 
-use super::arm::{RowBlock, EDGE};
+use super::asm_rows::{RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount};
 use crate::raster::Runs;
 
@@ -72,7 +73,7 @@ macro_rules! span_loop {
 }
 
 /// Depth-tests a span whose every pixel has the colour whose two bytes
-/// [`color_bits`](super::arm::color_bits) gave as `bits` (so `C` has 2 bytes and alignment
+/// [`color_bits`](super::asm_rows::color_bits) gave as `bits` (so `C` has 2 bytes and alignment
 /// 2): the loop's value `acc` (in [0, 2³¹) at every pixel, see `DepthFormat::unclamped`)
 /// stepped by `st`. Returns the failures so far: `failed` plus the span's, when `K` counts
 /// them.
@@ -104,7 +105,7 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     //   which this function borrows mutably (n ≤ both lengths, n ≥ 1); it touches nothing
     //   else, and no stack (`nostack`).
     // - Values: a depth cell gets a u16 (any bit pattern is one). A colour cell gets `bits`,
-    //   the two bytes of a valid `C` (see `arm::color_bits`) unchanged: a byte-for-byte copy of a
+    //   the two bytes of a valid `C` (see `asm_rows::color_bits`) unchanged: a byte-for-byte copy of a
     //   valid value is the same valid value, exactly what `*cell = color` stores.
     // - Termination: i starts at −n (n < 2³¹ for a slice of 2-byte cells on a 32-bit core)
     //   and rises by one to 0, where the loop ends; `acc` wraps by definition (it never does

@@ -1,20 +1,23 @@
-//! What the `asm` feature's row loops on Cortex-M share (src/target/thumb1.rs on ARMv6-M,
-//! src/target/thumb2.rs on ARMv7-M and ARMv8-M mainline): the block they read, filled in and
-//! checked here, and a solid colour's two bytes. Each core's module holds its assembly and the
-//! proof that it keeps to the block's contract ([`RowBlock`]).
+//! What the `asm` feature's row loops share (src/target/thumb1.rs on ARMv6-M,
+//! src/target/thumb2.rs on ARMv7-M and ARMv8-M mainline, src/target/x86_64.rs on x86-64): the
+//! block they read, filled in and checked here, and a solid colour's two bytes. Each core's
+//! module holds its assembly and the proof that it keeps to the block's contract
+//! ([`RowBlock`]).
 
 use core::mem::{align_of, size_of};
 
-use super::depth::{DepthTest, FragmentCount, RoundedRows};
+use super::depth::{DepthTest, FragmentCount, LoopWord, RoundedRows};
 #[cfg(fixed3d_thumb1)]
 use super::thumb1 as core_rows;
 #[cfg(fixed3d_thumb2)]
 use super::thumb2 as core_rows;
+#[cfg(target_arch = "x86_64")]
+use super::x86_64 as core_rows;
 use crate::pipeline::Stats;
 use crate::raster::{EdgeWalk, Runs, TriangleSpans};
 
 /// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
-/// steps; elsewhere its numerator, step, denominator and base).
+/// steps; on ARMv7-M its numerator, step, denominator and base; on x86-64 its walk and step).
 pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 
 /// What a row loop in assembly reads and writes, each field at its `offset_of!` (which the
@@ -59,7 +62,8 @@ pub(super) struct RowBlock {
     pub(super) failed: u32,
 }
 
-// The pairs the loops load with one instruction lie one word apart.
+// The pairs the Cortex-M loops load with one instruction lie one word apart.
+#[cfg(fixed3d_thumb)]
 const _: () = {
     use core::mem::offset_of;
     assert!(offset_of!(RowBlock, delta) == offset_of!(RowBlock, step_x) + 4);
@@ -79,9 +83,9 @@ const _: () = {
 /// the buffers do not hold the triangle's rows (never, for spans clipped to the target).
 #[inline(always)]
 #[allow(unsafe_code, clippy::too_many_arguments)]
-pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
+pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     spans: TriangleSpans,
-    depth: &RoundedRows<i32>,
+    depth: &RoundedRows<W>,
     colors: &mut [C],
     depths: &mut [u16],
     first_row: i32,
@@ -97,16 +101,16 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount>(
     let first = spans.row().wrapping_sub(first_row) as u32;
     let mut block = RowBlock {
         runs: Runs::EMPTY,
-        step_x: depth.step_x,
+        step_x: depth.step_x.to_i32(),
         delta: 0,
-        step_y: depth.step_y,
+        step_y: depth.step_y.to_i32(),
         stride: 0,
         width: w,
         end: 0,
         last: 0,
         slot: 0,
         bits,
-        row_z: depth.row,
+        row_z: depth.row.to_i32(),
         row: 0,
         fragments: 0,
         failed: 0,
@@ -166,7 +170,10 @@ pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {
     // the block reads nothing else and writes no memory.
     unsafe {
         core::arch::asm!(
+            #[cfg(fixed3d_thumb)]
             "ldrh {bits}, [{color}]",
+            #[cfg(target_arch = "x86_64")]
+            "movzx {bits:e}, word ptr [{color}]",
             bits = out(reg) bits,
             color = in(reg) color as *const C,
             options(pure, readonly, nostack, preserves_flags)
