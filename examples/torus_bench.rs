@@ -8,7 +8,9 @@
 //! One frame is `clear_buffers` (colour and depth) then `draw_scene` (vertex stage, culling,
 //! shading, rasterising); both are `#[inline(never)]` so that a profiler can count them apart.
 //! The target counts no fragments (the scene needs no counts) unless the example is built with
-//! `TORUS_BENCH_COUNTED` set (see [`COUNTED`]).
+//! `TORUS_BENCH_COUNTED` set (see [`COUNTED`]). `bench/host.sh` builds it with the crate's `asm`
+//! feature, as the firmware presets are (`--features asm`: the row loop in x86-64 assembly),
+//! and without it.
 //! The same scene is then drawn by the crate's f64 reference renderer, timed side by side.
 
 #[path = "common/reference.rs"]

@@ -74,7 +74,7 @@ CUTS = [
         "        let (mut y, width) = (spans.row(), self.color.width() as usize);",
     ), (
         # The `asm` feature's row loops (both cores): everything up to the call.
-        "src/target/arm.rs",
+        "src/target/asm_rows.rs",
         "    unsafe { core_rows::rows::<T, K>(&mut block) };",
         f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return Ok(()); }}\n"
         "    unsafe { core_rows::rows::<T, K>(&mut block) };",
