@@ -209,3 +209,168 @@ fn product(a: u32, b: usize) -> Option<usize> {
         (a as usize).checked_mul(b)
     }
 }
+
+/// The loops' Rust side on the host (x86-64 with the `asm` feature; the Cortex-M cores run it
+/// under emulation, bench/mcu/run.sh): what it refuses and what it draws.
+#[cfg(test)]
+mod tests {
+    use std::{vec, vec::Vec};
+
+    use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+
+    use super::*;
+    use crate::raster::{triangle_spans, PixelRect, ScreenPoint};
+    use crate::target::{Counted, Less, LessOrEqual, Uncounted};
+
+    const W: usize = 24;
+    const H: usize = 16;
+    const FAR: u16 = 0xC000;
+
+    /// A triangle in sub-pixels (16 to a pixel) clipped to `clip`, crossing the buffers' left
+    /// and right columns, its middle vertex on the right, or on the left if `mirrored` (the
+    /// lower short edge then replaces the left edge).
+    fn spans(clip: PixelRect, mirrored: bool) -> TriangleSpans {
+        let p = |x: i32, y: i32| {
+            let x = if mirrored { W as i32 - x } else { x };
+            ScreenPoint::new(x * 16 + 3, y * 16 + 5)
+        };
+        triangle_spans([p(-4, -2), p(30, 6), p(5, 20)], clip)
+    }
+
+    /// A depth walk that crosses the far depth inside the triangle, so that both tests pass
+    /// and fail, and ties occur.
+    fn walk() -> RoundedRows<i32> {
+        RoundedRows {
+            row: 0x5F80_0000,
+            step_x: 0x0008_0000,
+            step_y: 0x0004_0000,
+        }
+    }
+
+    /// What the loops draw, by definition: each row's span clamped to the buffers' columns
+    /// (the spans' own clip), the depth `(row + step_x·x) >> 15`, `T`'s test against the
+    /// stored depth; the fragments and writes counted.
+    fn expected<T: DepthTest>(
+        first_row: i32,
+        mirrored: bool,
+        colors: &mut [Rgb565],
+        depths: &mut [u16],
+    ) -> Stats {
+        let (mut stats, w) = (Stats::default(), walk());
+        let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
+        let spans = spans(clip, mirrored);
+        let y0 = spans.row();
+        for s in spans {
+            let row = w.row.wrapping_add(w.step_y.wrapping_mul(s.y - y0));
+            for x in s.x0..s.x1 {
+                let z = (row.wrapping_add(w.step_x.wrapping_mul(x)) as u32 >> 15) as u16;
+                let cell = (s.y - first_row) as usize * W + x as usize;
+                stats.fragments += 1;
+                if z < depths[cell] || (T::OR_EQUAL && z == depths[cell]) {
+                    depths[cell] = z;
+                    colors[cell] = Rgb565::RED;
+                    stats.written += 1;
+                }
+            }
+        }
+        stats
+    }
+
+    fn buffers() -> (Vec<Rgb565>, Vec<u16>) {
+        (vec![Rgb565::BLUE; W * H], vec![FAR; W * H])
+    }
+
+    /// The loop draws what the definition draws, for both tests, counted or not, in a band
+    /// whose first row is not 0 and with spans clamped on both sides.
+    #[test]
+    fn r7_t21_solid_rows_draw_the_definition() {
+        fn check<T: DepthTest, K: FragmentCount>(first_row: i32, mirrored: bool) {
+            let (mut colors, mut depths) = buffers();
+            let (mut want_c, mut want_d) = buffers();
+            let want = expected::<T>(first_row, mirrored, &mut want_c, &mut want_d);
+            let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
+            let bits = color_bits(&Rgb565::RED).unwrap_or_default();
+            let mut stats = Stats::default();
+            let drawn = solid_rows::<Rgb565, T, K, i32>(
+                spans(clip, mirrored),
+                &walk(),
+                &mut colors,
+                &mut depths,
+                first_row,
+                W as u32,
+                bits,
+                &mut stats,
+            );
+            assert!(drawn.is_ok());
+            assert_eq!(
+                (colors, depths),
+                (want_c, want_d),
+                "{first_row}, {mirrored}"
+            );
+            if K::COUNTED {
+                assert_eq!(
+                    (stats.fragments, stats.written),
+                    (want.fragments, want.written)
+                );
+            } else {
+                assert_eq!(stats, Stats::default());
+            }
+            assert!(want.written > 0 && want.written < want.fragments);
+        }
+        // Ties occur: the tests draw differently.
+        let (mut c, mut d) = buffers();
+        let (less, or_equal) = (
+            expected::<Less>(0, false, &mut c.clone(), &mut d.clone()),
+            expected::<LessOrEqual>(0, false, &mut c, &mut d),
+        );
+        assert!(less.written < or_equal.written);
+        for (first_row, mirrored) in [-2, 0, 3].into_iter().flat_map(|y| [(y, false), (y, true)]) {
+            check::<Less, Counted>(first_row, mirrored);
+            check::<LessOrEqual, Counted>(first_row, mirrored);
+            check::<Less, Uncounted>(first_row, mirrored);
+            check::<LessOrEqual, Uncounted>(first_row, mirrored);
+        }
+    }
+
+    /// Spans clipped to other columns than the buffers' are handed back untouched; rows the
+    /// buffers do not hold draw nothing.
+    #[test]
+    fn r6_solid_rows_refuse_what_they_cannot_draw() {
+        let bits = color_bits(&Rgb565::RED).unwrap_or_default();
+        let mut stats = Stats::default();
+        let (mut colors, mut depths) = buffers();
+        let (c0, d0) = (colors.clone(), depths.clone());
+        let narrow = spans(PixelRect::new(1, 0, W as i32, H as i32), false);
+        let back = solid_rows::<Rgb565, Less, Counted, i32>(
+            narrow.clone(),
+            &walk(),
+            &mut colors,
+            &mut depths,
+            0,
+            W as u32,
+            bits,
+            &mut stats,
+        );
+        assert_eq!(
+            back.map_err(|s| s.collect::<Vec<_>>()),
+            Err(narrow.collect())
+        );
+        // The spans' rows reach past the buffers' last row (the clip holds more rows).
+        let tall = spans(PixelRect::new(0, 0, W as i32, 2 * H as i32), false);
+        let drawn = solid_rows::<Rgb565, Less, Counted, i32>(
+            tall,
+            &walk(),
+            &mut colors,
+            &mut depths,
+            0,
+            W as u32,
+            bits,
+            &mut stats,
+        );
+        assert!(drawn.is_ok());
+        assert_eq!((colors, depths, stats), (c0, d0, Stats::default()));
+        // Colours of another size take the caller's loop.
+        assert_eq!(color_bits(&[0u8; 3]), None);
+        assert_eq!(color_bits(&0u32), None);
+    }
+}

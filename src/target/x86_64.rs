@@ -18,7 +18,9 @@
 //! halves, clamped to the same columns), the same depths (`acc >> 15`, below 2¹⁶ since every
 //! value lies in [0, 2³¹)), the same test on the same stored depth, the same stores and
 //! counts. The host's tests run it with the feature (`.ci/run`): every golden image and
-//! every rasteriser test over a [`ColorDepth`](super::ColorDepth) with u16 depth.
+//! every rasteriser test over a [`ColorDepth`](super::ColorDepth) with u16 depth, and
+//! asm_rows.rs's own tests against the loops' definition (both middle-vertex sides, both
+//! clamps, a band's first row, ties, counts) and of what the set-up refuses.
 
 use core::mem::offset_of;
 
