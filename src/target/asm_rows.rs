@@ -280,33 +280,40 @@ mod tests {
         (vec![Rgb565::BLUE; W * H], vec![FAR; W * H])
     }
 
+    /// `solid_rows` of `spans` in red, [`walk`]'s depths, into buffers of `W` columns holding
+    /// rows from `first_row`.
+    fn draw<T: DepthTest, K: FragmentCount>(
+        spans: TriangleSpans,
+        first_row: i32,
+        (colors, depths): &mut (Vec<Rgb565>, Vec<u16>),
+        stats: &mut Stats,
+    ) -> Result<(), TriangleSpans> {
+        let bits = color_bits(&Rgb565::RED).unwrap_or_default();
+        solid_rows::<Rgb565, T, K, i32>(
+            spans,
+            &walk(),
+            colors,
+            depths,
+            first_row,
+            W as u32,
+            bits,
+            stats,
+        )
+    }
+
     /// The loop draws what the definition draws, for both tests, counted or not, in a band
     /// whose first row is not 0 and with spans clamped on both sides.
     #[test]
     fn r7_t21_solid_rows_draw_the_definition() {
         fn check<T: DepthTest, K: FragmentCount>(first_row: i32, mirrored: bool) {
-            let (mut colors, mut depths) = buffers();
+            let mut cells = buffers();
             let (mut want_c, mut want_d) = buffers();
             let want = expected::<T>(first_row, mirrored, &mut want_c, &mut want_d);
             let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
-            let bits = color_bits(&Rgb565::RED).unwrap_or_default();
             let mut stats = Stats::default();
-            let drawn = solid_rows::<Rgb565, T, K, i32>(
-                spans(clip, mirrored),
-                &walk(),
-                &mut colors,
-                &mut depths,
-                first_row,
-                W as u32,
-                bits,
-                &mut stats,
-            );
+            let drawn = draw::<T, K>(spans(clip, mirrored), first_row, &mut cells, &mut stats);
             assert!(drawn.is_ok());
-            assert_eq!(
-                (colors, depths),
-                (want_c, want_d),
-                "{first_row}, {mirrored}"
-            );
+            assert_eq!(cells, (want_c, want_d), "{first_row}, {mirrored}");
             if K::COUNTED {
                 assert_eq!(
                     (stats.fragments, stats.written),
@@ -336,39 +343,19 @@ mod tests {
     /// buffers do not hold draw nothing.
     #[test]
     fn r6_solid_rows_refuse_what_they_cannot_draw() {
-        let bits = color_bits(&Rgb565::RED).unwrap_or_default();
         let mut stats = Stats::default();
-        let (mut colors, mut depths) = buffers();
-        let (c0, d0) = (colors.clone(), depths.clone());
+        let mut cells = buffers();
+        let untouched = cells.clone();
         let narrow = spans(PixelRect::new(1, 0, W as i32, H as i32), false);
-        let back = solid_rows::<Rgb565, Less, Counted, i32>(
-            narrow.clone(),
-            &walk(),
-            &mut colors,
-            &mut depths,
-            0,
-            W as u32,
-            bits,
-            &mut stats,
-        );
+        let back = draw::<Less, Counted>(narrow.clone(), 0, &mut cells, &mut stats);
         assert_eq!(
             back.map_err(|s| s.collect::<Vec<_>>()),
             Err(narrow.collect())
         );
         // The spans' rows reach past the buffers' last row (the clip holds more rows).
         let tall = spans(PixelRect::new(0, 0, W as i32, 2 * H as i32), false);
-        let drawn = solid_rows::<Rgb565, Less, Counted, i32>(
-            tall,
-            &walk(),
-            &mut colors,
-            &mut depths,
-            0,
-            W as u32,
-            bits,
-            &mut stats,
-        );
-        assert!(drawn.is_ok());
-        assert_eq!((colors, depths, stats), (c0, d0, Stats::default()));
+        assert!(draw::<Less, Counted>(tall, 0, &mut cells, &mut stats).is_ok());
+        assert_eq!((cells, stats), (untouched, Stats::default()));
         // Colours of another size take the caller's loop.
         assert_eq!(color_bits(&[0u8; 3]), None);
         assert_eq!(color_bits(&0u32), None);
