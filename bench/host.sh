@@ -220,9 +220,9 @@ $stages
   about 10.2 a fragment (its unrolled pixel loop reloads the colour from the stack, and a
   span's odd pixel goes apart). With the \`asm\` feature x86-64 runs the whole triangle's
   rows in assembly too (src/target/x86_64.rs), from the Cortex-M loops' block and set-up:
-  both edges' walks stay in registers (their steps in the block), 17 instructions a row, 6
-  to enter a span, 7 a fragment and 2 more a write: the frame 9.6% fewer instructions
-  (1.660 M → 1.500 M), where the same block walked by a compiled loop (for targets without
+  both edges' walks stay in registers (their steps in the block), 16 instructions a row, 6
+  to enter a span, 7 a fragment and 2 more a write: the frame 10% fewer instructions
+  (1.660 M → 1.493 M), where the same block walked by a compiled loop (for targets without
   assembly) had measured 3.7% more. The clamps to the clip columns take at most 1.8% of the M4's frame
   (measured without them), but a copy of the row loop without them for triangles within
   the columns measured 0.7% more on the M4 and 12% more on the M0, 750 to 780 bytes more. An
