@@ -22,10 +22,11 @@ pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 
 /// What a row loop in assembly reads and writes, each field at its `offset_of!` (which the
 /// assembly takes as `const` operands): a triangle's runs of rows, its edges first, then its
-/// depth walk, the buffers' layout, where the runs end, the colour and the counts.
+/// depth walk, the buffers' layout, where the runs end, the colour and the counts. The fields
+/// called pairs below are read together by the Cortex-M loops (`ldrd`, `ldm`).
 ///
-/// Contract of the loops (`thumb1::rows`, `thumb2::rows`), which [`solid_rows`] establishes
-/// and checks before it calls them:
+/// Contract of the loops (`thumb1::rows`, `thumb2::rows`, `x86_64::rows`), which
+/// [`solid_rows`] establishes and checks before it calls them:
 /// - `row` is the address of the first of `rows · width` cells of a colour buffer (2 bytes a
 ///   cell, aligned to 2) and `row + delta` that of the same cells of a u16 depth buffer, both
 ///   borrowed mutably for the call, with `runs.rows ≥ 1` and `width > 0`;

@@ -45,8 +45,8 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         false
     }
 
-    /// The cells as u16s, for the row loops in assembly (`target::thumb1`, `target::thumb2`);
-    /// `None` for other formats.
+    /// The cells as u16s, for the row loops in assembly (`target::thumb1`, `target::thumb2`,
+    /// `target::x86_64`); `None` for other formats.
     #[cfg(all(feature = "asm", fixed3d_asm_rows))]
     #[doc(hidden)]
     #[inline(always)]
@@ -205,7 +205,8 @@ impl DepthFormat for u16 {
 }
 
 /// A span's one colour, prepared once a triangle for the span loops that take it whole (with
-/// the `asm` feature on Cortex-M cores: its two bytes as a word, see `asm_rows::color_bits`).
+/// the `asm` feature on Cortex-M cores and x86-64: its two bytes as a word, see
+/// `asm_rows::color_bits`).
 #[doc(hidden)]
 #[derive(Clone, Copy, Debug)]
 pub struct SolidColor<C> {
@@ -469,9 +470,8 @@ impl DepthTest for LessOrEqual {
 /// A type, chosen when the target is built ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)):
 /// a frame that does not need the counts does not pay for them (on the reference torus, 3.7%
 /// of the Cortex-M4's instructions, 4.3% with the `asm` feature, 2.1% of the Cortex-M0's (1.9%
-/// with it),
-/// 0.9% of x86-64's: a count per span and one per failed fragment, and the registers they
-/// hold in the row loop).
+/// with it), 0.9% of x86-64's (2.5% with it): a count per span and one per failed fragment,
+/// and the registers they hold in the row loop).
 pub trait FragmentCount: sealed::Sealed + Copy + Default + core::fmt::Debug {
     /// True when fragments and writes are counted.
     const COUNTED: bool;
