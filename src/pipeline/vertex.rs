@@ -240,7 +240,7 @@ pub(crate) fn outcode_and_project_unfit(
 
 /// [`outcode_and_project`] from its definitions: [`distance`] and [`inside`] for each plane of
 /// the reduced coordinates, then [`project`] (the clipper's code).
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 pub(crate) fn outcode_and_project_by_planes(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoint, i32) {
     let r = reduce(c);
     let code = (0..PLANES).fold(0u8, |code, k| {

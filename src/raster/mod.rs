@@ -423,7 +423,7 @@ impl CeilStepper {
 ///
 /// Its two words lie in the order of its fields (`repr(C)`): the `asm` feature's row loop on
 /// x86-64 (`target::x86_64`) reads them at offsets 0 and 8.
-#[cfg(any(test, target_pointer_width = "64"))]
+#[cfg(any(test, doc, target_pointer_width = "64"))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 pub(crate) struct FractionStepper {
@@ -431,7 +431,7 @@ pub(crate) struct FractionStepper {
     step: u64,
 }
 
-#[cfg(any(test, target_pointer_width = "64"))]
+#[cfg(any(test, doc, target_pointer_width = "64"))]
 impl FractionStepper {
     /// The constant 0 (for iterators that yield nothing).
     pub(crate) const ZERO: Self = FractionStepper { acc: 0, step: 0 };
@@ -476,7 +476,7 @@ impl FractionStepper {
 ///
 /// Its four words lie in the order of its fields (`repr(C)`): the `asm` feature's row loop
 /// (`target::thumb2`) reads them at offsets 0, 4, 8 and 12.
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 pub(crate) struct DivideStepper {
@@ -487,7 +487,7 @@ pub(crate) struct DivideStepper {
     base: i32,
 }
 
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 impl DivideStepper {
     /// The constant 0 (for iterators that yield nothing).
     #[cfg_attr(test, allow(dead_code))]
@@ -536,7 +536,7 @@ const _: () = {
 };
 
 // The layout `target::thumb2` reads: numerator, step, denominator, base.
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 const _: () = {
     use core::mem::{offset_of, size_of};
     assert!(offset_of!(DivideStepper, num) == 0 && offset_of!(DivideStepper, step) == 4);
@@ -573,7 +573,7 @@ fn packed_quotient32(v: i32, d: i64) -> u64 {
 
 /// How many values from its start (the start's included) a [`FractionStepper`] of denominator
 /// `den` walks exactly: the largest `n` with `n·(den − 1) < 2³²` (any number for `den` 1).
-#[cfg(any(test, target_pointer_width = "64"))]
+#[cfg(any(test, doc, target_pointer_width = "64"))]
 pub(crate) fn fraction_rows(den: i32) -> u32 {
     u32::MAX
         .checked_div(den.saturating_sub(1).max(0) as u32)

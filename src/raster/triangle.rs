@@ -14,19 +14,19 @@
 //! cores with a divide instruction the numerator itself steps, in one word whose bound decides
 //! the same, and each row divides it once).
 
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 use super::floor_div;
 #[cfg(not(any(
     target_pointer_width = "64",
     all(target_pointer_width = "32", target_has_atomic = "32")
 )))]
 use super::CeilStepper;
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 use super::DivideStepper;
 #[cfg(test)]
 use super::Plane;
 use super::{doubled_area, first_centre_from32, PixelRect, ScreenPoint};
-#[cfg(target_pointer_width = "64")]
+#[cfg(any(doc, target_pointer_width = "64"))]
 use super::{fraction_rows, FractionStepper};
 #[cfg(not(any(
     target_pointer_width = "64",
@@ -40,12 +40,12 @@ use crate::math::{mul_wide, SUBPIXEL_SCALE};
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
 
-/// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`](super::FractionStepper),
+/// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`],
 /// one addition a row (x86-64: 5% fewer instructions per frame), which a triangle re-seeds
-/// from its vertices every [`fraction_rows`](super::fraction_rows) rows (triangles the pipeline
+/// from its vertices every [`fraction_rows`] rows (triangles the pipeline
 /// draws never need it: at most 2¹² rows of edges below 2¹⁶ sub-pixels); on 32-bit cores that
 /// divide words in one instruction (Cortex-M3/M4; told apart as in
-/// [`NARROW_CORE`](crate::math::NARROW_CORE)) [`DivideStepper`](super::DivideStepper), one
+/// [`NARROW_CORE`](crate::math::NARROW_CORE)) [`DivideStepper`], one
 /// addition and one division a row, re-seeded every [`division_rows`] rows (never for
 /// triangles the pipeline draws); elsewhere the exact [`CeilStepper`](super::CeilStepper),
 /// whose set-up needs no 64-bit division (a library routine on 32-bit cores).
@@ -159,7 +159,7 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
 /// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled
 /// signed area (in the given order, see `doubled_area`) the caller has, and whose edges walk
 /// `seed_rows` rows from each set-up ([`division_rows`]; only
-/// [`DivideStepper`](super::DivideStepper) edges need it, others take `u32::MAX`). The
+/// [`DivideStepper`] edges need it, others take `u32::MAX`). The
 /// pipeline's triangles, whose vertices lie within ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT),
 /// pass `u32::MAX` on every core: that is their `division_rows` (their width and height are
 /// at most 2¹⁶ − 32), and in line it is a constant, so that the row loop carries no check.
@@ -228,7 +228,7 @@ pub(crate) fn spans_in_range(
 
 /// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row
 /// `py` (one of the edge's rows), for `rows` rows from there (`u32::MAX`: to the edge's end;
-/// only [`DivideStepper`](super::DivideStepper) edges need it). With coordinates within ±2²⁴
+/// only [`DivideStepper`] edges need it). With coordinates within ±2²⁴
 /// every difference below is a 32-bit factor, the numerator stays below 2⁵⁴ and the
 /// denominator below 2²⁹.
 #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
@@ -241,7 +241,7 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
     }
 }
 
-/// [`edge`] where the walk is not a [`DivideStepper`](super::DivideStepper) (which alone needs
+/// [`edge`] where the walk is not a [`DivideStepper`] (which alone needs
 /// `rows`).
 #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
 fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, _rows: u32) -> EdgeWalk {
@@ -288,9 +288,9 @@ fn edge_terms(p: ScreenPoint, q: ScreenPoint, py: i32) -> (i32, i32, i32, i32) {
     (dx, dy, x, t)
 }
 
-/// The [`DivideStepper`](super::DivideStepper) of an edge from `base`: `N − base·D` is
+/// The [`DivideStepper`] of an edge from `base`: `N − base·D` is
 /// `(x − 16·base)·dy + dx·t` modulo 2³², which the caller's base keeps in `[0, 2³² − D]`.
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[inline(always)]
 fn stepper_from(dx: i32, dy: i32, x: i32, t: i32, base: i32) -> DivideStepper {
     let above = (x.wrapping_sub(base.wrapping_mul(S as i32)) as u32)
@@ -300,13 +300,13 @@ fn stepper_from(dx: i32, dy: i32, x: i32, t: i32, base: i32) -> DivideStepper {
     DivideStepper::new(above, den, dx.wrapping_mul(S as i32) as u32, base)
 }
 
-/// [`edge`] as a [`DivideStepper`](super::DivideStepper) for all of the edge's rows, from the
+/// [`edge`] as a [`DivideStepper`] for all of the edge's rows, from the
 /// base `b = ⌊(min(p.x, q.x) − 8) / 16⌋`, no division. On the edge's rows (`0 ≤ t < dy`) the
 /// crossing `N / dy = p.x − 8 + dx·t / dy` lies between `min − 8` and `max − 8`, and
 /// `min − 8 − 16b` in `[0, 15]`, so `0 ≤ N − b·D ≤ 15·dy + |dx|·(dy − 1)`, and with the
 /// ceiling's `D − 1` the stepper's word is at most `(|dx| + 31)·dy − 1`: below 2³² wherever
 /// [`division_rows`] is `u32::MAX`.
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[inline(never)]
 fn edge_by_division(p: ScreenPoint, q: ScreenPoint, py: i32) -> DivideStepper {
     let (dx, dy, x, t) = edge_terms(p, q, py);
@@ -314,13 +314,13 @@ fn edge_by_division(p: ScreenPoint, q: ScreenPoint, py: i32) -> DivideStepper {
     stepper_from(dx, dy, x, t, base)
 }
 
-/// [`edge`] as a [`DivideStepper`](super::DivideStepper) for `rows` rows from `py` (any
+/// [`edge`] as a [`DivideStepper`] for `rows` rows from `py` (any
 /// `rows` from 1 to [`division_rows`]' quotient), from the row's own quotient: the base
 /// `b = ⌊N / D⌋`, less `⌈|dx|·rows / dy⌉` for an edge that runs left. Over `k < rows` steps
 /// `N + 16·dx·k − b·D` then lies in `[0, 2·D + 16·|dx|·rows)`, and with the ceiling's `D − 1`
 /// the stepper's word is below `48·dy + 16·|dx|·rows < 2³²` (`dy ≤ 2²⁵`, `|dx|·rows < 2²⁷`).
 /// One 64-bit division: only triangles far larger than the pipeline's take this.
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[inline(never)]
 fn edge_by_division_for(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> DivideStepper {
     let (dx, dy, x, t) = edge_terms(p, q, py);
@@ -337,13 +337,13 @@ fn edge_by_division_for(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> D
     stepper_from(dx, dy, x, t, base)
 }
 
-/// The rows a triangle's [`DivideStepper`](super::DivideStepper) edges walk from one set-up:
+/// The rows a triangle's [`DivideStepper`] edges walk from one set-up:
 /// with `W` its width and `H` its height in sub-pixels, `u32::MAX` (all of them, see
 /// [`edge_by_division`]) where `(W + 31)·H ≤ 2³²`, which holds for every triangle within
 /// ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT) (`W, H ≤ 2¹⁶ − 32`); otherwise
 /// `⌊(2²⁷ − 1) / W⌋`, at least 3 within ±[`COORD_LIMIT`](super::COORD_LIMIT) (see
 /// [`edge_by_division_for`]).
-#[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 fn division_rows(v: &[ScreenPoint; 3]) -> u32 {
     let [a, b, c] = *v;
     let (x_min, x_max) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
@@ -519,7 +519,7 @@ impl TriangleSpans {
     /// [`rows_one_by_one`](Self::rows_one_by_one) for triangles whose edges are set up again
     /// on the way down (see [`division_rows`]: none of the pipeline's), out of line so that
     /// the row loop of every other triangle carries no check for it.
-    #[cfg(any(test, all(target_pointer_width = "32", target_has_atomic = "32")))]
+    #[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
     #[inline(never)]
     fn rows_reseeding(mut self, f: &mut dyn FnMut(i32, i32)) {
         while self.y < self.y_end {
