@@ -214,9 +214,11 @@ pub(crate) fn dot_wide(a: [i32; 3], b: [i32; 3]) -> i64 {
         .wrapping_add(mul_wide(a2, b2))
 }
 
-/// `a·b > 0` for components within ±2³⁰ (a face direction and a light's): on cores without a
-/// long multiply decided by [`dot_sign_by_halves`] where it can be (all but the faces nearly
-/// edge-on to the light), since the exact sum takes twelve 32-bit products there.
+/// `a·b > 0` for a face direction `a` (any i32 components but `i32::MIN`) and a light's unit
+/// direction `b` (Q2.30, components within ±2³⁰): on cores without a long multiply decided by
+/// [`dot_sign_by_halves`] where it can be (all but the faces nearly edge-on to the light),
+/// since the exact sum takes twelve 32-bit products there. Products below 2⁶¹, three sum
+/// below 2⁶³: the exact sum fits i64.
 #[inline(always)]
 pub(crate) fn dot_is_positive(a: [i32; 3], b: [i32; 3]) -> bool {
     if NARROW_CORE {
@@ -227,14 +229,15 @@ pub(crate) fn dot_is_positive(a: [i32; 3], b: [i32; 3]) -> bool {
     dot_wide(a, b) > 0
 }
 
-/// `Some(a·b > 0)` from the components' high halves alone, for components within ±2³⁰; `None`
-/// when they cannot tell. With `a = ah·2¹⁶ + al` (`0 ≤ al < 2¹⁶`, `|ah| ≤ 2¹⁴`) and `b`
-/// likewise, `a·b − ah·bh·2³²` lies in `(−2⁴⁷, 2⁴⁷ + 2³²)`: three such terms move the sum by
-/// less than `3·2¹⁵` units of 2³² below and `3·2¹⁵ + 3` above `A = Σ ah·bh` (within ±3·2²⁸:
-/// a word).
+/// `Some(a·b > 0)` from the components' high halves alone, for `a` and `b` as
+/// [`dot_is_positive`] takes them; `None` when they cannot tell. With `a = ah·2¹⁶ + al`
+/// (`0 ≤ al < 2¹⁶`, `−2¹⁵ ≤ ah < 2¹⁵`) and `b = bh·2¹⁶ + bl` (`|bh| ≤ 2¹⁴`),
+/// `a·b − ah·bh·2³² = (ah·bl + al·bh)·2¹⁶ + al·bl` lies in `(−3·2⁴⁶, 3·2⁴⁶ + 2³²)`: three such
+/// terms move the sum by less than `9·2¹⁴` units of 2³² below and `9·2¹⁴ + 3` above
+/// `A = Σ ah·bh` (within ±3·2²⁹: a word).
 #[inline(always)]
 fn dot_sign_by_halves(a: [i32; 3], b: [i32; 3]) -> Option<bool> {
-    const MARGIN: i32 = 3 << 15;
+    const MARGIN: i32 = 9 << 14;
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     let high = |x: i32, y: i32| (x >> 16).wrapping_mul(y >> 16);
     let s = high(a0, b0)
@@ -352,8 +355,9 @@ mod tests {
         assert!(u.iter().all(|c| c.abs() <= UNIT_ONE));
     }
 
-    /// The high halves' sign is the exact sum's wherever they give one, at the ±2³⁰ extremes
-    /// and at random, and they give one for most pairs of a face direction and a light.
+    /// The high halves' sign is the exact sum's wherever they give one, at the extremes (a
+    /// face direction's ±(2³¹ − 1), a light's ±2³⁰) and at random, and they give one for most
+    /// pairs of a face direction and a light.
     #[test]
     fn dot_sign_by_halves_is_the_exact_sign() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
@@ -376,7 +380,12 @@ mod tests {
                 Some(&e) => e,
                 None => rng.within(one) >> (rng.next_u64() % 8),
             };
-            let (a, b) = ([pick(0), pick(1), pick(2)], [pick(3), pick(4), pick(5)]);
+            // A face direction reaches twice a light's range (a light's component doubled).
+            let face = |c: i32| c.saturating_mul(2).max(-i32::MAX);
+            let (a, b) = (
+                [pick(0), pick(1), pick(2)].map(face),
+                [pick(3), pick(4), pick(5)],
+            );
             let exact = dot_wide(a, b) > 0;
             if let Some(positive) = dot_sign_by_halves(a, b) {
                 assert_eq!(positive, exact, "{a:?} {b:?}");

@@ -92,13 +92,18 @@ fn lit(base: u8, intensity: i32) -> u8 {
 /// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough
 /// headroom for one more product with Q16.16 before normalising.
 fn shrink(v: [i64; 3]) -> [i64; 3] {
+    shrink_below(v, 30)
+}
+
+/// Shifts a vector so that every component lies within ±(2^`bits` − 1).
+fn shrink_below(v: [i64; 3], bits: u32) -> [i64; 3] {
     // The common case, found by comparisons (counting bits is a library call on Cortex-M0).
-    if below_bits(v[0], 30) && below_bits(v[1], 30) && below_bits(v[2], 30) {
+    if below_bits(v[0], bits) && below_bits(v[1], bits) && below_bits(v[2], bits) {
         return v;
     }
-    let bits = magnitude_bits(&v);
-    if bits > 30 {
-        let s = bits - 30;
+    let magnitude = magnitude_bits(&v);
+    if magnitude > bits {
+        let s = magnitude - bits;
         map3(v, |c| c >> s)
     } else {
         v
@@ -147,7 +152,8 @@ pub(crate) fn flat_color<const N: usize>(
     )
 }
 
-/// Lambert of a face whose direction is `n` (components within ±2³⁰). A face that turns from
+/// Lambert of a face whose direction is `n` (any i32 components but `i32::MIN`, as
+/// [`face_direction`] gives). A face that turns from
 /// every light gets the ambient colour without being normalised: its direction's products
 /// with the lights are all ≤ 0, so Lambert adds nothing. With [`Normalize::Newton`] (the
 /// default) no unit normal is formed: each light's cosine is the direction's product with
@@ -160,7 +166,7 @@ fn face_lambert<const N: usize>(
     method: Normalize,
     lighting: &Lighting<N>,
 ) -> Rgb888 {
-    // Components below 2³⁰ and unit directions: products below 2⁶⁰, sums below 2⁶².
+    // Components below 2³¹ and unit directions: products below 2⁶¹, sums below 2⁶³.
     let faces = |l: &[i32; 3]| dot_is_positive(n, *l);
     // Every case but Newton's leaves through the one `lambert` below: with a second call
     // (an early return for faces turned away) it and the reciprocal square root left the
@@ -179,8 +185,11 @@ fn face_lambert<const N: usize>(
 }
 
 /// The face normal of a model-space triangle, counter-clockwise front, at some scale that fits
-/// 32-bit words (every component within ±2³⁰), in world space through `normal_matrix` (in
-/// model space without one); zero for a zero-area triangle. Edges of any length: the cross
+/// 32-bit words (every component within ±(2³¹ − 1); within ±2³⁰ through a normal matrix), in
+/// world space through `normal_matrix` (in model space without one); zero for a zero-area
+/// triangle. Without a normal matrix it is the exact cross product wherever that fits (every
+/// triangle whose edges lie within ±2¹⁵, on every core alike), and shifted right as little as
+/// brings it within range otherwise. Edges of any length: the cross
 /// product is exact in i64 after the edges are shifted below 2³⁰ (case T33). `extent` bounds
 /// every coordinate's magnitude (the mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹
 /// the edges need no shifting, and are not even checked.
@@ -206,40 +215,25 @@ fn face_direction(
         map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
     };
     let (u, v) = (edge(b), edge(c));
-    // On 32-bit cores (Cortex-M0, without a long multiply: 1.1% of the frame; the M4 0.7%
-    // since its edges divide, 1.1% more before, when its pixel loop then reloaded two values
-    // per pixel). On x86-64 the 64-bit path: 1% fewer instructions.
+    // Edges within ±2¹⁵ on 32-bit cores: the exact cross product in words (Cortex-M0, without
+    // a long multiply: 1.1% of the frame; the M4 0.7% since its edges divide, 1.1% more
+    // before, when its pixel loop then reloaded two values per pixel; on x86-64 the 64-bit
+    // path: 1% fewer instructions). It lies within ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)`
+    // leaves it too: the same direction on every core. (Halved from 2³⁰ on, as the normal
+    // matrix's path is, it cost the M4 1.5% and the M0 0.6% of the frame in that test.)
     if cfg!(not(target_pointer_width = "64")) && normal_matrix.is_none() {
-        if let Some(n) = short_direction(u, v) {
+        if let Some(n) = cross_short(u, v) {
             return n;
         }
     }
     // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
-    let n = shrink(cross_wide(u, v));
+    let n = cross_wide(u, v);
     let n = match normal_matrix {
-        Some(m) => shrink(apply(m, n)),
-        None => n,
+        Some(m) => shrink(apply(m, shrink(n))),
+        None => shrink_below(n, 31),
     };
-    // Within ±2³⁰ after `shrink`.
+    // Within ±(2³¹ − 1) after `shrink_below`.
     map3(n, |c| c as i32)
-}
-
-/// `shrink(cross_wide(u, v))` in 32-bit words for edges within ±2¹⁵ (those of most
-/// triangles; `None` for longer ones): their cross product lies within ±2³¹, and `shrink`
-/// halves it where a component reaches 2³⁰ (its largest magnitude then has 31 bits).
-#[inline(always)]
-fn short_direction(u: [i32; 3], v: [i32; 3]) -> Option<[i32; 3]> {
-    let n = cross_short(u, v)?;
-    // One test of the three magnitudes together (at the firmware's opt-level "s" an
-    // `iter().all` over the components stays a loop: 0.2% of the Cortex-M0's frame).
-    let [x, y, z] = n;
-    Some(
-        if (x.unsigned_abs() | y.unsigned_abs() | z.unsigned_abs()) < 1 << 30 {
-            n
-        } else {
-            map3(n, |c| c >> 1)
-        },
-    )
 }
 
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
@@ -267,22 +261,22 @@ mod tests {
         v.map(|c| c as f64 / (1u64 << 30) as f64)
     }
 
-    /// The 32-bit face direction (32-bit cores', so not on the host otherwise) is `shrink` of
-    /// the 64-bit cross product wherever it answers, and answers for every edge within ±2¹⁵:
-    /// random edges of every scale, and the corners of the range, where products reach 2³⁰
-    /// and the cross product needs halving.
+    /// The 32-bit cores' face direction for edges within ±2¹⁵, `cross_short`, is the 64-bit
+    /// path's `shrink_below(cross_wide(u, v), 31)` wherever it answers, and answers for every
+    /// such edge: the corners of the range (products of ±2³⁰, components up to 2³¹ − 2¹⁵) and
+    /// random edges of every scale. So both give every core the same face directions.
     #[test]
-    fn short_direction_equals_shrunk_cross() {
+    fn short_cross_equals_shrunk_wide_cross() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let wide = |u, v| map3(shrink(cross_wide(u, v)), |c| c as i32);
-        let (mut halved, mut answered) = (0, 0);
+        let wide = |u, v| map3(shrink_below(cross_wide(u, v), 31), |c| c as i32);
+        let (mut large, mut answered) = (0, 0);
         let corners = [-(1 << 15), (1 << 15) - 1, 0, 1, -1];
         let corner = |k: usize| corners[k % corners.len()];
         for k in 0..5usize.pow(6) {
             let u = [corner(k), corner(k / 5), corner(k / 25)];
             let v = [corner(k / 125), corner(k / 625), corner(k / 3125)];
-            assert_eq!(short_direction(u, v), Some(wide(u, v)), "{u:?} {v:?}");
-            halved += (cross_wide(u, v).iter().any(|c| !below_bits(*c, 30))) as u32;
+            assert_eq!(cross_short(u, v), Some(wide(u, v)), "{u:?} {v:?}");
+            large += (cross_wide(u, v).iter().any(|c| !below_bits(*c, 30))) as u32;
         }
         for _ in 0..200_000 {
             let scale = rng.pick(&[1 << 8, 1 << 14, 1 << 15, 1 << 16]);
@@ -292,7 +286,7 @@ mod tests {
                 .iter()
                 .chain(&v)
                 .all(|&c| (-(1 << 15)..1 << 15).contains(&c));
-            match short_direction(u, v) {
+            match cross_short(u, v) {
                 Some(n) => {
                     assert_eq!(n, wide(u, v), "{u:?} {v:?}");
                     answered += 1;
@@ -300,7 +294,7 @@ mod tests {
                 None => assert!(!short, "{u:?} {v:?}"),
             }
         }
-        assert!(halved > 100 && answered > 100_000, "{halved} {answered}");
+        assert!(large > 100 && answered > 100_000, "{large} {answered}");
     }
 
     /// `shrink` leaves vectors below 2³⁰ alone and brings larger ones below it, at the
