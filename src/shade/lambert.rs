@@ -96,6 +96,7 @@ fn shrink(v: [i64; 3]) -> [i64; 3] {
 }
 
 /// Shifts a vector so that every component lies within ±(2^`bits` − 1).
+#[inline]
 fn shrink_below(v: [i64; 3], bits: u32) -> [i64; 3] {
     // The common case, found by comparisons (counting bits is a library call on Cortex-M0).
     if below_bits(v[0], bits) && below_bits(v[1], bits) && below_bits(v[2], bits) {
@@ -189,10 +190,10 @@ fn face_lambert<const N: usize>(
 /// world space through `normal_matrix` (in model space without one); zero for a zero-area
 /// triangle. Without a normal matrix it is the exact cross product wherever that fits (every
 /// triangle whose edges lie within ±2¹⁵, on every core alike), and shifted right as little as
-/// brings it within range otherwise. Edges of any length: the cross
-/// product is exact in i64 after the edges are shifted below 2³⁰ (case T33). `extent` bounds
-/// every coordinate's magnitude (the mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹
-/// the edges need no shifting, and are not even checked.
+/// brings it within range otherwise. Edges of any length: the cross product is exact in i64
+/// after the edges are shifted below 2³⁰ (case T33). `extent` bounds every coordinate's
+/// magnitude (the mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹ the edges need no
+/// shifting, and are not even checked.
 fn face_direction(
     p: [[i32; 3]; 3],
     normal_matrix: Option<&[[i32; 3]; 3]>,
@@ -220,7 +221,7 @@ fn face_direction(
     // before, when its pixel loop then reloaded two values per pixel; on x86-64 the 64-bit
     // path: 1% fewer instructions). It lies within ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)`
     // leaves it too: the same direction on every core. (Halved from 2³⁰ on, as the normal
-    // matrix's path is, it cost the M4 1.5% and the M0 0.6% of the frame in that test.)
+    // matrix's path is, it cost the M4 1.3% and the M0 0.2% of the frame in that test.)
     if cfg!(not(target_pointer_width = "64")) && normal_matrix.is_none() {
         if let Some(n) = cross_short(u, v) {
             return n;
