@@ -311,9 +311,10 @@ pub(crate) type FloorStepper = RationalStepper<false>;
 
 impl<const CEIL: bool> RationalStepper<CEIL> {
     /// The constant 0 (for iterators that yield nothing, which never step it). A ceiling
-    /// walk's is all zero bytes, so that a block holding some is cleared rather than copied
-    /// (Cortex-M0's `asm` row loop: 1% of its frame); a floor walk's keeps a denominator of 1
-    /// (with 0 the M0's wireframe took 0.25% more instructions).
+    /// walk's is all zero bytes, so that memory holding some is cleared rather than copied
+    /// from a constant (when Cortex-M0's `asm` row block held some, 1% of its frame); a floor
+    /// walk's keeps a denominator of 1 (with 0 the M0's wireframe took 0.25% more
+    /// instructions).
     pub(crate) const ZERO: Self = RationalStepper {
         value: 0,
         rem: 0,

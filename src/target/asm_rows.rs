@@ -101,7 +101,7 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     // The triangle's first row in the buffers.
     let first = spans.row().wrapping_sub(first_row) as u32;
     let mut block = RowBlock {
-        runs: Runs::EMPTY,
+        runs: spans.blank_runs(),
         step_x: depth.step_x.to_i32(),
         delta: 0,
         step_y: depth.step_y.to_i32(),
