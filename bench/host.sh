@@ -234,9 +234,12 @@ $stages
   the passes before them cost as much again, and the buffer's set-up per triangle more:
   measured 5% to 15% more per frame.
 - **Per triangle**: the depth walk's two steps (divisions of numerators below 2⁵² by the
-  doubled area, with 32-bit quotients: on Cortex-M0 through one reciprocal, about 250
-  instructions a triangle, 6.6% of that core's frame, where 15-bit digits from a 16-bit
-  reciprocal, as a vertex's below, measured 0.8% more; on the M4 by 32-bit divides where
+  doubled area, with 32-bit quotients: on Cortex-M0 by two 15-bit digits from a 16-bit
+  reciprocal, as a vertex's below (\`ShortQuotients::round_below_2_30\`, for doubled areas
+  below 2²⁹ and steps below 2³⁰: 99% of the torus' triangles), about 150 instructions a
+  triangle, where one reciprocal to 32 bits and its 64-bit products, which the rest take,
+  cost about 250 (the frame 2.4% more; an earlier form of the digits, not in line, had
+  measured 0.8% more than the reciprocal); on the M4 by 32-bit divides where
   the numerator allows; the exact Q1.44 plane, two divisions with 64-bit quotients, only for
   the triangles the walk does not take: a vertex at the far plane, a step beyond 32 bits)
   and three edge steppers (two
