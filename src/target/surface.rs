@@ -89,7 +89,9 @@ pub trait RasterTarget {
 pub struct ColorDepth<'t, 'a, C, D, Q = Nearest, T = Less, K = Counted> {
     color: &'t mut FrameBuffer<'a, C>,
     depth: &'t mut DepthBuffer<'a, D>,
-    first_row: i32,
+    /// The frame's pixels the buffers hold (rows from the band's first, every column), found
+    /// once here rather than for each triangle.
+    clip: PixelRect,
     test: T,
     quantize: Q,
     count: K,
@@ -114,10 +116,13 @@ impl<'t, 'a, C: PixelColor + From<Rgb888>, D: DepthFormat> ColorDepth<'t, 'a, C,
             return Err(BufferError::SizeMismatch);
         }
         let first_row = i32::try_from(first_row).map_err(|_| BufferError::TooLarge)?;
+        let w = color.width().min(i32::MAX as u32) as i32;
+        let h = color.height().min(i32::MAX as u32) as i32;
+        let clip = PixelRect::new(0, first_row, w, first_row.saturating_add(h));
         Ok(ColorDepth {
             color,
             depth,
-            first_row,
+            clip,
             test: Less,
             quantize: Nearest,
             count: Counted,
@@ -176,7 +181,7 @@ impl<'t, 'a, C, D, Q, T, K> ColorDepth<'t, 'a, C, D, Q, T, K> {
         ColorDepth {
             color: self.color,
             depth: self.depth,
-            first_row: self.first_row,
+            clip: self.clip,
             test,
             quantize,
             count,
@@ -263,7 +268,7 @@ where
             rows,
             colors,
             depths,
-            self.first_row,
+            self.clip.y0,
             width,
             bits,
             stats,
@@ -295,7 +300,7 @@ where
         };
         // Rows lie in the clip rectangle, the buffers' extent (same size, exactly
         // width · height cells): a span's cells are x0..x1 of its row in both.
-        let mut row = (y.wrapping_sub(self.first_row) as u32 as usize).wrapping_mul(width);
+        let mut row = (y.wrapping_sub(self.clip.y0) as u32 as usize).wrapping_mul(width);
         let (mut fragments, mut failed) = (0u32, 0u32);
         spans.for_each_row(|x0, x1| {
             if x0 < x1 {
@@ -334,9 +339,7 @@ where
     const DEPTH: bool = true;
 
     fn clip(&self) -> PixelRect {
-        let w = self.color.width().min(i32::MAX as u32) as i32;
-        let h = self.color.height().min(i32::MAX as u32) as i32;
-        PixelRect::new(0, self.first_row, w, self.first_row.saturating_add(h))
+        self.clip
     }
 
     #[inline]
