@@ -206,9 +206,10 @@ $stages
   span, against about 60 for the compiled row loop; its pixel loop 9 instructions (7 for a
   fragment that loses) against the compiler's 10, the colour moved into a low register for
   each span (0.4%). The M0's frame 5.1% fewer instructions (3.536 M → 3.357 M), 510 bytes
-  more flash; its set-up clears the block (a ceiling walk's zero is all zero
-  bytes: copied from a constant, it took a library call, 1% of the frame) and checks the
-  run's cells without 64-bit products (2%). On Cortex-M the compiled rows run
+  more flash; its set-up writes the triangle's edges with the block, the lower edge a copy
+  of the left one until a split replaces it (clearing that edge is a library call a
+  triangle: 0.9% of the frame; clearing all three and copying two in after, 1.4%) and checks
+  the run's cells without 64-bit products (2%). On Cortex-M the compiled rows run
   in one loop that checks for the middle vertex's row every time: in two runs, above and
   below it (as x86-64 keeps them: one loop costs it 6%), each run's entry moved the row
   state between stack slots, 26 instructions a run on the M0 (one loop: 0.7% fewer
@@ -280,9 +281,9 @@ $stages
   reciprocal of w's top bits, from the seed table and one Newton step, then one multiply
   estimates each 15-bit quotient digit to within 5 below, the remainder is exact in one
   word, and x and y take one digit each, the depth two: 6.1% of the frame for 590 bytes,
-  against a reciprocal to 32 bits and 64-bit products). The stage is a fifth of the M0's
-  frame, about 630 instructions a vertex, most of them the transform (about 200) and the
-  divisions (about 200 with the reciprocal). Not kept: Lambert's rounded dot product in
+  against a reciprocal to 32 bits and 64-bit products). The stage is almost a quarter of
+  the M0's frame, about 640 instructions a vertex, most of them the transform (about 200)
+  and the divisions (about 200 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
   a light first faces and no test before (1.7% there, 224 bytes less, the M4 unchanged),
