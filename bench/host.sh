@@ -246,7 +246,8 @@ $stages
   and three edge steppers (two
   divisions each), then flat shading: the face normal (a cross product of 32-bit edges; on
   32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4 since its edges divide,
-  0.7% of its frame; on x86-64 1% more) and Lambert against the lights (grey
+  0.7% of its frame; on x86-64 1% more; taken as it is, within ±2³¹, where it was halved
+  from 2³⁰ on: the M4 1.3%, the M0 0.2%) and Lambert against the lights (grey
   ones: one sum for the three channels; at most N of them, which bounds their loops: for
   the torus's one light a test, not a loop, 1% of the M4's frame and 0.7% of the M0's)
   without a unit normal. A face turned from every
@@ -262,8 +263,8 @@ $stages
   when the model matrix is a rotation times a scale (no normal matrix per face). At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
   products, the normal's largest component, each vertex's tuple: 4% of the M4's frame; the
-  reciprocal square root's two Newton steps and the M0's test of a face direction's three
-  magnitudes: 0.3% and 0.2% of the frame), and a flat triangle hands \`fill_face\` no vertex colours
+  reciprocal square root's two Newton steps: 0.3% of the frame), and a flat triangle hands
+  \`fill_face\` no vertex colours
   (the shadings that do not interpolate them share one array of zeros: 1% of the M4's
   frame).
 - **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once), then the
