@@ -139,11 +139,12 @@ $stages
   for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.7% fewer
-  instructions per frame (4.3% with the \`asm\` loops, which then need no count either), the
-  M0 2.1% (1.9% with its \`asm\` loop), x86-64 0.9% (the counts held registers in the row loop; 2.5% with its \`asm\` loop, which
-  adds each span's length in memory). The depth test is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag
-  it cost a load and a branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.8% fewer
+  instructions per frame (4.8% with the \`asm\` loops, which then need no count either), the
+  M0 2.4% (1.9% with its \`asm\` loop), x86-64 1.8% (the counts hold registers in the row
+  loop; 2.2% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
+  branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per

@@ -40,15 +40,14 @@ use crate::math::{mul_wide, SUBPIXEL_SCALE};
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
 
-/// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`],
-/// one addition a row (x86-64: 5% fewer instructions per frame), which a triangle re-seeds
-/// from its vertices every [`fraction_rows`] rows (triangles the pipeline
-/// draws never need it: at most 2¹² rows of edges below 2¹⁶ sub-pixels); on 32-bit cores that
-/// divide words in one instruction (Cortex-M3/M4; told apart as in
-/// [`NARROW_CORE`](crate::math::NARROW_CORE)) [`DivideStepper`], one
-/// addition and one division a row, re-seeded every [`division_rows`] rows (never for
-/// triangles the pipeline draws); elsewhere the exact [`CeilStepper`](super::CeilStepper),
-/// whose set-up needs no 64-bit division (a library routine on 32-bit cores).
+/// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`], one addition a row
+/// (x86-64: 5% fewer instructions per frame), which a triangle re-seeds from its vertices every
+/// [`fraction_rows`] rows (triangles the pipeline draws never need it: at most 2¹² rows of edges
+/// below 2¹⁶ sub-pixels); on 32-bit cores that divide words in one instruction (Cortex-M3/M4; told
+/// apart as in [`NARROW_CORE`](crate::math::NARROW_CORE)) [`DivideStepper`], one addition and one
+/// division a row, re-seeded every [`division_rows`] rows (never for triangles the pipeline draws);
+/// elsewhere the exact [`CeilStepper`](super::CeilStepper), whose set-up needs no 64-bit division
+/// (a library routine on 32-bit cores).
 #[cfg(target_pointer_width = "64")]
 pub(crate) type EdgeWalk = FractionStepper;
 /// The walk of an edge's span ends: see the 64-bit definition.
@@ -98,12 +97,12 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
-/// A triangle's rows for a target's own row loop ([`TriangleSpans::write_runs`]): from the
-/// spans' first row with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows,
-/// each row's span `max(left, x0)..min(right, x1)` for the clip rectangle's columns
-/// ([`TriangleSpans::columns`]), both edges stepped after each row; after the first `upper`
-/// rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge set up
-/// at that row, takes the place of the left edge if `lower_is_left`, else the right one.
+/// A triangle's rows for a target's own row loop ([`TriangleSpans::blank_runs`], completed by
+/// [`TriangleSpans::write_runs`]): from the spans' first row with the edges `edges[0]` (left) and
+/// `edges[1]` (right), `rows` rows, each row's span `max(left, x0)..min(right, x1)` for the clip
+/// rectangle's columns ([`TriangleSpans::columns`]), both edges stepped after each row; after the
+/// first `upper` rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge
+/// set up at that row, takes the place of the left edge if `lower_is_left`, else the right one.
 #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
@@ -145,13 +144,13 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
     spans_in_range(v, clip, area, seed_rows)
 }
 
-/// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled
-/// signed area (in the given order, see `doubled_area`) the caller has, and whose edges walk
-/// `seed_rows` rows from each set-up ([`division_rows`]; only
-/// [`DivideStepper`] edges need it, others take `u32::MAX`). The
-/// pipeline's triangles, whose vertices lie within ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT),
-/// pass `u32::MAX` on every core: that is their `division_rows` (their width and height are
-/// at most 2¹⁶ − 32), and in line it is a constant, so that the row loop carries no check.
+/// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled signed
+/// area (in the given order, see `doubled_area`) the caller has, and whose edges walk `seed_rows`
+/// rows from each set-up ([`division_rows`]; only [`DivideStepper`] edges need it, others take
+/// `u32::MAX`). The pipeline's triangles, whose vertices lie within
+/// ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT), pass `u32::MAX` on every core: that is their
+/// `division_rows` (their width and height are at most 2¹⁶ − 32), and in line it is a constant, so
+/// that the row loop carries no check.
 #[cfg_attr(
     all(target_pointer_width = "32", target_has_atomic = "32"),
     inline(always)
@@ -215,11 +214,10 @@ pub(crate) fn spans_in_range(
     }
 }
 
-/// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row
-/// `py` (one of the edge's rows), for `rows` rows from there (`u32::MAX`: to the edge's end;
-/// only [`DivideStepper`] edges need it). With coordinates within ±2²⁴
-/// every difference below is a 32-bit factor, the numerator stays below 2⁵⁴ and the
-/// denominator below 2²⁹.
+/// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row `py`
+/// (one of the edge's rows), for `rows` rows from there (`u32::MAX`: to the edge's end; only
+/// [`DivideStepper`] edges need it). With coordinates within ±2²⁴ every difference below is a
+/// 32-bit factor, the numerator stays below 2⁵⁴ and the denominator below 2²⁹.
 #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
 #[inline(always)]
 fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
@@ -230,8 +228,7 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
     }
 }
 
-/// [`edge`] where the walk is not a [`DivideStepper`] (which alone needs
-/// `rows`).
+/// [`edge`] where the walk is not a [`DivideStepper`] (which alone needs `rows`).
 #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
 fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, _rows: u32) -> EdgeWalk {
     // Without a hardware divide, the whole pixels of p.x − 8 come out by a shift:
@@ -277,8 +274,8 @@ fn edge_terms(p: ScreenPoint, q: ScreenPoint, py: i32) -> (i32, i32, i32, i32) {
     (dx, dy, x, t)
 }
 
-/// The [`DivideStepper`] of an edge from `base`: `N − base·D` is
-/// `(x − 16·base)·dy + dx·t` modulo 2³², which the caller's base keeps in `[0, 2³² − D]`.
+/// The [`DivideStepper`] of an edge from `base`: `N − base·D` is `(x − 16·base)·dy + dx·t` modulo
+/// 2³², which the caller's base keeps in `[0, 2³² − D]`.
 #[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[inline(always)]
 fn stepper_from(dx: i32, dy: i32, x: i32, t: i32, base: i32) -> DivideStepper {
@@ -289,12 +286,12 @@ fn stepper_from(dx: i32, dy: i32, x: i32, t: i32, base: i32) -> DivideStepper {
     DivideStepper::new(above, den, dx.wrapping_mul(S as i32) as u32, base)
 }
 
-/// [`edge`] as a [`DivideStepper`] for all of the edge's rows, from the
-/// base `b = ⌊(min(p.x, q.x) − 8) / 16⌋`, no division. On the edge's rows (`0 ≤ t < dy`) the
-/// crossing `N / dy = p.x − 8 + dx·t / dy` lies between `min − 8` and `max − 8`, and
-/// `min − 8 − 16b` in `[0, 15]`, so `0 ≤ N − b·D ≤ 15·dy + |dx|·(dy − 1)`, and with the
-/// ceiling's `D − 1` the stepper's word is at most `(|dx| + 31)·dy − 1`: below 2³² wherever
-/// [`division_rows`] is `u32::MAX`.
+/// [`edge`] as a [`DivideStepper`] for all of the edge's rows, from the base
+/// `b = ⌊(min(p.x, q.x) − 8) / 16⌋`, no division. On the edge's rows (`0 ≤ t < dy`) the crossing
+/// `N / dy = p.x − 8 + dx·t / dy` lies between `min − 8` and `max − 8`, and `min − 8 − 16b` in
+/// `[0, 15]`, so `0 ≤ N − b·D ≤ 15·dy + |dx|·(dy − 1)`, and with the ceiling's `D − 1` the
+/// stepper's word is at most `(|dx| + 31)·dy − 1`: below 2³² wherever [`division_rows`] is
+/// `u32::MAX`.
 #[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[inline(never)]
 fn edge_by_division(p: ScreenPoint, q: ScreenPoint, py: i32) -> DivideStepper {

@@ -174,12 +174,11 @@ pub(crate) fn flat_color<const N: usize>(
 }
 
 /// Lambert of a face whose direction is `n` (any i32 components but `i32::MIN`, as
-/// [`face_direction`] gives). A face that turns from
-/// every light gets the ambient colour without being normalised: its direction's products
-/// with the lights are all ≤ 0, so Lambert adds nothing. With [`Normalize::Newton`] (the
-/// default) no unit normal is formed: each light's cosine is the direction's product with
-/// the light over its length ([`NewtonDirection`]; measured 1.7% fewer instructions per
-/// frame on the Cortex-M0, 0.6% on the M4, 0.3% on x86-64, the same colours).
+/// [`face_direction`] gives). A face that turns from every light gets the ambient colour without
+/// being normalised: its direction's products with the lights are all ≤ 0, so Lambert adds nothing.
+/// With [`Normalize::Newton`] (the default) no unit normal is formed: each light's cosine is the
+/// direction's product with the light over its length ([`NewtonDirection`]; measured 1.7% fewer
+/// instructions per frame on the Cortex-M0, 0.6% on the M4, 0.3% on x86-64, the same colours).
 #[inline(always)]
 fn face_lambert<const N: usize>(
     base: Rgb888,
@@ -240,8 +239,8 @@ fn face_direction(
     // a long multiply: 1.1% of the frame; the M4 0.7% since its edges divide, 1.1% more
     // before, when its pixel loop then reloaded two values per pixel; on x86-64 the 64-bit
     // path: 1% fewer instructions). It lies within ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)`
-    // leaves it too: the same direction on every core. (Halved from 2³⁰ on, as the normal
-    // matrix's path is, it cost the M4 1.3% and the M0 0.2% of the frame in that test.)
+    // leaves it too: the same direction on every core. (Halving it from 2³⁰ on, as the normal
+    // matrix's path does, cost the M4 1.3% and the M0 0.2% of the frame.)
     if cfg!(not(target_pointer_width = "64")) && normal_matrix.is_none() {
         if let Some(n) = cross_short(u, v) {
             return n;

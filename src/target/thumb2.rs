@@ -105,8 +105,8 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     //   which this function borrows mutably (n ≤ both lengths, n ≥ 1); it touches nothing
     //   else, and no stack (`nostack`).
     // - Values: a depth cell gets a u16 (any bit pattern is one). A colour cell gets `bits`,
-    //   the two bytes of a valid `C` (see `asm_rows::color_bits`) unchanged: a byte-for-byte copy of a
-    //   valid value is the same valid value, exactly what `*cell = color` stores.
+    //   the two bytes of a valid `C` (see `asm_rows::color_bits`) unchanged: a byte-for-byte
+    //   copy of a valid value is the same valid value, exactly what `*cell = color` stores.
     // - Termination: i starts at −n (n < 2³¹ for a slice of 2-byte cells on a 32-bit core)
     //   and rises by one to 0, where the loop ends; `acc` wraps by definition (it never does
     //   for the values the caller passes).
