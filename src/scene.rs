@@ -57,6 +57,11 @@ impl LightColor {
     }
 }
 
+/// True for a channel (raw Q16.16) in [0, 1].
+const fn unit_channel(c: i64) -> bool {
+    0 <= c && c <= 1 << 16
+}
+
 /// A light infinitely far away, shining along `-direction`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct DirectionalLight {
@@ -119,6 +124,9 @@ pub struct Lighting<const N: usize> {
     /// True while the ambient colour and every light are grey (equal channels): Lambert then
     /// sums one channel for all three.
     grey: bool,
+    /// True while they are grey and every channel lies in [0, 1] (the usual lights): that one
+    /// sum then fits a word (see [`in_words`](Self::in_words)).
+    words: bool,
 }
 
 impl<const N: usize> Lighting<N> {
@@ -130,6 +138,9 @@ impl<const N: usize> Lighting<N> {
             lights: heapless::Vec::new(),
             grey: ambient.r.to_bits() == ambient.g.to_bits()
                 && ambient.g.to_bits() == ambient.b.to_bits(),
+            words: ambient.r.to_bits() == ambient.g.to_bits()
+                && ambient.g.to_bits() == ambient.b.to_bits()
+                && unit_channel(ambient.r.to_bits() as i64),
         }
     }
 
@@ -144,6 +155,7 @@ impl<const N: usize> Lighting<N> {
         self.lights.push(prepared).map_err(|_| LightError::Full)?;
         let [r, g, b] = prepared.color;
         self.grey &= r == g && g == b;
+        self.words &= r == g && g == b && unit_channel(r);
         Ok(())
     }
 
@@ -177,6 +189,13 @@ impl<const N: usize> Lighting<N> {
         self.grey
     }
 
+    /// True when the lighting [`is_grey`](Self::is_grey), every channel lies in [0, 1] and
+    /// there are at most 2¹³ lights: a light's term (its channel times a cosine below 2³¹ in
+    /// Q2.30) is then below 2¹⁷ in Q16.16, and the ambient and all terms sum below 2³¹.
+    pub(crate) fn in_words(&self) -> bool {
+        self.words && N <= 1 << 13
+    }
+
     /// The same lights seen from an object's model space, for an object whose normal matrix
     /// (world from model, see [`Mat4::normal_matrix`](crate::math::Mat4)) is a rotation times a
     /// scale: then `n · l` in world space equals `n' · Rᵀl` in model space for the model-space
@@ -200,6 +219,7 @@ impl<const N: usize> Lighting<N> {
             ambient: self.ambient,
             lights,
             grey: self.grey,
+            words: self.words,
         })
     }
 }
