@@ -23,14 +23,15 @@ pub(crate) const fn isqrt_u64(n: u64) -> u64 {
     root
 }
 
-/// `RSQRT[i] = 2³³ / sqrt(i + 16.5)`: seeds for `1/sqrt(m)` with `m` in `[2²⁸, 2³⁰)`, indexed by
-/// `m >> 24` (48 entries, 192 bytes; built at compile time).
-const RSQRT: [u32; 48] = {
-    let mut t = [0u32; 48];
+/// `RSQRT[i] = 2³³ / sqrt(i + 0.5)`: seeds for `1/sqrt(m)` with `m` in `[2²⁸, 2³⁰)`, indexed by
+/// `m >> 24`, from 16 to 63 (64 entries, so that any index masked to 6 bits is one; the first
+/// 16, which no `m` of the range reaches, repeat the 16th; 256 bytes, built at compile time).
+const RSQRT: [u32; 64] = {
+    let mut t = [0u32; 64];
     let mut i = 0;
-    while i < 48 {
+    while i < 64 {
         // 2³³ / sqrt(m + 0.5) = sqrt(2⁶⁷ / (2m + 1))
-        let m = (i + 16) as u128;
+        let m = if i < 16 { 16 } else { i as u128 };
         t[i] = isqrt_u64(((1u128 << 67) / (2 * m + 1)) as u64) as u32;
         i += 1;
     }
@@ -40,7 +41,8 @@ const RSQRT: [u32; 48] = {
 /// `2⁴⁵ / sqrt(m)` for `m` in `[2²⁸, 2³⁰)`: a table seed and two Newton steps, multiplications
 /// only (no division, no loop), relative error below 10⁻⁶.
 pub(crate) fn rsqrt_q45(m: u32) -> u32 {
-    let idx = ((m >> 24) as usize).saturating_sub(16);
+    // In [16, 64) for m in the range; masked, a table index for any m (no bounds check).
+    let idx = (m >> 24) as usize & 63;
     // Every factor below fits 32 bits (y stays near 2⁴⁵ / sqrt(m) ≤ 2³¹, m·y² / 2⁶⁰ near 1):
     // 32x32→64 products, one widening multiply each on Cortex-M3/M4.
     let wide = mul_wide_u32;
@@ -54,7 +56,7 @@ pub(crate) fn rsqrt_q45(m: u32) -> u32 {
         let t = (wide(m, square_shr31(y)) >> 29) as u32;
         (wide(y, (3u32 << 30).wrapping_sub(t)) >> 31) as u32
     };
-    newton(newton(RSQRT.get(idx).copied().unwrap_or(1 << 30)))
+    newton(newton(RSQRT[idx]))
 }
 
 /// `⌊y² / 2³¹⌋` modulo 2³²: on cores without a long multiply from three 32-bit products of
@@ -105,7 +107,7 @@ mod tests {
     #[test]
     fn rsqrt_32_bit_factors_are_exact() {
         let wide = |m: u64| {
-            let mut y = RSQRT[((m >> 24) as usize).saturating_sub(16)] as u64;
+            let mut y = RSQRT[(m >> 24) as usize] as u64;
             for _ in 0..2 {
                 let t = (m * ((y * y) >> 31)) >> 29;
                 y = (y * ((3u64 << 30).saturating_sub(t))) >> 31;
