@@ -139,10 +139,10 @@ $stages
   for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 3.8% fewer
-  instructions per frame (4.8% with the \`asm\` loops, which then need no count either), the
-  M0 2.4% (1.9% with its \`asm\` loop), x86-64 1.8% (the counts hold registers in the row
-  loop; 2.2% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.2% fewer
+  instructions per frame (5.0% with the \`asm\` loops, which then need no count either), the
+  M0 2.3% (1.8% with its \`asm\` loop), x86-64 1.7% (the counts hold registers in the row
+  loop; 2.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -249,26 +249,39 @@ $stages
   32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4 since its edges divide,
   0.7% of its frame; on x86-64 1% more; taken as it is, within ±2³¹, where it was halved
   from 2³⁰ on: the M4 1.3%, the M0 0.2%) and Lambert against the lights (grey
-  ones: one sum for the three channels; at most N of them, which bounds their loops: for
-  the torus's one light a test, not a loop, 1% of the M4's frame and 0.7% of the M0's)
-  without a unit normal. A face turned from every
+  ones: one sum for the three channels, in a 32-bit word when every channel lies in [0, 1]
+  (\`Lighting::in_words\`: each term below 2¹⁷, the sum below 2³¹; the M0's frame 0.4%
+  fewer instructions than in 64 bits, the M4's and x86-64's 0.3%); at most N of them, which
+  bounds their loops: for the torus's one light a test, not a loop, 1% of the M4's frame
+  and 0.7% of the M0's) without a unit normal. A face turned from every
   light gets the ambient colour (on Cortex-M0 that test takes the high halves of the normal
   and the light, three 32-bit products, wherever they decide it: 1.2% of the frame); for
   the others each light's cosine is the direction, shifted to 15 bits, times the light over
   its length (\`NewtonDirection\`: one multiply by the reciprocal square root, from a seed
   table and two Newton steps, where the unit normal took a product, a rounding and a clamp
-  per component before its own product with the light; on Cortex-M0 the 15-bit products
+  per component before its own product with the light; the seeds, within 1.6% of the root,
+  bound each step's 3 − m·y² to a word, and their 64 entries take the top bits masked to
+  six as an index, so that neither needs a clamp or a bounds check: the M0's frame 0.7%,
+  the M4's 1%, x86-64's 0.35%; on 32-bit cores a cosine is taken from its low word, below a
+  clamp it never reaches: the M4 0.7%, the M0 0.5%; on Cortex-M0 the 15-bit products
   take two multiplies each where the unit normal's took four: 1.7% of the M0's frame, 0.6%
   of the M4's, 0.3% of x86-64's, for 300 to 450 bytes; the colours are the unit normal's
   for every face of the torus). The lights are turned into model space once per object
-  when the model matrix is a rotation times a scale (no normal matrix per face). At the firmware's opt-level "s" an iterator's sum or
+  when the model matrix is a rotation times a scale (no normal matrix per face). On the M4
+  the culling's doubled area and the depth walk's gradient numerators are sums of two
+  products with one side negated, a widening multiply and a multiply-accumulate where a
+  difference takes two instructions more (0.8% and 0.5% of its frame), and an edge's set-up
+  takes its height as it is, positive for every edge with rows, its stepper keeping its own
+  denominator positive (1% of the frame, against a second guard). At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
   products, the normal's largest component, each vertex's tuple: 4% of the M4's frame; the
   reciprocal square root's two Newton steps: 0.3% of the frame), and a flat triangle hands
   \`fill_face\` no vertex colours
   (the shadings that do not interpolate them share one array of zeros: 1% of the M4's
   frame).
-- **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once), then the
+- **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once, each row's
+  sum started from its translation with the rounding's half added, so that on the M4 every
+  product is a multiply-accumulate: 0.5% of its frame, x86-64's 0.4%), then the
   outcode and the projection from one reduction (three divisions by \`w\`; inside the guard
   band the screen offsets in 32-bit words and without clamps, which the band and the
   largest viewport make no-ops: 0.6% to 0.9% of the frame). Where products are long
@@ -293,15 +306,15 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
-  0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, half of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.45 M, the rest about 1.05 M). The largest excess found is per drawn triangle: on
-  the M4 about 820 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.79 M, about 60 of them the \`asm\` row loop's set-up)
+- **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
+  0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  rows, 57% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.45 M, the rest about 1.03 M). The largest excess found is per drawn triangle: on
+  the M4 about 715 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.68 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
-  dozens of pieces of 5 to 25 instructions: about 0.48 M. The M4's rows and pixels are already hand-written (the \`asm\`
+  dozens of pieces of 5 to 25 instructions: about 0.38 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   25 a row against about 49), and so are the M0's (Thumb-1: 28 a row against about 60, 9 a
