@@ -479,7 +479,9 @@ impl ShortQuotients {
     /// digits, from its bits above them (below `d` exactly when the quotient is below 2³⁰).
     #[inline(always)]
     pub(crate) fn round_below_2_30(&self, n: i64) -> Option<i32> {
-        let a = rounded_magnitude(n, self.d);
+        // At most 2⁶³ + 2²⁸: no overflow, and no saturation as in `rounded_magnitude`, which
+        // changes only magnitudes of 2⁶³ and more, far beyond those this answers.
+        let a = n.unsigned_abs() + (self.d / 2) as u64;
         if a >> 30 >= self.d as u64 {
             return None;
         }
