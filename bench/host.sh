@@ -141,7 +141,7 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.2% fewer
   instructions per frame (5.0% with the \`asm\` loops, which then need no count either), the
-  M0 2.3% (1.8% with its \`asm\` loop), x86-64 1.7% (the counts hold registers in the row
+  M0 2.3% (2.1% with its \`asm\` loop), x86-64 1.7% (the counts hold registers in the row
   loop; 2.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
@@ -238,7 +238,8 @@ $stages
 - **Per triangle**: the depth walk's two steps (divisions of numerators below 2⁵² by the
   doubled area, with 32-bit quotients: on Cortex-M0 by two 15-bit digits from a 16-bit
   reciprocal, as a vertex's below (\`ShortQuotients::round_below_2_30\`, for doubled areas
-  below 2²⁹ and steps below 2³⁰: 99% of the torus' triangles), about 150 instructions a
+  below 2²⁹ and steps below 2³⁰: 99% of the torus' triangles, the magnitude rounded without
+  the saturation that only magnitudes past 2⁶³ reach: 0.35%), about 150 instructions a
   triangle, where one reciprocal to 32 bits and its 64-bit products, which the rest take,
   cost about 250 (the frame 2.4% more; an earlier form of the digits, not in line, had
   measured 0.8% more than the reciprocal); on the M4 by 32-bit divides where
@@ -282,7 +283,9 @@ $stages
 - **Per vertex**: the transform (twelve 32x32→64 products, summed and rounded once, each row's
   sum started from its translation with the rounding's half added, so that on the M4 every
   product is a multiply-accumulate: 0.5% of its frame, x86-64's 0.4%), then the
-  outcode and the projection from one reduction (three divisions by \`w\`; inside the guard
+  outcode and the projection from one reduction (three divisions by \`w\`, the depth's
+  without a check of 0 ≤ z ≤ w, which the near and far planes give: the M4's frame 0.3%, the
+  M0's 0.9%; inside the guard
   band the screen offsets in 32-bit words and without clamps, which the band and the
   largest viewport make no-ops: 0.6% to 0.9% of the frame). Where products are long
   multiplies (x86-64, Cortex-M4) a mesh whose clip coordinates are known to fit 32 bits goes
@@ -297,8 +300,8 @@ $stages
   estimates each 15-bit quotient digit to within 5 below, the remainder is exact in one
   word, and x and y take one digit each, the depth two: 6.1% of the frame for 590 bytes,
   against a reciprocal to 32 bits and 64-bit products). The stage is almost a quarter of
-  the M0's frame, about 640 instructions a vertex, most of them the transform (about 200)
-  and the divisions (about 200 with the reciprocal). Not kept: Lambert's rounded dot product in
+  the M0's frame, about 615 instructions a vertex, most of them the transform (about 200)
+  and the divisions (about 175 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
   a light first faces and no test before (1.7% there, 224 bytes less, the M4 unchanged),
@@ -319,8 +322,8 @@ $stages
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   25 a row against about 49), and so are the M0's (Thumb-1: 28 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
-  stage (0.72 M, about 630
-  a vertex, of which the transform and the divisions by w take about 200 each) and the depth
+  stage (0.71 M, about 615
+  a vertex, of which the transform takes about 200 and the divisions by w about 175) and the depth
   walk's two divisions (6.6% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
