@@ -450,28 +450,33 @@ impl ShortQuotients {
         None
     }
 
-    /// [`div_round`]`(n, d)`; in words when the quotient is below about 2¹⁶ (a vertex's
-    /// screen offset inside the guard band: below 2¹⁴). In line: out of line it cost the
-    /// Cortex-M0 1.3% of the frame.
+    /// [`div_round`]`(n, d)` for `|n| < 2¹⁴·d`, which the caller knows (a vertex's screen
+    /// offset inside the guard band), in words: `a = |n| + d/2` lies below `2¹⁵·d`, so its
+    /// high word is below `2^b` and needs no test (the Cortex-M0's frame 0.24% fewer
+    /// instructions than with one), and the quotient, below 2¹⁵, takes its sign in a word. In
+    /// line: out of line it cost the Cortex-M0 1.3% of the frame. Outside that range the
+    /// quotient means nothing, but nothing overflows.
     #[inline(always)]
-    pub(crate) fn round(&self, n: i64) -> i64 {
-        self.round_or(n, || div_round(n, self.d as i64))
+    pub(crate) fn round(&self, n: i64) -> i32 {
+        match self.round_in_words(n) {
+            Some(q) => q,
+            None => div_round(n, self.d as i64) as i32,
+        }
     }
 
-    /// [`round`](Self::round) in words, or `otherwise` where the quotient does not fit them.
+    /// [`round`](Self::round)'s quotient in words, `None` where a digit's estimate does not
+    /// fit (never for `|n| < 2¹⁴·d`).
     #[inline(always)]
-    fn round_or(&self, n: i64, otherwise: impl FnOnce() -> i64) -> i64 {
-        // |n| ≤ 2⁶³ and d/2 < 2²⁸: no overflow.
+    fn round_in_words(&self, n: i64) -> Option<i32> {
         let a = n.unsigned_abs() + (self.d / 2) as u64;
         let (hi, lo) = ((a >> 32) as u32, a as u32);
-        // a's bits from b up (b ≤ 28), exact when the high word is below 2^b.
-        if hi >> self.below == 0 {
-            let m = (hi << 1 << (31 - self.below)) | (lo >> self.below);
-            if let Some((q, _)) = self.digit(m, lo) {
-                return with_sign_of(n, q as u64);
-            }
-        }
-        otherwise()
+        let m = (hi << 1 << (31 - self.below)) | (lo >> self.below);
+        let (q, _) = self.digit(m, lo)?;
+        Some(if n < 0 {
+            (q as i32).wrapping_neg()
+        } else {
+            q as i32
+        })
     }
 
     /// [`div_round`]`(n, d)` for a quotient below 2³⁰ (a triangle's usual depth gradient),
@@ -967,8 +972,8 @@ mod tests {
     }
 
     /// `round` and `round_fraction` are `div_round`'s, in words wherever a vertex needs them
-    /// (quotients within ±2¹⁴, fractions of 0 ≤ z ≤ d), `round` beyond too (where it falls
-    /// back); `round_fraction` of a z outside [0, d] overflows nothing.
+    /// (numerators within ±2¹⁴·d, the ends included, and fractions of 0 ≤ z ≤ d); outside
+    /// those ranges (never passed) they overflow nothing.
     #[test]
     fn short_quotients_equal_div_round() {
         assert!(ShortQuotients::new(0).is_none() && ShortQuotients::new(-1).is_none());
@@ -983,12 +988,14 @@ mod tests {
             let x = rng.next_u64();
             let d64 = d as i64;
             let within = (x as i64).rem_euclid(2 * (d64 << 14) + 1) - (d64 << 14);
-            for n in [within, -within, d64 / 2, -(d64 / 2)] {
-                let words = by.round_or(n, || panic!("{n} / {d} not in words"));
-                assert_eq!(words, div_round(n, d64), "{n} / {d}");
+            let end = (d64 << 14) - 1;
+            for n in [within, -within, d64 / 2, -(d64 / 2), end, -end] {
+                let exact = div_round(n, d64) as i32;
+                assert_eq!(by.round_in_words(n), Some(exact), "{n} / {d}");
+                assert_eq!(by.round(n), exact, "{n} / {d}");
             }
-            for n in [within, (x as i64) >> (x % 64), i64::MIN, i64::MAX] {
-                assert_eq!(by.round(n), div_round(n, d64), "{n} / {d}");
+            for n in [(x as i64) >> (x % 64), i64::MIN, i64::MAX] {
+                let _ = by.round(n);
             }
             let z = (x >> 32) as i64 % (d64 + 1);
             for z in [z, 0, d64, d64 - 1, d64 / 2] {

@@ -204,9 +204,14 @@ pub(crate) fn outcode_and_project(
     // would change nothing, and every result fits a 32-bit word.
     let (qx, qy, sz) = if NARROW_CORE {
         // Without a divide instruction: short quotients by w in words (w below 2²⁹, every
-        // ordinary scene; 6% of the Cortex-M0's frame) instead of a reciprocal to 32 bits.
+        // ordinary scene; 6% of the Cortex-M0's frame) instead of a reciprocal to 32 bits,
+        // their numerators within the band and the planes as they require (untested there).
         match ShortQuotients::new(w) {
-            Some(by_w) => (by_w.round(xh), by_w.round(yh), by_w.round_fraction(z)),
+            Some(by_w) => (
+                by_w.round(xh) as i64,
+                by_w.round(yh) as i64,
+                by_w.round_fraction(z),
+            ),
             None => (div_round(xh, w), div_round(yh, w), div_round(z << 30, w)),
         }
     } else {
