@@ -141,7 +141,7 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.2% fewer
   instructions per frame (5.0% with the \`asm\` loops, which then need no count either), the
-  M0 2.3% (2.1% with its \`asm\` loop), x86-64 1.7% (the counts hold registers in the row
+  M0 2.4% (2.0% with its \`asm\` loop), x86-64 1.7% (the counts hold registers in the row
   loop; 2.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
@@ -299,9 +299,11 @@ $stages
   reciprocal of w's top bits, from the seed table and one Newton step, then one multiply
   estimates each 15-bit quotient digit to within 5 below, the remainder is exact in one
   word, and x and y take one digit each, the depth two: 6.1% of the frame for 590 bytes,
-  against a reciprocal to 32 bits and 64-bit products). The stage is almost a quarter of
-  the M0's frame, about 615 instructions a vertex, most of them the transform (about 200)
-  and the divisions (about 175 with the reciprocal). Not kept: Lambert's rounded dot product in
+  against a reciprocal to 32 bits and 64-bit products; the bounds that make a digit exact,
+  which every numerator of a vertex inside the planes and the guard band meets, are not
+  tested: 2.4% of the frame). The stage is almost a quarter of
+  the M0's frame, about 590 instructions a vertex, most of them the transform (about 200)
+  and the divisions (about 155 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
   a light first faces and no test before (1.7% there, 224 bytes less, the M4 unchanged),
@@ -322,8 +324,8 @@ $stages
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   25 a row against about 49), and so are the M0's (Thumb-1: 28 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
-  stage (0.71 M, about 615
-  a vertex, of which the transform takes about 200 and the divisions by w about 175) and the depth
+  stage (0.69 M, about 590
+  a vertex, of which the transform takes about 200 and the divisions by w about 155) and the depth
   walk's two divisions (6.6% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
