@@ -51,6 +51,9 @@ fn kept(cull: Cull, area: i64, stats: &mut Stats) -> bool {
     false
 }
 
+/// The triangle walk's culling mode read from the frame at run time (see `walk`).
+const ANY_CULL: u8 = 3;
+
 /// Per-object constants for drawing.
 struct ObjectSetup<'o, const N: usize> {
     object: &'o Object<'o>,
@@ -161,6 +164,29 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// frame or band, or a [`Direct`](crate::target::Direct) draw target). Returns what was
     /// drawn, or the target's first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
+        // One walk per culling mode on x86-64 (its frame 0.5% fewer instructions); on Cortex-M
+        // one for all, reading the mode (per mode the M0 took 1.4% more instructions and 1.4 KB
+        // more flash, the M4 0.2% fewer for 1.3 KB).
+        if cfg!(target_pointer_width = "64") {
+            match self.frame.cull {
+                Cull::Back => self.walk::<T, 0>(target),
+                Cull::Front => self.walk::<T, 1>(target),
+                Cull::None => self.walk::<T, 2>(target),
+            }
+        } else {
+            self.walk::<T, ANY_CULL>(target)
+        }
+    }
+
+    /// [`draw`](Self::draw) with the culling mode `CULL` (0 back, 1 front, 2 none) a constant,
+    /// or read from the frame for [`ANY_CULL`].
+    fn walk<T: RasterTarget, const CULL: u8>(&self, target: &mut T) -> Result<Stats, T::Error> {
+        let cull = match CULL {
+            0 => Cull::Back,
+            1 => Cull::Front,
+            2 => Cull::None,
+            _ => self.frame.cull,
+        };
         let mut stats = Stats::default();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
         for setup in self.objects() {
@@ -181,7 +207,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     // Culled before anything else is gathered: half the triangles of a closed
                     // mesh end here.
                     let area = area2(&[a.point(), b.point(), c.point()]);
-                    if !kept(self.frame.cull, area, &mut stats) {
+                    if !kept(cull, area, &mut stats) {
                         continue;
                     }
                     // Written out: at the firmware's opt-level "s" `array::map` stays a loop.
