@@ -133,14 +133,17 @@ impl<const N: usize> Lighting<N> {
     /// Ambient light only.
     #[must_use]
     pub const fn new(ambient: LightColor) -> Self {
+        let [r, g, b] = [
+            ambient.r.to_bits(),
+            ambient.g.to_bits(),
+            ambient.b.to_bits(),
+        ];
+        let grey = r == g && g == b;
         Lighting {
             ambient,
             lights: heapless::Vec::new(),
-            grey: ambient.r.to_bits() == ambient.g.to_bits()
-                && ambient.g.to_bits() == ambient.b.to_bits(),
-            words: ambient.r.to_bits() == ambient.g.to_bits()
-                && ambient.g.to_bits() == ambient.b.to_bits()
-                && unit_channel(ambient.r.to_bits() as i64),
+            grey,
+            words: grey && unit_channel(r as i64),
         }
     }
 
@@ -155,7 +158,7 @@ impl<const N: usize> Lighting<N> {
         self.lights.push(prepared).map_err(|_| LightError::Full)?;
         let [r, g, b] = prepared.color;
         self.grey &= r == g && g == b;
-        self.words &= r == g && g == b && unit_channel(r);
+        self.words &= self.grey && unit_channel(r);
         Ok(())
     }
 

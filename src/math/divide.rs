@@ -378,16 +378,19 @@ impl Divisor {
 
 /// Rounded divisions by a divisor `0 < d < 2²⁹` whose quotients are short, in 32-bit words
 /// and without a division, for cores that lack a divide instruction (Cortex-M0): a vertex's
-/// screen offsets and depth by its `w`. [`DivideBy`] there pays for a reciprocal to 32 bits
-/// and 64-bit products; these quotients need less.
+/// screen offsets and depth by its `w`, and a triangle's depth gradients by its doubled area.
+/// [`DivideBy`] there pays for a reciprocal to 32 bits and 64-bit products; these quotients
+/// need less.
 ///
 /// With `b` the position of d's top bit and `t` d's top 16 bits (`d = t·2^(b−15) + less`),
 /// `r = ⌊2³¹ / (t + 1)⌋` is below `2^(b+16) / d` and within `2⁻¹⁴` of it. A numerator `N`
 /// whose bits from `b` up form `m < 2¹⁶` has the estimate `⌊m·r / 2¹⁶⌋` (one 32-bit product),
 /// which is at most `N / d` and at most 5 below its floor. The remainder `N − q·d` is then below
 /// `6d < 2³²`: the difference of the low words, exact in one word, and a few subtractions
-/// finish the quotient. Where a bound does not hold (a longer quotient) the division is
-/// [`div_round`]'s.
+/// finish the quotient. Each method states the bound its numerators must meet: the vertex's
+/// are known to meet theirs and are not tested (another numerator gives a meaningless
+/// quotient, but nothing overflows); [`round_below_2_30`](Self::round_below_2_30) tests its
+/// own and declines a longer quotient.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ShortQuotients {
     d: u32,
@@ -455,9 +458,9 @@ impl ShortQuotients {
     /// offset inside the guard band), in words: `a = |n| + d/2` lies below `2¹⁵·d`, so its
     /// high word is below `2^b` and needs no test (the Cortex-M0's frame 0.24% fewer
     /// instructions than with one), its bits from `b` up, a digit's `m`, are below 2¹⁵, and
-    /// the quotient, below 2¹⁵, takes its sign in a word. In
-    /// line: out of line it cost the Cortex-M0 1.3% of the frame. Outside that range the
-    /// quotient means nothing, but nothing overflows.
+    /// the quotient, below 2¹⁵, takes its sign in a word. In line: out of line it cost the
+    /// Cortex-M0 1.3% of the frame. Outside that range the quotient means nothing, but nothing
+    /// overflows.
     #[inline(always)]
     pub(crate) fn round(&self, n: i64) -> i32 {
         match self.round_in_words(n) {
@@ -507,14 +510,17 @@ impl ShortQuotients {
     /// `z / w` in Q1.30, inside the near and far planes; any other `z` gives a meaningless
     /// quotient), as a long division of two 15-bit digits.
     pub(crate) fn round_fraction(&self, z: i64) -> i64 {
-        self.fraction_or(z, || div_round(z << 30, self.d as i64))
+        match self.fraction_in_words(z) {
+            Some(q) => q,
+            None => div_round(z << 30, self.d as i64),
+        }
     }
 
-    /// [`round_fraction`](Self::round_fraction) in words, or `otherwise` where a digit's
+    /// [`round_fraction`](Self::round_fraction)'s quotient in words, `None` where a digit's
     /// estimate does not fit (never for `0 ≤ z ≤ d`). `z` is not checked against `d`: the
     /// caller knows it (the Cortex-M0's frame 0.9% fewer instructions than with the check).
     #[inline(always)]
-    fn fraction_or(&self, z: i64, otherwise: impl FnOnce() -> i64) -> i64 {
+    fn fraction_in_words(&self, z: i64) -> Option<i64> {
         let (d, z) = (self.d, z as u32);
         // z·2¹⁵ = q1·d + r1 and r1·2¹⁵ = q2·d + r2 (z and r1 at most d: estimates below 2¹⁶;
         // the low words wrap, the remainders below 2³² are exact). The sums wrap, without
@@ -523,10 +529,10 @@ impl ShortQuotients {
             if let Some((q2, r2)) = self.digit(self.top(r1), r1 << 15) {
                 // r2 + d/2 < 2d: the rounding adds one when it reaches d.
                 let up = (r2 + d / 2 >= d) as u32;
-                return (q1 << 15).wrapping_add(q2).wrapping_add(up) as i64;
+                return Some((q1 << 15).wrapping_add(q2).wrapping_add(up) as i64);
             }
         }
-        otherwise()
+        None
     }
 }
 
@@ -1001,8 +1007,8 @@ mod tests {
             }
             let z = (x >> 32) as i64 % (d64 + 1);
             for z in [z, 0, d64, d64 - 1, d64 / 2] {
-                let words = by.fraction_or(z, || panic!("{z} / {d} not in words"));
-                assert_eq!(words, div_round(z << 30, d64), "{z} / {d}");
+                let words = by.fraction_in_words(z);
+                assert_eq!(words, Some(div_round(z << 30, d64)), "{z} / {d}");
             }
             for z in [z, 0, d64] {
                 assert_eq!(by.round_fraction(z), div_round(z << 30, d64), "{z} / {d}");

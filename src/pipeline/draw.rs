@@ -51,7 +51,14 @@ fn kept(cull: Cull, area: i64, stats: &mut Stats) -> bool {
     false
 }
 
-/// The triangle walk's culling mode read from the frame at run time (see `walk`).
+// The triangle walk's culling mode as a constant (see `walk`).
+/// [`Cull::Back`].
+const BACK: u8 = 0;
+/// [`Cull::Front`].
+const FRONT: u8 = 1;
+/// [`Cull::None`].
+const NO_CULL: u8 = 2;
+/// The frame's mode, read at run time.
 const ANY_CULL: u8 = 3;
 
 /// Per-object constants for drawing.
@@ -169,22 +176,22 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // more flash, the M4 0.2% fewer for 1.3 KB).
         if cfg!(target_pointer_width = "64") {
             match self.frame.cull {
-                Cull::Back => self.walk::<T, 0>(target),
-                Cull::Front => self.walk::<T, 1>(target),
-                Cull::None => self.walk::<T, 2>(target),
+                Cull::Back => self.walk::<T, BACK>(target),
+                Cull::Front => self.walk::<T, FRONT>(target),
+                Cull::None => self.walk::<T, NO_CULL>(target),
             }
         } else {
             self.walk::<T, ANY_CULL>(target)
         }
     }
 
-    /// [`draw`](Self::draw) with the culling mode `CULL` (0 back, 1 front, 2 none) a constant,
-    /// or read from the frame for [`ANY_CULL`].
+    /// [`draw`](Self::draw) with the culling mode `CULL` a constant ([`BACK`], [`FRONT`],
+    /// [`NO_CULL`]), or read from the frame for [`ANY_CULL`].
     fn walk<T: RasterTarget, const CULL: u8>(&self, target: &mut T) -> Result<Stats, T::Error> {
         let cull = match CULL {
-            0 => Cull::Back,
-            1 => Cull::Front,
-            2 => Cull::None,
+            BACK => Cull::Back,
+            FRONT => Cull::Front,
+            NO_CULL => Cull::None,
             _ => self.frame.cull,
         };
         let mut stats = Stats::default();
