@@ -136,6 +136,10 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
     }
     let [a, b, c] = v;
     let area = doubled_area(a, b, c);
+    // Zero area covers nothing (rule R4).
+    if area == 0 || clip.is_empty() {
+        return TriangleSpans::empty(v);
+    }
     // Larger triangles than the pipeline's may need their edges set up again on the way down.
     #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
     let seed_rows = division_rows(&v);
@@ -145,12 +149,15 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
 }
 
 /// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled signed
-/// area (in the given order, see `doubled_area`) the caller has, and whose edges walk `seed_rows`
-/// rows from each set-up ([`division_rows`]; only [`DivideStepper`] edges need it, others take
+/// area (in the given order, see `doubled_area`) the caller has, not zero, and whose edges walk
+/// `seed_rows` rows from each set-up ([`division_rows`]; only [`DivideStepper`] edges need it, others take
 /// `u32::MAX`). The pipeline's triangles, whose vertices lie within
 /// ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT), pass `u32::MAX` on every core: that is their
 /// `division_rows` (their width and height are at most 2¹⁶ − 32), and in line it is a constant, so
-/// that the row loop carries no check.
+/// that the row loop carries no check. Neither the area nor `clip` is tested here: the pipeline
+/// draws no triangle of zero area, and a `clip` without rows or columns holds no span of any
+/// triangle (tested by [`triangle_spans`] instead: x86-64's frame 0.9% fewer instructions, the
+/// Cortex-M4's 0.5%, the M0's 0.3%).
 #[cfg_attr(
     all(target_pointer_width = "32", target_has_atomic = "32"),
     inline(always)
@@ -162,10 +169,6 @@ pub(crate) fn spans_in_range(
     seed_rows: u32,
 ) -> TriangleSpans {
     let empty = || TriangleSpans::empty(v);
-    // Zero area covers nothing (rule R4).
-    if clip.is_empty() || area == 0 {
-        return empty();
-    }
     let ([a, b, c], odd) = sort_by_y(v);
     // Coordinates within ±2²⁴: the first row at or below each in 32-bit words.
     let first_row = first_centre_from32;
@@ -1020,5 +1023,35 @@ mod tests {
         assert!(spans_seen > 100_000, "{spans_seen}");
         // Runs that switch an edge on the way down, which `rows_both_ways` walks too.
         assert!(split_runs > 5_000, "{split_runs}");
+    }
+
+    /// `spans_in_range` tests neither the clip rectangle nor the area: a rectangle without
+    /// columns (rows still walked) or without rows holds no span, by every loop, for triangles
+    /// that cover pixels of the full rectangle.
+    #[test]
+    fn r4_spans_in_range_of_an_empty_clip_hold_no_span() {
+        let mut rng = crate::testing::XorShift(0x6A09_E667_F3BC_C909u64);
+        let full = PixelRect::new(0, 0, 64, 64);
+        let empties = [
+            PixelRect::new(20, 0, 20, 64),
+            PixelRect::new(30, 0, 10, 64),
+            PixelRect::new(0, 20, 64, 20),
+            PixelRect::new(0, 40, 64, 10),
+        ];
+        let mut covering = 0;
+        for _ in 0..2_000 {
+            let p = rng.triangle(ScreenPoint::new(32 * 16, 32 * 16), 600);
+            let area = doubled_area(p[0], p[1], p[2]);
+            if area == 0 {
+                continue;
+            }
+            covering += usize::from(spans_in_range(p, full, area, u32::MAX).next().is_some());
+            for clip in empties {
+                let spans = spans_in_range(p, clip, area, u32::MAX);
+                assert!(rows_both_ways(&spans).iter().all(|(x0, x1)| x0 >= x1));
+                assert_eq!(spans.count(), 0, "{p:?} {clip:?}");
+            }
+        }
+        assert!(covering > 1_000, "{covering}");
     }
 }
