@@ -31,4 +31,6 @@ pub(crate) use divide::{div_round, DivideBy, ShortQuotients};
 pub(crate) use sqrt::isqrt_u64;
 #[cfg(test)]
 pub(crate) use vector::dot_wide;
-pub(crate) use vector::{cosine_unit, cross_short, cross_wide, dot_is_positive, normalize};
+pub(crate) use vector::{
+    cosine_unit, cross_in_words, cross_short, cross_wide, dot_is_positive, normalize,
+};

@@ -170,7 +170,16 @@ pub(crate) fn cross_short(a: [i32; 3], b: [i32; 3]) -> Option<[i32; 3]> {
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     let short =
         is_short(a0) & is_short(a1) & is_short(a2) & is_short(b0) & is_short(b1) & is_short(b2);
-    short.then(|| [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
+    short.then(|| cross_in_words(a, b))
+}
+
+/// [`cross_short`] without its test, for vectors the caller knows to lie in [−2¹⁵, 2¹⁵) (for
+/// others a wrapped value, never an overflow).
+#[inline(always)]
+pub(crate) fn cross_in_words(a: [i32; 3], b: [i32; 3]) -> [i32; 3] {
+    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
+    let c = |p: i32, q: i32, r: i32, s: i32| p.wrapping_mul(q).wrapping_sub(r.wrapping_mul(s));
+    [c(a1, b2, a2, b1), c(a2, b0, a0, b2), c(a0, b1, a1, b0)]
 }
 
 /// Unit vector (Q2.30) of any non-zero integer vector, whatever its scale: the components are

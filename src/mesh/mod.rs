@@ -90,6 +90,9 @@ pub struct Mesh<'a> {
     edges: Option<&'a [Edge]>,
     /// The largest coordinate magnitude of any position (raw Q16.16).
     extent: u32,
+    /// The largest component magnitude of any triangle's two edges from its first vertex (raw
+    /// Q16.16).
+    edge_extent: u32,
 }
 
 impl<'a> Mesh<'a> {
@@ -100,16 +103,34 @@ impl<'a> Mesh<'a> {
         normals: None,
         edges: None,
         extent: 0,
+        edge_extent: 0,
     };
 
     /// A mesh of `positions` and `triangles`; every index must be below `positions.len()`.
     pub const fn new(positions: &'a [Vec3], triangles: &'a [Triangle]) -> Result<Self, MeshError> {
         let n = positions.len();
+        let mut edge_extent = 0u32;
         let mut i = 0;
         while i < triangles.len() {
             let [a, b, c] = triangles[i];
             if a as usize >= n || b as usize >= n || c as usize >= n {
                 return Err(MeshError::TriangleIndexOutOfRange { triangle: i });
+            }
+            let [a, b, c] = [
+                positions[a as usize].to_bits(),
+                positions[b as usize].to_bits(),
+                positions[c as usize].to_bits(),
+            ];
+            let mut j = 0;
+            while j < 3 {
+                // A difference of two i32s has a magnitude of at most 2³² − 1: a u32.
+                let u = (b[j] as i64 - a[j] as i64).unsigned_abs() as u32;
+                let v = (c[j] as i64 - a[j] as i64).unsigned_abs() as u32;
+                let m = if u > v { u } else { v };
+                if m > edge_extent {
+                    edge_extent = m;
+                }
+                j += 1;
             }
             i += 1;
         }
@@ -132,6 +153,7 @@ impl<'a> Mesh<'a> {
             normals: None,
             edges: None,
             extent,
+            edge_extent,
         })
     }
 
@@ -170,6 +192,14 @@ impl<'a> Mesh<'a> {
     #[must_use]
     pub const fn extent(&self) -> u32 {
         self.extent
+    }
+
+    /// The largest magnitude of any component of any triangle's two edges from its first
+    /// vertex, raw Q16.16: flat shading takes its face normals in 32-bit words, untested,
+    /// where it is below 2¹⁵.
+    #[must_use]
+    pub(crate) const fn edge_extent(&self) -> u32 {
+        self.edge_extent
     }
 
     /// The vertex positions.
@@ -332,5 +362,31 @@ impl<'a> Object<'a> {
     #[must_use]
     pub const fn new(mesh: &'a Mesh<'a>, model: Mat4, color: Rgb888) -> Self {
         Object { mesh, model, color }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `edge_extent` is the largest component of any triangle's edges from its first vertex,
+    /// exact at the ends of the coordinate range (a difference of 2³² − 1).
+    #[test]
+    fn edge_extent_bounds_every_edge_from_the_first_vertex() {
+        let q = Vec3::from_bits;
+        let positions = [
+            q(0, 0, 0),
+            q(5, -7, 2),
+            q(-3, 4, 6),
+            q(i32::MIN, 0, 0),
+            q(i32::MAX, 0, 0),
+        ];
+        let mesh = |t: &'static [Triangle]| Mesh::new(&positions, t).map(|m| m.edge_extent());
+        // Edges 1 − 0 and 2 − 0: components up to 7; 2 − 1 (11 in y) is not one of them.
+        assert_eq!(mesh(&[[0, 1, 2]]), Ok(7));
+        assert_eq!(mesh(&[[1, 0, 2]]), Ok(11));
+        assert_eq!(mesh(&[[0, 1, 2], [3, 4, 0]]), Ok(u32::MAX));
+        assert_eq!(mesh(&[]), Ok(0));
+        assert_eq!(Mesh::EMPTY.edge_extent(), 0);
     }
 }

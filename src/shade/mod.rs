@@ -36,8 +36,9 @@ pub struct FaceInputs<'a> {
     /// The mesh's model-space positions, and the triangle's indices into them.
     pub(crate) positions: &'a [Vec3],
     pub(crate) indices: &'a Triangle,
-    /// The mesh's largest coordinate magnitude (raw Q16.16).
-    pub(crate) extent: u32,
+    /// The mesh's largest coordinate magnitude and largest edge component (raw Q16.16, see
+    /// [`Mesh::edge_extent`](crate::mesh::Mesh)).
+    pub(crate) extent: (u32, u32),
     /// World-from-model normal matrix (cofactor, raw Q16.16); `None` when the lighting is
     /// already in model space.
     pub(crate) normal_matrix: Option<&'a [[i32; 3]; 3]>,
