@@ -46,11 +46,11 @@ counted=$(ir "$counted_out" "torus_bench::draw_scene")
 no_asm=$(ir "$no_asm_out" "torus_bench::draw_scene")
 draw=$(ir "$out" "torus_bench::draw_scene")
 prepare=$(ir "$out" "pipeline::Frame::prepare"); walk=$(ir "$out" "Prepared<_,S>>::draw"); face=$(ir "$out" "Prepared<_,S>>::fill_face")
-fill=$(ir "$out" "pipeline::draw::fill"); spans=$(ir "$out" "raster::triangle::spans_in_range")
+rows=$(ir "$out" "raster::triangle::rows_in_range"); runs=$(ir "$out" "raster::triangle::TriangleRows::runs")
 shading=$(ir "$out" "Shading>::paint")
 timing=$(target/bench-lto/examples/torus_bench 200)
 report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$covered" -v pr="${prepare:-0}" -v wk="${walk:-0}" \
-    -v fc="${face:-0}" -v fl="${fill:-0}" -v sp="${spans:-0}" -v sh="${shading:-0}" -v ct="$counted" -v na="$no_asm" 'BEGIN {
+    -v fc="${face:-0}" -v sp="$(( ${rows:-0} + ${runs:-0} ))" -v sh="${shading:-0}" -v ct="$counted" -v na="$no_asm" 'BEGIN {
     f = 1 / n;
     printf "draw_scene: %.3f M instructions per frame, %.1f per covered pixel (clear_buffers: %.3f M)\n\n", h*f/1e6, h*f/px, c*f/1e6;
     printf "Without the \x60asm\x60 feature (the row loop compiled from Rust): %.3f M (%+.1f%%)\n\n", na*f/1e6, 100*(na-h)/h;
@@ -61,8 +61,7 @@ report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$
     row("triangle walk (fetch, trivial reject, culling, clipping)", wk - fc);
     row("flat shading per triangle (face normal, Lambert)", sh);
     row("span set-up (sorting, edge steppers)", sp);
-    row("depth walk set-up, spans and pixels (edge stepping, depth test, writes)", fl - sp);
-    row("other per-triangle work", fc - fl - sh);
+    row("depth walk set-up, rows and pixels (edge stepping, depth test, writes), and the rest of each triangle\x27s work (its inputs, its colour\x27s conversion)", fc - sh - sp);
     row("rest of draw_scene", d - pr - wk);
 }
 function row(name, v) { printf "| %s | %.0f | %.1f%% |\n", name, v * f, 100 * v / d }')

@@ -76,14 +76,22 @@ CUTS = [
         # The `asm` feature's row loops (both cores): everything up to the call.
         "src/target/asm_rows.rs",
         "    unsafe { core_rows::rows::<T, K>(&mut block) };",
-        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return Ok(()); }}\n"
+        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return true; }}\n"
         "    unsafe { core_rows::rows::<T, K>(&mut block) };",
     )]),
     ("span set-up (sorting, edge steppers)", "no fill set-up", [(
-        "src/pipeline/draw.rs",
-        "target.fill_triangle(spans, &plane, paint, stats)",
-        f"{{ let s = {BB}(spans); {BB}((&plane, paint)); "
-        f"if {BB}(false) {{ return target.fill_triangle(s, &plane, paint, stats); }} Ok(()) }}",
+        # The rows and edges as the build sets them up (for the `asm` row loops as runs), then
+        # nothing of the colour or the depth walk.
+        "src/target/surface.rs",
+        "        match paint.solid() {\n            Some(rgb) if Q::UNIFORM => {",
+        f"        if {BB}(true) {{\n"
+        "            if let Some(rows) = rows_in_range(triangle.p, self.clip, triangle.area) {\n"
+        "                #[cfg(all(feature = \"asm\", fixed3d_asm_rows))]\n"
+        f"                {BB}(rows.runs());\n"
+        "                #[cfg(not(all(feature = \"asm\", fixed3d_asm_rows)))]\n"
+        f"                {BB}(rows.spans((self.clip.x0, self.clip.x1), u32::MAX));\n"
+        f"            }}\n            {BB}(paint);\n            return Ok(());\n        }}\n"
+        "        match paint.solid() {\n            Some(rgb) if Q::UNIFORM => {",
     )]),
     ("flat shading (face normal, Lambert)", "no spans or depth walk", [(
         "src/pipeline/draw.rs",

@@ -11,10 +11,10 @@ use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::math::{map3, Mat4};
 use crate::mesh::{Object, Triangle};
-use crate::raster::{line_pixels, spans_in_range, PixelRect, ScreenPoint};
+use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
-use crate::target::{DepthPlane, RasterTarget};
+use crate::target::{RasterTarget, ScreenTriangle};
 
 /// The vertex colours handed to shadings that do not interpolate them.
 const NO_COLORS: [[i32; 3]; 3] = [[0; 3]; 3];
@@ -120,7 +120,6 @@ fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
 
 fn fill<T: RasterTarget, P: Paint>(
     target: &mut T,
-    clip: PixelRect,
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
@@ -128,14 +127,7 @@ fn fill<T: RasterTarget, P: Paint>(
     stats: &mut Stats,
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
-    let plane = if T::DEPTH {
-        DepthPlane::new(p, z, area)
-    } else {
-        DepthPlane::default()
-    };
-    // Within the pipeline's bound: no second set-up of the edges (see `spans_in_range`).
-    let spans = spans_in_range(p, clip, area, u32::MAX);
-    target.fill_triangle(spans, &plane, paint, stats)
+    target.fill_triangle(&ScreenTriangle::new(p, z, area), paint, stats)
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
@@ -339,17 +331,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
             let paint = self.shading.paint(&face, lighting);
-            fill(target, clip, p, z, area, &paint, stats)
+            fill(target, p, z, area, &paint, stats)
         } else {
-            fill(
-                target,
-                clip,
-                p,
-                z,
-                area,
-                &Flat.paint(&face, lighting),
-                stats,
-            )
+            fill(target, p, z, area, &Flat.paint(&face, lighting), stats)
         }
     }
 

@@ -97,12 +97,12 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
-/// A triangle's rows for a target's own row loop ([`TriangleSpans::blank_runs`], completed by
-/// [`TriangleSpans::write_runs`]): from the spans' first row with the edges `edges[0]` (left) and
-/// `edges[1]` (right), `rows` rows, each row's span `max(left, x0)..min(right, x1)` for the clip
-/// rectangle's columns ([`TriangleSpans::columns`]), both edges stepped after each row; after the
-/// first `upper` rows (at least one; `rows` when no edge changes), `edges[2]`, the lower short edge
-/// set up at that row, takes the place of the left edge if `lower_is_left`, else the right one.
+/// A triangle's rows for a target's own row loop ([`TriangleRows::runs`]): from its first row
+/// with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's span
+/// `max(left, x0)..min(right, x1)` for the clip rectangle's columns `x0..x1`, both edges stepped
+/// after each row; after the first `upper` rows (at least one; `rows` when no edge changes),
+/// `edges[2]`, the lower short edge set up at that row, takes the place of the left edge if
+/// `lower_is_left`, else the right one.
 #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
@@ -150,8 +150,8 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
 
 /// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled signed
 /// area (in the given order, see `doubled_area`) the caller has, not zero, and whose edges walk
-/// `seed_rows` rows from each set-up ([`division_rows`]; only [`DivideStepper`] edges need it, others take
-/// `u32::MAX`). The pipeline's triangles, whose vertices lie within
+/// `seed_rows` rows from each set-up ([`division_rows`]; only [`DivideStepper`] edges need it,
+/// others take `u32::MAX`). The pipeline's triangles, whose vertices lie within
 /// ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT), pass `u32::MAX` on every core: that is their
 /// `division_rows` (their width and height are at most 2¹⁶ − 32), and in line it is a constant, so
 /// that the row loop carries no check. Neither the area nor `clip` is tested here: the pipeline
@@ -168,52 +168,169 @@ pub(crate) fn spans_in_range(
     area: i64,
     seed_rows: u32,
 ) -> TriangleSpans {
-    let empty = || TriangleSpans::empty(v);
+    match rows_in_range(v, clip, area) {
+        Some(rows) => rows.spans((clip.x0, clip.x1), seed_rows),
+        None => TriangleSpans::empty(v),
+    }
+}
+
+/// A triangle's rows in a clip rectangle before any edge is set up ([`rows_in_range`]): its
+/// vertices sorted by y, its first row and the row past its last, the middle vertex's row
+/// clamped to them, and the side of the long edge. Its spans come from
+/// [`spans`](Self::spans); for a target's own row loop its runs from [`runs`](Self::runs),
+/// each edge set up where the loop reads it. (Where the spans were set up first and their
+/// edges then copied into the loop's block, the frame took 1.9% more instructions on x86-64,
+/// 0.8% on the Cortex-M0, 0.3% on the M4; on x86-64 the rows and the runs are set up out of
+/// line, as the spans were, and forced in line they cost 1.9% more.)
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TriangleRows {
+    v: [ScreenPoint; 3],
+    y: i32,
+    y_end: i32,
+    y_split: i32,
+    long_is_left: bool,
+}
+
+/// The rows of `clip` that the triangle `v` covers (see [`spans_in_range`], whose arguments
+/// these are); `None` where it covers none.
+#[cfg_attr(
+    all(target_pointer_width = "32", target_has_atomic = "32"),
+    inline(always)
+)]
+pub(crate) fn rows_in_range(
+    v: [ScreenPoint; 3],
+    clip: PixelRect,
+    area: i64,
+) -> Option<TriangleRows> {
     let ([a, b, c], odd) = sort_by_y(v);
     // Coordinates within ±2²⁴: the first row at or below each in 32-bit words.
     let first_row = first_centre_from32;
-    let y_start = first_row(a.y).max(clip.y0);
+    let y = first_row(a.y).max(clip.y0);
     let y_end = first_row(c.y).min(clip.y1);
-    if y_start >= y_end {
-        return empty();
+    if y >= y_end {
+        return None;
     }
-    let y_split = first_row(b.y).clamp(y_start, y_end);
-    #[cfg(target_pointer_width = "64")]
-    let y_reseed = reseed_row(y_start, y_end, c.y.wrapping_sub(a.y));
-    #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
-    let y_reseed = after_rows(y_start, seed_rows);
     // The middle vertex lies right of the long edge when the sorted triangle's doubled area
     // is positive (y down; an odd permutation turns the sign): the long edge is then the left
     // one.
-    let long_is_left = (area > 0) != odd;
-    let long = edge(a, c, y_start, seed_rows);
-    let (short, y_split) = if y_start < y_split {
-        (edge(a, b, y_start, seed_rows), y_split)
-    } else {
-        (edge(b, c, y_start, seed_rows), i32::MIN)
-    };
-    let (left, right) = if long_is_left {
-        (long, short)
-    } else {
-        (short, long)
-    };
-    TriangleSpans {
+    Some(TriangleRows {
         v: [a, b, c],
-        y: y_start,
+        y,
         y_end,
-        y_split,
-        #[cfg(any(
-            target_pointer_width = "64",
-            all(target_pointer_width = "32", target_has_atomic = "32")
-        ))]
-        y_reseed,
+        y_split: first_row(b.y).clamp(y, y_end),
+        long_is_left: (area > 0) != odd,
+    })
+}
+
+impl TriangleRows {
+    /// The first row.
+    #[inline(always)]
+    pub(crate) fn row(&self) -> i32 {
+        self.y
+    }
+
+    /// The spans of these rows clipped to the columns `x_min..x_max`, their edges walking
+    /// `seed_rows` rows from each set-up (see [`spans_in_range`]).
+    #[inline(always)]
+    pub(crate) fn spans(self, (x_min, x_max): (i32, i32), seed_rows: u32) -> TriangleSpans {
+        let TriangleRows {
+            v: [a, b, c],
+            y,
+            y_end,
+            y_split,
+            long_is_left,
+        } = self;
+        #[cfg(target_pointer_width = "64")]
+        let y_reseed = reseed_row(y, y_end, c.y.wrapping_sub(a.y));
         #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
-        seed_rows,
-        left,
-        right,
-        long_is_left,
-        x_min: clip.x0,
-        x_max: clip.x1,
+        let y_reseed = after_rows(y, seed_rows);
+        let long = edge(a, c, y, seed_rows);
+        let (short, y_split) = if y < y_split {
+            (edge(a, b, y, seed_rows), y_split)
+        } else {
+            (edge(b, c, y, seed_rows), i32::MIN)
+        };
+        let (left, right) = if long_is_left {
+            (long, short)
+        } else {
+            (short, long)
+        };
+        TriangleSpans {
+            v: [a, b, c],
+            y,
+            y_end,
+            y_split,
+            #[cfg(any(
+                target_pointer_width = "64",
+                all(target_pointer_width = "32", target_has_atomic = "32")
+            ))]
+            y_reseed,
+            #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+            seed_rows,
+            left,
+            right,
+            long_is_left,
+            x_min,
+            x_max,
+        }
+    }
+
+    /// These rows for a target's own row loop, of a triangle within the pipeline's range
+    /// (whose edges walk all its rows from one set-up on Cortex-M: `seed_rows` is `u32::MAX`):
+    /// the left, right and lower short edges set up where the loop reads them, and the counts
+    /// of rows; `None` where the edges would be set up again on the way down (x86-64's
+    /// [`FractionStepper`] for a triangle of more than 2¹² rows of edges beyond 2¹⁶
+    /// sub-pixels: none of the pipeline's). Without a split the lower edge is only a
+    /// placeholder: a copy of the left edge on Cortex-M0, where clearing it is a library call
+    /// a triangle (0.9% of the frame), zero elsewhere (a copy cost x86-64 0.6%).
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
+    #[cfg_attr(
+        all(target_pointer_width = "32", target_has_atomic = "32"),
+        inline(always)
+    )]
+    pub(crate) fn runs(&self) -> Option<Runs> {
+        let TriangleRows {
+            v: [a, b, c],
+            y,
+            y_end,
+            y_split,
+            long_is_left,
+        } = *self;
+        #[cfg(target_pointer_width = "64")]
+        if reseed_row(y, y_end, c.y.wrapping_sub(a.y)) != i32::MAX {
+            return None;
+        }
+        // y < y_end: a positive count of rows, and of those above a split within them.
+        let rows = y_end.wrapping_sub(y) as u32;
+        let long = edge(a, c, y, u32::MAX);
+        let short = if y < y_split {
+            edge(a, b, y, u32::MAX)
+        } else {
+            edge(b, c, y, u32::MAX)
+        };
+        let (left, right) = if long_is_left {
+            (long, short)
+        } else {
+            (short, long)
+        };
+        let split = y < y_split && y_split < y_end;
+        let lower = if split {
+            edge(b, c, y_split, u32::MAX)
+        } else if crate::math::NARROW_CORE {
+            left
+        } else {
+            EdgeWalk::ZERO
+        };
+        Some(Runs {
+            edges: [left, right, lower],
+            upper: if split {
+                y_split.wrapping_sub(y) as u32
+            } else {
+                rows
+            },
+            rows,
+            lower_is_left: !long_is_left,
+        })
     }
 }
 
@@ -557,78 +674,6 @@ impl TriangleSpans {
         }
     }
 
-    /// [`blank_runs`](Self::blank_runs) filled by [`write_runs`](Self::write_runs) (the tests'
-    /// form).
-    #[cfg(test)]
-    pub(crate) fn runs(self) -> Result<Runs, Self> {
-        let mut runs = self.blank_runs();
-        self.write_runs(&mut runs)?;
-        Ok(runs)
-    }
-
-    /// The [`Runs`] that [`write_runs`](Self::write_runs) completes: the left and right edges
-    /// (written here, where the row loops in assembly take them into their block with the rest
-    /// of it, not cleared first and copied in after), no rows, and a lower edge that only a
-    /// split replaces. That is a copy of the left edge on Cortex-M0, where clearing it is a
-    /// library call a triangle (0.9% of the frame; all three cleared and two copied in after,
-    /// 1.4%), and zero elsewhere (a copy cost x86-64 0.6%).
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
-    #[inline(always)]
-    pub(crate) fn blank_runs(&self) -> Runs {
-        let lower = if crate::math::NARROW_CORE {
-            self.left
-        } else {
-            EdgeWalk::ZERO
-        };
-        Runs {
-            edges: [self.left, self.right, lower],
-            upper: 0,
-            rows: 0,
-            lower_is_left: false,
-        }
-    }
-
-    /// Completes `out`, this triangle's [`blank_runs`](Self::blank_runs), with the rows left for
-    /// a target's own row loop, field by field (the row loops in assembly read them where they
-    /// are written): the counts, and the lower short edge where the rows split; `Err(self)`,
-    /// untouched, and `out` as it was, for a triangle without rows or whose edges are set up
-    /// again on the way down (see [`EdgeWalk`]: none of the pipeline's).
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
-    #[inline(always)]
-    pub(crate) fn write_runs(self, out: &mut Runs) -> Result<(), Self> {
-        // (Cortex-M0's exact edges are never set up again.)
-        #[cfg(any(
-            target_pointer_width = "64",
-            all(target_pointer_width = "32", target_has_atomic = "32")
-        ))]
-        if self.y_reseed != i32::MAX {
-            return Err(self);
-        }
-        if self.y >= self.y_end {
-            return Err(self);
-        }
-        // y < y_end: a positive count of rows, and of those above a split ahead (the split
-        // lies after y while pending, `i32::MIN` once switched).
-        let rows = self.y_end.wrapping_sub(self.y) as u32;
-        let [_, b, c] = self.v;
-        out.upper = if self.y_split > self.y && self.y_split < self.y_end {
-            out.edges[2] = edge(b, c, self.y_split, u32::MAX);
-            self.y_split.wrapping_sub(self.y) as u32
-        } else {
-            rows
-        };
-        out.rows = rows;
-        out.lower_is_left = !self.long_is_left;
-        Ok(())
-    }
-
-    /// The clip rectangle's columns `x0..x1` that the spans are clipped to.
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
-    #[inline(always)]
-    pub(crate) fn columns(&self) -> (i32, i32) {
-        (self.x_min, self.x_max)
-    }
-
     /// [`for_each_row`](Self::for_each_row) in one loop that checks for the split on every
     /// row: on 32-bit cores, where entering each of two runs moves the row loop's state
     /// between stack slots (Cortex-M0: 0.7% fewer instructions per frame than in runs, the
@@ -712,7 +757,11 @@ mod tests {
 
     /// The rows of all of `for_each_row`'s loops (in runs, one by one, and one by one with
     /// re-seeding out of line), which must agree: each target compiles one or two of them.
-    fn rows_both_ways(spans: &TriangleSpans) -> Vec<(i32, i32)> {
+    fn rows_both_ways(
+        spans: &TriangleSpans,
+        p: [ScreenPoint; 3],
+        clip: PixelRect,
+    ) -> Vec<(i32, i32)> {
         let (mut in_runs, mut one_by_one, mut reseeding) = (Vec::new(), Vec::new(), Vec::new());
         spans.clone().rows_in_runs(|x0, x1| in_runs.push((x0, x1)));
         spans
@@ -724,11 +773,20 @@ mod tests {
         assert_eq!(in_runs, one_by_one);
         assert_eq!(in_runs, reseeding);
         // As runs for a target's own loop, where the edges need no second set-up.
-        match spans.clone().runs() {
-            Ok(runs) => assert_eq!(walk_runs(runs, spans.columns()), in_runs),
-            Err(untouched) => assert_eq!(untouched.row(), spans.row()),
+        if let Some(runs) = runs_of(p, clip) {
+            assert_eq!(walk_runs(runs, (clip.x0, clip.x1)), in_runs);
         }
         in_runs
+    }
+
+    /// The runs of `p` in `clip` for a target's own row loop, if it has rows and its edges need
+    /// no second set-up.
+    fn runs_of(p: [ScreenPoint; 3], clip: PixelRect) -> Option<Runs> {
+        let area = doubled_area(p[0], p[1], p[2]);
+        if area == 0 {
+            return None;
+        }
+        rows_in_range(p, clip, area)?.runs()
     }
 
     /// The rows of [`Runs`] as their documentation describes them (as the `asm` feature's row
@@ -972,7 +1030,7 @@ mod tests {
             reseeded += usize::from(spans.y_reseed != i32::MAX);
             let expected: Vec<Span> = spans.clone().collect();
             let (mut walked, mut y) = (Vec::new(), spans.row());
-            for (x0, x1) in rows_both_ways(&spans) {
+            for (x0, x1) in rows_both_ways(&spans, p, clip) {
                 if x0 < x1 {
                     walked.push(Span { y, x0, x1 });
                 }
@@ -1006,11 +1064,11 @@ mod tests {
                 .map(|s| (s, plane.at(s.x0, s.y)))
                 .collect();
             let spans = triangle_spans(p, clip);
-            split_runs += usize::from(spans.clone().runs().is_ok_and(|r| r.upper < r.rows));
+            split_runs += usize::from(runs_of(p, clip).is_some_and(|r| r.upper < r.rows));
             let y0 = spans.row();
             let mut wide = plane.rows(clip.x0, y0);
             let (mut walked, mut y) = (Vec::new(), y0);
-            for (x0, x1) in rows_both_ways(&spans) {
+            for (x0, x1) in rows_both_ways(&spans, p, clip) {
                 if x0 < x1 {
                     walked.push((Span { y, x0, x1 }, wide.at(x0)));
                 }
@@ -1048,7 +1106,9 @@ mod tests {
             covering += usize::from(spans_in_range(p, full, area, u32::MAX).next().is_some());
             for clip in empties {
                 let spans = spans_in_range(p, clip, area, u32::MAX);
-                assert!(rows_both_ways(&spans).iter().all(|(x0, x1)| x0 >= x1));
+                assert!(rows_both_ways(&spans, p, clip)
+                    .iter()
+                    .all(|(x0, x1)| x0 >= x1));
                 assert_eq!(spans.count(), 0, "{p:?} {clip:?}");
             }
         }

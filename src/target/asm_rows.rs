@@ -14,7 +14,7 @@ use super::thumb2 as core_rows;
 #[cfg(target_arch = "x86_64")]
 use super::x86_64 as core_rows;
 use crate::pipeline::Stats;
-use crate::raster::{EdgeWalk, Runs, TriangleSpans};
+use crate::raster::{EdgeWalk, Runs, TriangleRows};
 
 /// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
 /// steps; on ARMv7-M its numerator, step, denominator and base; on x86-64 its walk and step).
@@ -73,19 +73,21 @@ const _: () = {
     assert!(offset_of!(RowBlock, failed) == offset_of!(RowBlock, fragments) + 4);
 };
 
-/// Fills a triangle's spans whose every pixel has the colour whose two bytes [`color_bits`]
-/// gave as `bits` into u16 depth and colour buffers of `width` pixels a row holding frame
-/// rows from `first_row`, its depths from the walk `depth` (every value in [0, 2³¹), see
+/// Fills the rows `triangle` of a triangle whose every pixel has the colour whose two bytes
+/// [`color_bits`] gave as `bits`, clipped to the columns `0..width` (`columns`, which must be
+/// those), into u16 depth and colour buffers of `width` pixels a row holding frame rows from
+/// `first_row`, its depths from the walk `depth` (every value in [0, 2³¹), see
 /// `DepthFormat::unclamped`): what the span loop over
-/// [`for_each_row`](TriangleSpans::for_each_row) does, the counts into `stats` when `K`
-/// counts, with the whole row loop in assembly. `Err(spans)`, untouched, where the spans are
-/// not clipped to `0..width` or their edges are set up again on the way down (neither happens
-/// to the pipeline's triangles in a [`ColorDepth`](super::ColorDepth)); nothing is drawn where
-/// the buffers do not hold the triangle's rows (never, for spans clipped to the target).
+/// [`for_each_row`](crate::raster::TriangleSpans::for_each_row) does, the counts into `stats`
+/// when `K` counts, with the whole row loop in assembly. False, with nothing drawn, where the
+/// columns are others or the edges would be set up again on the way down (neither happens to
+/// the pipeline's triangles in a [`ColorDepth`](super::ColorDepth)); nothing is drawn where the
+/// buffers do not hold the triangle's rows (never, for rows clipped to the target).
 #[inline(always)]
 #[allow(unsafe_code, clippy::too_many_arguments)]
 pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
-    spans: TriangleSpans,
+    triangle: &TriangleRows,
+    columns: (i32, i32),
     depth: &RoundedRows<W>,
     colors: &mut [C],
     depths: &mut [u16],
@@ -93,15 +95,18 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     width: u32,
     bits: u32,
     stats: &mut Stats,
-) -> Result<(), TriangleSpans> {
+) -> bool {
     let w = match i32::try_from(width) {
-        Ok(w) if w > 0 && spans.columns() == (0, w) => w,
-        _ => return Err(spans),
+        Ok(w) if w > 0 && columns == (0, w) => w,
+        _ => return false,
+    };
+    let Some(runs) = triangle.runs() else {
+        return false;
     };
     // The triangle's first row in the buffers.
-    let first = spans.row().wrapping_sub(first_row) as u32;
+    let first = triangle.row().wrapping_sub(first_row) as u32;
     let mut block = RowBlock {
-        runs: spans.blank_runs(),
+        runs,
         step_x: depth.step_x.to_i32(),
         delta: 0,
         step_y: depth.step_y.to_i32(),
@@ -109,29 +114,22 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
         width: w,
         end: 0,
         last: 0,
-        slot: 0,
+        slot: if runs.lower_is_left { 0 } else { EDGE },
         bits,
         row_z: depth.row.to_i32(),
         row: 0,
         fragments: 0,
         failed: 0,
     };
-    spans.write_runs(&mut block.runs)?;
-    let Runs {
-        upper,
-        rows,
-        lower_is_left,
-        ..
-    } = block.runs;
-    block.slot = if lower_is_left { 0 } else { EDGE };
+    let Runs { upper, rows, .. } = runs;
     // The rows' cells in both buffers, and the rest of the contract, checked here (constants,
     // or known to the caller: compiled away).
     let width = width as usize;
     let Some((colors, depths)) = run_cells(colors, depths, first, rows, width) else {
-        return Ok(());
+        return true;
     };
     if !(1..=rows).contains(&upper) || size_of::<C>() != 2 || align_of::<C>() != 2 {
-        return Ok(());
+        return true;
     }
     let row = colors.as_mut_ptr();
     // Below the buffer's length in bytes, so no overflow; the last one past the end of
@@ -154,7 +152,7 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
             .written
             .saturating_add(block.fragments.wrapping_sub(block.failed));
     }
-    Ok(())
+    true
 }
 
 /// The two bytes of a colour of 2 bytes and alignment 2, as a word for the loops in assembly;
@@ -220,7 +218,7 @@ mod tests {
     use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 
     use super::*;
-    use crate::raster::{triangle_spans, PixelRect, ScreenPoint};
+    use crate::raster::{doubled_area, rows_in_range, triangle_spans, PixelRect, ScreenPoint};
     use crate::target::{Counted, Less, LessOrEqual, Uncounted};
 
     const W: usize = 24;
@@ -240,8 +238,8 @@ mod tests {
 
     const SHAPES: [Shape; 3] = [Shape::Wide, Shape::Mirrored, Shape::Needle];
 
-    /// A triangle of `shape` in sub-pixels (16 to a pixel) clipped to `clip`.
-    fn spans(clip: PixelRect, shape: Shape) -> TriangleSpans {
+    /// The vertices of a triangle of `shape` in sub-pixels (16 to a pixel).
+    fn vertices(shape: Shape) -> [ScreenPoint; 3] {
         let p = |x: i32, y: i32| {
             let x = if matches!(shape, Shape::Mirrored) {
                 W as i32 - x
@@ -250,11 +248,10 @@ mod tests {
             };
             ScreenPoint::new(x * 16 + 3, y * 16 + 5)
         };
-        let v = match shape {
+        match shape {
             Shape::Needle => [p(7, -2), ScreenPoint::new(7 * 16 + 15, 20 * 16), p(7, 20)],
             _ => [p(-4, -2), p(30, 6), p(5, 20)],
-        };
-        triangle_spans(v, clip)
+        }
     }
 
     /// A depth walk that crosses the far depth inside the triangle, so that both tests pass
@@ -278,7 +275,7 @@ mod tests {
     ) -> Stats {
         let (mut stats, w) = (Stats::default(), walk());
         let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
-        let spans = spans(clip, shape);
+        let spans = triangle_spans(vertices(shape), clip);
         let y0 = spans.row();
         for s in spans {
             let row = w.row.wrapping_add(w.step_y.wrapping_mul(s.y - y0));
@@ -300,17 +297,23 @@ mod tests {
         (vec![Rgb565::BLUE; W * H], vec![FAR; W * H])
     }
 
-    /// `solid_rows` of `spans` in red, [`walk`]'s depths, into buffers of `W` columns holding
-    /// rows from `first_row`.
+    /// `solid_rows` of the triangle of `shape` clipped to `clip` in red, [`walk`]'s depths,
+    /// into buffers of `W` columns holding rows from `first_row`: whether it drew.
     fn draw<T: DepthTest, K: FragmentCount>(
-        spans: TriangleSpans,
+        shape: Shape,
+        clip: PixelRect,
         first_row: i32,
         (colors, depths): &mut (Vec<Rgb565>, Vec<u16>),
         stats: &mut Stats,
-    ) -> Result<(), TriangleSpans> {
+    ) -> bool {
+        let v = vertices(shape);
+        let Some(rows) = rows_in_range(v, clip, doubled_area(v[0], v[1], v[2])) else {
+            return true;
+        };
         let bits = color_bits(&Rgb565::RED).unwrap_or_default();
         solid_rows::<Rgb565, T, K, i32>(
-            spans,
+            &rows,
+            (clip.x0, clip.x1),
             &walk(),
             colors,
             depths,
@@ -331,8 +334,7 @@ mod tests {
             let want = expected::<T>(first_row, shape, &mut want_c, &mut want_d);
             let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
             let mut stats = Stats::default();
-            let drawn = draw::<T, K>(spans(clip, shape), first_row, &mut cells, &mut stats);
-            assert!(drawn.is_ok());
+            assert!(draw::<T, K>(shape, clip, first_row, &mut cells, &mut stats));
             assert_eq!(cells, (want_c, want_d), "{first_row}, {shape:?}");
             if K::COUNTED {
                 assert_eq!(
@@ -366,15 +368,24 @@ mod tests {
         let mut stats = Stats::default();
         let mut cells = buffers();
         let untouched = cells.clone();
-        let narrow = spans(PixelRect::new(1, 0, W as i32, H as i32), Shape::Wide);
-        let back = draw::<Less, Counted>(narrow.clone(), 0, &mut cells, &mut stats);
-        assert_eq!(
-            back.map_err(|s| s.collect::<Vec<_>>()),
-            Err(narrow.collect())
-        );
-        // The spans' rows reach past the buffers' last row (the clip holds more rows).
-        let tall = spans(PixelRect::new(0, 0, W as i32, 2 * H as i32), Shape::Wide);
-        assert!(draw::<Less, Counted>(tall, 0, &mut cells, &mut stats).is_ok());
+        // Columns other than the buffers': refused, nothing drawn.
+        let narrow = PixelRect::new(1, 0, W as i32, H as i32);
+        assert!(!draw::<Less, Counted>(
+            Shape::Wide,
+            narrow,
+            0,
+            &mut cells,
+            &mut stats
+        ));
+        // The rows reach past the buffers' last row (the clip holds more rows): nothing drawn.
+        let tall = PixelRect::new(0, 0, W as i32, 2 * H as i32);
+        assert!(draw::<Less, Counted>(
+            Shape::Wide,
+            tall,
+            0,
+            &mut cells,
+            &mut stats
+        ));
         assert_eq!((cells, stats), (untouched, Stats::default()));
         // Colours of another size take the caller's loop.
         assert_eq!(color_bits(&[0u8; 3]), None);

@@ -30,4 +30,4 @@ pub use depth::{
 pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;
-pub use surface::{ColorDepth, DepthPlane, Direct, RasterTarget};
+pub use surface::{ColorDepth, Direct, RasterTarget, ScreenTriangle};

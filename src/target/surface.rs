@@ -15,24 +15,35 @@ use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::pipeline::Stats;
-use crate::raster::{PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans};
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
+use crate::raster::TriangleRows;
+use crate::raster::{
+    rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans,
+};
 use crate::shade::Paint;
 
-/// Depth across one triangle: its snapped vertices, their depths and its doubled signed area,
-/// from which a target sets up the interpolation it needs (opaque).
+/// One screen triangle to fill: its snapped vertices, their depths and its doubled signed
+/// area, from which a target sets up its rows and the depth interpolation it needs (opaque).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct DepthPlane {
+pub struct ScreenTriangle {
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
 }
 
-impl DepthPlane {
-    /// The triangle `p` with depths `z` (Q1.30, in [0, 2³⁰]) and doubled signed area `area`
-    /// (non-zero), within the pipeline's range.
+impl ScreenTriangle {
+    /// The triangle `p` with depths `z` (Q1.30, in [0, 2³⁰]; any for a target without depth)
+    /// and doubled signed area `area` (non-zero), within the pipeline's range.
     #[inline(always)]
     pub(crate) fn new(p: [ScreenPoint; 3], z: [i32; 3], area: i64) -> Self {
-        DepthPlane { p, z, area }
+        ScreenTriangle { p, z, area }
+    }
+
+    /// Its spans clipped to `clip` (see `spans_in_range`: within the pipeline's range, its
+    /// edges walk every row from one set-up).
+    #[inline(always)]
+    fn spans(&self, clip: PixelRect) -> TriangleSpans {
+        spans_in_range(self.p, clip, self.area, u32::MAX)
     }
 
     /// The exact plane in Q1.44 (the pipeline's Q1.30 shifted by 14).
@@ -57,12 +68,11 @@ pub trait RasterTarget {
     const DEPTH: bool;
     /// The frame pixels this target receives (frame coordinates).
     fn clip(&self) -> PixelRect;
-    /// Writes the spans of one triangle (per-triangle set-up happens here once, not per row).
+    /// Fills one triangle (per-triangle set-up happens here once, not per row).
     #[doc(hidden)]
     fn fill_triangle<P: Paint>(
         &mut self,
-        spans: TriangleSpans,
-        depth: &DepthPlane,
+        triangle: &ScreenTriangle,
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), Self::Error>;
@@ -201,43 +211,46 @@ where
     #[inline(always)]
     fn depth_tested_spans<G: FnMut() -> C>(
         &mut self,
-        spans: TriangleSpans,
-        depth: &DepthPlane,
+        triangle: &ScreenTriangle,
         stats: &mut Stats,
         solid: Option<SolidColor<C>>,
         colors_for: impl FnMut(Span) -> G,
     ) {
-        let y = spans.row();
+        let Some(rows) = rows_in_range(triangle.p, self.clip, triangle.area) else {
+            return;
+        };
+        let y = rows.row();
+        let columns = (self.clip.x0, self.clip.x1);
         // Decided once per triangle: spans whose depths need no clamping, in 32-bit words
         // from a walk set up at the triangle's own vertex (see `RoundedRows`), so that a band
         // starts them as the whole frame does.
-        let unclamped = if D::unclamped(depth.max()) {
-            RoundedRows::<NativeWord>::new(&depth.p, depth.z, depth.area, y)
+        let unclamped = if D::unclamped(triangle.max()) {
+            RoundedRows::<NativeWord>::new(&triangle.p, triangle.z, triangle.area, y)
         } else {
             None
         };
         match unclamped {
-            Some((rows, st)) => {
+            Some((walk, st)) => {
                 // With the `asm` feature, a solid colour of 2 bytes into u16 depth takes the
-                // row loop in assembly (spans the pipeline's triangles always have).
+                // row loop in assembly (rows the pipeline's triangles always have), its edges
+                // set up in the loop's block.
                 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-                let spans = match solid.and_then(|s| s.bits()) {
-                    Some(bits) => match self.solid_rows(spans, &rows, bits, stats) {
-                        Ok(()) => return,
-                        Err(spans) => spans,
-                    },
-                    None => spans,
-                };
-                self.each_span(spans, rows, stats, colors_for, |ds, cs, start, g, w| {
+                if let Some(bits) = solid.and_then(|s| s.bits()) {
+                    if self.solid_rows(&rows, &walk, bits, stats) {
+                        return;
+                    }
+                }
+                let spans = rows.spans(columns, u32::MAX);
+                self.each_span(spans, walk, stats, colors_for, |ds, cs, start, g, w| {
                     D::test_span_unclamped::<C, T, K>(ds, cs, start, st, solid, g, w)
                 });
             }
             None => {
                 // Spans start at column 0 or right of it (the clip rectangle's first column).
-                let plane = depth.plane();
+                let plane = triangle.plane();
                 let step = plane.step_x();
                 self.each_span(
-                    spans,
+                    rows.spans(columns, u32::MAX),
                     plane.rows(0, y),
                     stats,
                     colors_for,
@@ -248,24 +261,25 @@ where
     }
 
     /// The row loop in assembly ([`asm_rows::solid_rows`]) into these
-    /// buffers, when the depth format is u16.
+    /// buffers, when the depth format is u16: false where it declines the triangle.
     #[cfg(all(feature = "asm", fixed3d_asm_rows))]
     #[inline(always)]
     fn solid_rows(
         &mut self,
-        spans: TriangleSpans,
-        rows: &RoundedRows,
+        rows: &TriangleRows,
+        walk: &RoundedRows,
         bits: u32,
         stats: &mut Stats,
-    ) -> Result<(), TriangleSpans> {
+    ) -> bool {
         let width = self.color.width();
         let Some(depths) = D::u16_cells(self.depth.cells_all_mut()) else {
-            return Err(spans);
+            return false;
         };
         let colors = self.color.cells_all_mut();
         asm_rows::solid_rows::<C, T, K, _>(
-            spans,
             rows,
+            (self.clip.x0, self.clip.x1),
+            walk,
             colors,
             depths,
             self.clip.y0,
@@ -345,8 +359,7 @@ where
     #[inline]
     fn fill_triangle<P: Paint>(
         &mut self,
-        spans: TriangleSpans,
-        depth: &DepthPlane,
+        triangle: &ScreenTriangle,
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), Self::Error> {
@@ -354,13 +367,13 @@ where
             Some(rgb) if Q::UNIFORM => {
                 // One conversion per triangle.
                 let c = self.quantize.quantize(rgb, 0, 0);
-                self.depth_tested_spans(spans, depth, stats, Some(SolidColor::new(&c)), |_| {
+                self.depth_tested_spans(triangle, stats, Some(SolidColor::new(&c)), |_| {
                     move || c
                 });
             }
             _ => {
                 let q = self.quantize;
-                self.depth_tested_spans(spans, depth, stats, None, |span| {
+                self.depth_tested_spans(triangle, stats, None, |span| {
                     let mut cursor = paint.cursor(span.x0, span.y);
                     let (mut x, y) = (span.x0, span.y);
                     move || {
@@ -427,11 +440,11 @@ where
 
     fn fill_triangle<P: Paint>(
         &mut self,
-        spans: TriangleSpans,
-        _: &DepthPlane,
+        triangle: &ScreenTriangle,
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
+        let spans = triangle.spans(self.clip());
         let solid = match paint.solid() {
             Some(rgb) if Q::UNIFORM => Some(self.quantize.quantize(rgb, 0, 0)),
             _ => None,

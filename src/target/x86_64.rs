@@ -15,8 +15,8 @@
 //! The reference frame 10% fewer instructions (1.660 M → 1.493 M). Its pixel loop takes two
 //! pixels a turn, the second at the next cells' displacement, so that the turn's index step
 //! and branch serve both: 5 instructions a fragment, 2 more where it wins, and 2 a turn; a span
-//! of odd length takes its first pixel apart, 4 more (1% fewer, 1.454 M → 1.440 M; the spans of the torus
-//! are 4.8 pixels long on average).
+//! of odd length takes its first pixel apart, 4 more (1% fewer, 1.454 M → 1.440 M; the spans
+//! of the torus are 4.8 pixels long on average).
 //!
 //! It computes exactly what the Rust loops compute: the same span ends (the same walks' high
 //! halves, clamped to the same columns), the same depths (`acc >> 15`, below 2¹⁶ since every
