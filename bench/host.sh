@@ -133,8 +133,13 @@ $stages
   compiler's loop on the Cortex-M4 12, on the M0 10: on every core the colour does not
   stay in a register beside the row loop's state, one load a written pixel; Cortex-M compares
   depths in 32 bits so that the stored halfword needs no masking). The \`asm\` feature's
-  hand-written loops, which the firmware presets have, take nine on both cores and on
-  x86-64 (seven for a fragment that loses). A target that counts fragments (the default,
+  hand-written loops, which the firmware presets have, take nine on both cores (seven for a
+  fragment that loses on the M0); x86-64's takes two pixels a turn, the second at the next
+  cells' displacement, so that one index step and branch serve both: eight a written
+  fragment, six one that loses, and a span of odd length takes its first pixel apart, four
+  more (its frame 1% fewer instructions than one pixel a turn; the torus' spans are 4.8
+  pixels long on average; on Cortex-M a second pixel's cells need two more registers, which
+  the row loop does not have, or an index step of its own, which costs as much as it saves). A target that counts fragments (the default,
   for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
@@ -188,7 +193,10 @@ $stages
   the triangle's constants in pairs (\`ldrd\`) from one block in memory and stores the two
   numerators back, which leaves twelve registers for the row and the pixel loop together;
   the runs above and below the middle vertex go through it in one call, the lower short
-  edge set up beforehand and copied over its side by the loop. Its set-up (the edges copied
+  edge set up beforehand and copied over its side by the loop. The three edges are set up
+  from the triangle's rows (\`TriangleRows::runs\`) as the block is built, where they were
+  first the spans' edges, copied in after (that cost x86-64 1.9% of its frame, the M0 0.8%,
+  the M4 0.3%). Its set-up (the edges copied
   into the block, the buffers' cells checked once a triangle) costs about 60 instructions a
   triangle more than the compiled loop's (\`profile.py\`), where a triangle's 8 rows save
   about 20 each: the frame 3.9% fewer instructions (1.722 M → 1.655 M), about 500 bytes
@@ -222,8 +230,8 @@ $stages
   span's odd pixel goes apart). With the \`asm\` feature x86-64 runs the whole triangle's
   rows in assembly too (src/target/x86_64.rs), from the Cortex-M loops' block and set-up:
   both edges' walks stay in registers (their steps in the block), 16 instructions a row, 6
-  to enter a span, 7 a fragment and 2 more a write: the frame 10% fewer instructions
-  (1.660 M → 1.493 M), where the same block walked by a compiled loop (for targets without
+  to enter a span, 7 a fragment and 2 more a write (now 5 and 2, and 2 for each two
+  pixels): the frame 10% fewer instructions (1.660 M → 1.493 M), where the same block walked by a compiled loop (for targets without
   assembly) had measured 3.7% more. The clamps to the clip columns take at most 1.8% of the M4's frame
   (measured without them), but a copy of the row loop without them for triangles within
   the columns measured 0.7% more on the M4 and 12% more on the M0, 750 to 780 bytes more. An
@@ -245,10 +253,15 @@ $stages
   the numerator allows; the exact Q1.44 plane, two divisions with 64-bit quotients, only for
   the triangles the walk does not take: a vertex at the far plane, a step beyond 32 bits)
   and three edge steppers (two
-  divisions each), then flat shading: the face normal (a cross product of 32-bit edges; on
-  32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4 since its edges divide,
-  0.7% of its frame; on x86-64 1% more; taken as it is, within ±2³¹, where it was halved
-  from 2³⁰ on: the M4 1.3%, the M0 0.2%) and Lambert against the lights (grey
+  divisions each; neither the area, which the pipeline never draws at zero, nor the clip
+  rectangle, empty of spans when it has no rows or columns, tested there: x86-64's frame
+  0.9%, the M4's 0.5%, the M0's 0.3%; on the M0 quotients below 16, not 8, found by
+  subtraction before a library division: 0.3%), then flat shading: the face normal (a cross
+  product of 32-bit edges; on 32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4
+  since its edges divide, 0.7% of its frame; on x86-64 1% more; taken as it is, within
+  ±2³¹, where it was halved from 2³⁰ on: the M4 1.3%, the M0 0.2%; untested where every
+  edge of the mesh lies within ±(2¹⁵ − 1), \`Mesh::edge_extent\`, found with its index
+  check: the M4 0.45%, the M0 0.3%) and Lambert against the lights (grey
   ones: one sum for the three channels, in a 32-bit word when every channel lies in [0, 1]
   (\`Lighting::in_words\`: each term below 2¹⁷, the sum below 2³¹; the M0's frame 0.4%
   fewer instructions than in 64 bits, the M4's and x86-64's 0.3%); at most N of them, which
@@ -315,13 +328,13 @@ $stages
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 57% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.45 M, the rest about 1.03 M). The largest excess found is per drawn triangle: on
-  the M4 about 715 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.68 M, about 60 of them the \`asm\` row loop's set-up)
+  rows, 58% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.44 M, the rest about 0.98 M). The largest excess found is per drawn triangle: on
+  the M4 about 625 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  with the edge set-ups in line, 0.60 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
-  dozens of pieces of 5 to 25 instructions: about 0.38 M. The M4's rows and pixels are already hand-written (the \`asm\`
+  dozens of pieces of 5 to 25 instructions: about 0.29 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   25 a row against about 49), and so are the M0's (Thumb-1: 28 a row against about 60, 9 a
