@@ -99,8 +99,9 @@ pub trait RasterTarget {
 pub struct ColorDepth<'t, 'a, C, D, Q = Nearest, T = Less, K = Counted> {
     color: &'t mut FrameBuffer<'a, C>,
     depth: &'t mut DepthBuffer<'a, D>,
-    /// The frame's pixels the buffers hold (rows from the band's first, every column), found
-    /// once here rather than for each triangle.
+    /// The frame's pixels the buffers hold (rows from the band's first, every column: the row
+    /// loops in assembly clamp spans to the buffers' columns), found once here rather than for
+    /// each triangle.
     clip: PixelRect,
     test: T,
     quantize: Q,
@@ -278,7 +279,6 @@ where
         let colors = self.color.cells_all_mut();
         asm_rows::solid_rows::<C, T, K, _>(
             rows,
-            (self.clip.x0, self.clip.x1),
             walk,
             colors,
             depths,
@@ -468,5 +468,29 @@ where
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics::pixelcolor::Rgb565;
+
+    use super::*;
+
+    /// A `ColorDepth`'s clip rectangle spans every column of its buffers, the columns the row
+    /// loops in assembly clamp spans to, for a whole frame and for a band.
+    #[test]
+    fn r6_color_depth_clips_to_its_buffers_columns() {
+        for (w, h, first) in [(1, 1, 0), (320, 16, 32), (7, 3, 1000)] {
+            let mut c = std::vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+            let mut d = std::vec![0u16; (w * h) as usize];
+            let mut color = FrameBuffer::new(&mut c, w, h).unwrap_or_else(|e| panic!("{e:?}"));
+            let mut depth = DepthBuffer::new(&mut d, w, h).unwrap_or_else(|e| panic!("{e:?}"));
+            let frame = ColorDepth::new(&mut color, &mut depth).map(|t| t.clip());
+            assert_eq!(frame, Ok(PixelRect::new(0, 0, w as i32, h as i32)));
+            let band = ColorDepth::band(&mut color, &mut depth, first).map(|t| t.clip());
+            let rows = first as i32..(first + h) as i32;
+            assert_eq!(band, Ok(PixelRect::new(0, rows.start, w as i32, rows.end)));
+        }
     }
 }
