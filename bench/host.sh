@@ -139,8 +139,8 @@ $stages
   fragment, six one that loses, and a span of odd length takes its first pixel apart, four
   more (its frame 1% fewer instructions than one pixel a turn; the torus' spans are 4.8
   pixels long on average; on Cortex-M a second pixel's cells need two more registers, which
-  the row loop does not have, or an index step of its own, which costs as much as it saves). A target that counts fragments (the default,
-  for \`Stats\`) adds each span's length and counts the fragments that fail, one count
+  the row loop does not have, or an index step of its own, which costs as much as it saves).
+  A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.2% fewer
@@ -196,8 +196,10 @@ $stages
   edge set up beforehand and copied over its side by the loop. The three edges are set up
   from the triangle's rows (\`TriangleRows::runs\`) as the block is built, where they were
   first the spans' edges, copied in after (that cost x86-64 1.9% of its frame, the M0 0.8%,
-  the M4 0.3%). Its set-up (the edges copied
-  into the block, the buffers' cells checked once a triangle) costs about 60 instructions a
+  the M4 0.3%). Its set-up (the edges copied into the block, the buffers' cells checked once
+  a triangle, by one product, the end row's: the M4 0.35%, the M0 0.1%, x86-64 0.27% more;
+  the clip's columns not compared with the buffers', which a \`ColorDepth\`'s always span:
+  x86-64 0.6%, the M4 0.2%, the M0 0.17%) costs about 60 instructions a
   triangle more than the compiled loop's (\`profile.py\`), where a triangle's 8 rows save
   about 20 each: the frame 3.9% fewer instructions (1.722 M → 1.655 M), about 500 bytes
   more flash. Made of two runs a triangle, each set up apart, it saved 1.5%. (In the stage
@@ -231,8 +233,8 @@ $stages
   rows in assembly too (src/target/x86_64.rs), from the Cortex-M loops' block and set-up:
   both edges' walks stay in registers (their steps in the block), 16 instructions a row, 6
   to enter a span, 7 a fragment and 2 more a write (now 5 and 2, and 2 for each two
-  pixels): the frame 10% fewer instructions (1.660 M → 1.493 M), where the same block walked by a compiled loop (for targets without
-  assembly) had measured 3.7% more. The clamps to the clip columns take at most 1.8% of the M4's frame
+  pixels): the frame 10% fewer instructions (1.660 M → 1.493 M), where the same block
+  walked by a compiled loop (for targets without assembly) had measured 3.7% more. The clamps to the clip columns take at most 1.8% of the M4's frame
   (measured without them), but a copy of the row loop without them for triangles within
   the columns measured 0.7% more on the M4 and 12% more on the M0, 750 to 780 bytes more. An
   earlier fixed-point walk for small triangles only (exact while rows × 16 × height ≤ 2¹⁶,
