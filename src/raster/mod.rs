@@ -219,7 +219,7 @@ pub(crate) fn floor_divmod(n: i64, d: i64) -> (i64, i64) {
         i32::try_from(n),
         i32::try_from(d),
     ) {
-        let (q, r) = floor_divmod32(n32, d32);
+        let (q, r) = floor_divmod32::<SHORT_QUOTIENT>(n32, d32);
         return (q as i64, r as i64);
     }
     let (q, r) = (n / d, n % d);
@@ -244,19 +244,23 @@ fn small_floor_divmod(n: i64, d: i64) -> Option<(i64, i64)> {
     }
 }
 
-/// Quotients [`small_floor_divmod32`] finds by subtraction: up to this many subtractions (six
-/// instructions each) cost less than a library division (on Cortex-M0 a hundred or more, and
-/// its call). With 16 rather than 8 the M0's frame takes 0.3% fewer instructions (with 32, 0.35%,
-/// where an edge as flat as that costs up to 200 instructions more before the division).
-const SHORT_QUOTIENT: i32 = 16;
+/// Quotients [`small_floor_divmod32`] finds by subtraction before a library division, for lines:
+/// up to this many subtractions (six instructions each) cost less than the division (on
+/// Cortex-M0 a hundred or more, and its call).
+const SHORT_QUOTIENT: i32 = 8;
 
-/// [`floor_divmod`] of 32-bit operands (`d > 0`) for quotients in
-/// `[−SHORT_QUOTIENT, SHORT_QUOTIENT)` (shallow edges), by repeated subtraction; `None`
-/// otherwise.
+/// [`SHORT_QUOTIENT`] for a triangle's edges, whose quotients are the pixels a row steps and the
+/// first row's offset: with 16 the M0's reference frame takes 0.3% fewer instructions (32:
+/// 0.35%, where an edge as flat as that costs up to 200 instructions more before the
+/// division); for lines, many of them flatter, 16 cost the `wire` preset 2.5%.
+const EDGE_SHORT_QUOTIENT: i32 = 16;
+
+/// [`floor_divmod`] of 32-bit operands (`d > 0`) for quotients in `[−SHORT, SHORT)` (shallow
+/// edges), by repeated subtraction; `None` otherwise.
 #[inline(always)]
-fn small_floor_divmod32(n: i32, d: i32) -> Option<(i32, i32)> {
+fn small_floor_divmod32<const SHORT: i32>(n: i32, d: i32) -> Option<(i32, i32)> {
     let (mut q, mut r) = (0i32, n);
-    for _ in 0..SHORT_QUOTIENT {
+    for _ in 0..SHORT {
         if r < 0 {
             // r < 0 < d: no overflow.
             r = r.wrapping_add(d);
@@ -275,11 +279,12 @@ fn small_floor_divmod32(n: i32, d: i32) -> Option<(i32, i32)> {
     None
 }
 
-/// [`floor_divmod`] of 32-bit operands (`d > 0`).
+/// [`floor_divmod`] of 32-bit operands (`d > 0`), quotients in `[−SHORT, SHORT)` found by
+/// subtraction where division is a library routine.
 #[inline]
-fn floor_divmod32(n: i32, d: i32) -> (i32, i32) {
+fn floor_divmod32<const SHORT: i32>(n: i32, d: i32) -> (i32, i32) {
     if NARROW_CORE {
-        if let Some(qr) = small_floor_divmod32(n, d) {
+        if let Some(qr) = small_floor_divmod32::<SHORT>(n, d) {
             return qr;
         }
     }
@@ -358,7 +363,7 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
     )]
     pub(crate) fn new32(n0: i32, den: i32, step: i32) -> Self {
         let den = den.max(1);
-        let (q, r) = floor_divmod32(n0, den);
+        let (q, r) = floor_divmod32::<EDGE_SHORT_QUOTIENT>(n0, den);
         Self::from_quotient(q, r, den, step)
     }
 
@@ -370,8 +375,13 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
         } else {
             (q, r)
         };
-        // For ceil the step subtracts from rem (rem = qD − N), for floor it adds.
-        let (step_q, step_r) = floor_divmod32(step, den);
+        // For ceil the step subtracts from rem (rem = qD − N), for floor it adds. Ceiling
+        // walks are a triangle's edges, floor walks lines.
+        let (step_q, step_r) = if CEIL {
+            floor_divmod32::<EDGE_SHORT_QUOTIENT>(step, den)
+        } else {
+            floor_divmod32::<SHORT_QUOTIENT>(step, den)
+        };
         RationalStepper {
             value,
             rem,
@@ -710,13 +720,19 @@ mod tests {
             }
             if let (Ok(n), Ok(d)) = (i32::try_from(n), i32::try_from(d)) {
                 let expected = (n.div_euclid(d), n.rem_euclid(d));
-                match small_floor_divmod32(n, d) {
-                    Some(qr) => assert_eq!(qr, expected, "{n} / {d}"),
-                    None => assert!(
-                        !(-SHORT_QUOTIENT..SHORT_QUOTIENT).contains(&expected.0),
-                        "{n} / {d}"
+                for (found, short) in [
+                    (small_floor_divmod32::<SHORT_QUOTIENT>(n, d), SHORT_QUOTIENT),
+                    (
+                        small_floor_divmod32::<EDGE_SHORT_QUOTIENT>(n, d),
+                        EDGE_SHORT_QUOTIENT,
                     ),
+                ] {
+                    match found {
+                        Some(qr) => assert_eq!(qr, expected, "{n} / {d}"),
+                        None => assert!(!(-short..short).contains(&expected.0), "{n} / {d}"),
+                    }
                 }
+                assert_eq!(floor_divmod32::<SHORT_QUOTIENT>(n, d), expected);
             }
         }
     }
