@@ -143,10 +143,10 @@ $stages
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.2% fewer
-  instructions per frame (5.0% with the \`asm\` loops, which then need no count either), the
-  M0 2.4% (2.0% with its \`asm\` loop), x86-64 1.7% (the counts hold registers in the row
-  loop; 2.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.3% fewer
+  instructions per frame (4.6% with the \`asm\` loops, which then need no count either), the
+  M0 2.8% (2.1% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
+  loop; 3.3% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -257,8 +257,9 @@ $stages
   and three edge steppers (two
   divisions each; neither the area, which the pipeline never draws at zero, nor the clip
   rectangle, empty of spans when it has no rows or columns, tested there: x86-64's frame
-  0.9%, the M4's 0.5%, the M0's 0.3%; on the M0 quotients below 16, not 8, found by
-  subtraction before a library division: 0.3%), then flat shading: the face normal (a cross
+  0.9%, the M4's 0.5%, the M0's 0.3%; on the M0 an edge's quotients below 16, not 8, found
+  by subtraction before a library division: 0.3%, where the flatter lines of a wireframe
+  keep 8: 16 cost the \`wire\` preset 2.5%), then flat shading: the face normal (a cross
   product of 32-bit edges; on 32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4
   since its edges divide, 0.7% of its frame; on x86-64 1% more; taken as it is, within
   ±2³¹, where it was halved from 2³⁰ on: the M4 1.3%, the M0 0.2%; untested where every
