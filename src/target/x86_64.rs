@@ -188,7 +188,8 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) 
     // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row`
     //   (`cptr` steps by a row's bytes, `stride`). A row's span is clamped to x0 ≥ 0 and
     //   x1 ≤ width, and touched only where x0 < x1: the u16s at c + 2i and d + 2i for i from
-    //   x0 − x1 to −1, with c the address of the row's cell x1 and d = c + delta the same
+    //   x0 − x1 to −1 (a turn of two pixels takes i and i + 1 only while i + 2 ≤ 0, the count
+    //   left being even), with c the address of the row's cell x1 and d = c + delta the same
     //   cell of the depth cells: cells k·width + x for x0 ≤ x < x1, below rows·width, which
     //   the caller holds mutably. It also reads `block` (borrowed mutably), and writes the
     //   lower edge's step over that of the edge at `slot` (0 or one edge's size), `end` and,
@@ -196,7 +197,8 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) 
     // - Values: a depth cell gets a u16, a colour cell `bits`' two low bytes, those of a
     //   valid colour unchanged; an edge's step a valid edge's step (any u64 is one), `end`
     //   the address `last`, the counts u32s.
-    // - Termination: each row ends with i rising by one to 0 from x0 − x1 ≥ −width. `cptr`
+    // - Termination: each row ends with i rising to 0 from x0 − x1 ≥ −width, by one for a
+    //   span of odd length and then by two, so that it meets 0 exactly. `cptr`
     //   rises by `stride` > 0 a row from the first cell: it meets `end` after `upper` ≥ 1
     //   rows; unless that is `last` (upper = rows), `end` becomes `last`, which it meets
     //   after the other rows ≥ 1.
