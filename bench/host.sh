@@ -331,8 +331,8 @@ $stages
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 58% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.44 M, the rest about 0.98 M). The largest excess found is per drawn triangle: on
+  rows, 59% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.44 M, the rest about 0.97 M). The largest excess found is per drawn triangle: on
   the M4 about 625 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
   with the edge set-ups in line, 0.60 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a

@@ -320,7 +320,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             base: setup.object.color,
             positions: setup.object.mesh.positions(),
             indices: tri,
-            extent: (setup.object.mesh.extent(), setup.object.mesh.edge_extent()),
+            extents: (setup.object.mesh.extent(), setup.object.mesh.edge_extent()),
             normal_matrix,
             normalize: self.frame.precision.normalize(),
             vertices: &v,

@@ -38,7 +38,7 @@ pub struct FaceInputs<'a> {
     pub(crate) indices: &'a Triangle,
     /// The mesh's largest coordinate magnitude and largest edge component (raw Q16.16, see
     /// [`Mesh::edge_extent`](crate::mesh::Mesh)).
-    pub(crate) extent: (u32, u32),
+    pub(crate) extents: (u32, u32),
     /// World-from-model normal matrix (cofactor, raw Q16.16); `None` when the lighting is
     /// already in model space.
     pub(crate) normal_matrix: Option<&'a [[i32; 3]; 3]>,
@@ -148,7 +148,7 @@ impl Shading for Flat {
             face.model(),
             face.normal_matrix,
             face.normalize,
-            face.extent,
+            face.extents,
             lighting,
         ))
     }

@@ -77,8 +77,9 @@ const _: () = {
 /// [`color_bits`] gave as `bits`, clipped to the columns `0..width` (those of a
 /// [`ColorDepth`](super::ColorDepth)'s clip rectangle, always its buffers': not compared here,
 /// x86-64's frame 0.6% fewer instructions, the Cortex-M4's 0.2%, the M0's 0.17%), into u16
-/// depth and colour buffers of `width` pixels a row holding frame rows from `first_row`, its depths from the walk `depth` (every value in [0, 2³¹), see
-/// `DepthFormat::unclamped`): what the span loop over
+/// depth and colour buffers of `width` pixels a row holding frame rows from `first_row`, its
+/// depths from the walk `depth` (every value in [0, 2³¹), see `DepthFormat::unclamped`): what
+/// the span loop over
 /// [`for_each_row`](crate::raster::TriangleSpans::for_each_row) does, the counts into `stats`
 /// when `K` counts, with the whole row loop in assembly. False, with nothing drawn, where
 /// `width` is 0 or the edges would be set up again on the way down (neither happens to the

@@ -64,8 +64,6 @@ impl ScreenTriangle {
 pub trait RasterTarget {
     /// The error a write can return.
     type Error;
-    /// True when spans need depth (the filler skips depth set-up otherwise).
-    const DEPTH: bool;
     /// The frame pixels this target receives (frame coordinates).
     fn clip(&self) -> PixelRect;
     /// Fills one triangle (per-triangle set-up happens here once, not per row).
@@ -350,7 +348,6 @@ where
     K: FragmentCount,
 {
     type Error = core::convert::Infallible;
-    const DEPTH: bool = true;
 
     fn clip(&self) -> PixelRect {
         self.clip
@@ -432,7 +429,6 @@ where
     Q: Quantize<T::Color>,
 {
     type Error = T::Error;
-    const DEPTH: bool = false;
 
     fn clip(&self) -> PixelRect {
         PixelRect::from_rectangle(&self.target.bounding_box())
