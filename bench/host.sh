@@ -212,7 +212,7 @@ $stages
   and lr and keeps the step along a row, the colour, the depth walk, the row's address, the
   width and the block's address there. It walks the same exact edges from the same kind of
   block, each edge's five words loaded by one \`ldm\` (1.3% of the frame against a load a
-  word): 28 instructions a row (2 more when an edge's remainder borrows) and 10 to enter a
+  word): 27 instructions a row (2 more when an edge's remainder borrows) and 10 to enter a
   span, against about 60 for the compiled row loop; its pixel loop 9 instructions (7 for a
   fragment that loses) against the compiler's 10, the colour moved into a low register for
   each span (0.4%). The M0's frame 5.1% fewer instructions (3.536 M → 3.357 M), 510 bytes
@@ -340,7 +340,7 @@ $stages
   dozens of pieces of 5 to 25 instructions: about 0.29 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
-  25 a row against about 49), and so are the M0's (Thumb-1: 28 a row against about 60, 9 a
+  25 a row against about 49), and so are the M0's (Thumb-1: 27 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
   stage (0.69 M, about 590
   a vertex, of which the transform takes about 200 and the divisions by w about 155) and the depth
