@@ -144,7 +144,7 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.3% fewer
-  instructions per frame (4.6% with the \`asm\` loops, which then need no count either), the
+  instructions per frame (4.3% with the \`asm\` loops too, which then need no count either), the
   M0 2.8% (2.1% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
   loop; 3.3% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
@@ -333,11 +333,11 @@ $stages
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 59% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
   about 0.44 M, the rest about 0.97 M). The largest excess found is per drawn triangle: on
-  the M4 about 625 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  with the edge set-ups in line, 0.60 M, about 60 of them the \`asm\` row loop's set-up)
+  the M4 about 675 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.65 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
-  dozens of pieces of 5 to 25 instructions: about 0.29 M. The M4's rows and pixels are already hand-written (the \`asm\`
+  dozens of pieces of 5 to 25 instructions: about 0.34 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   25 a row against about 49), and so are the M0's (Thumb-1: 27 a row against about 60, 9 a
@@ -348,7 +348,16 @@ $stages
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
   nothing) or a different scene (face normals kept in the mesh instead of computed every
-  frame).
+  frame). Two larger changes of the work itself were sized and left: skipping the
+  projection of vertices that only back faces use, found by a test in model space before
+  the vertex stage, needs a margin that snapping cannot cross; bounded once per frame
+  (the nearest and farthest w, the longest edge on screen) it spares 441 of the torus'
+  1,152 vertices (606 are used only by back faces), about 4% of the M0's frame after a
+  test per triangle, nothing on the M4 or x86-64 (there the tests of a vertex's two
+  triangles cost as much as the projections they spare). And two pixels a turn on the M4 (the depth cell's address stepping by the load's
+  write-back, the colour's an offset from it, which frees the index register) saves a
+  pixel's loop step but costs each span three instructions of set-up and an entry by
+  parity: n − 3 fewer for a span of n, about 0.5% for the torus' spans of 4.8 pixels.
 - \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or \`thumbv7em-none-eabihf\`)
   lists the instructions by function and the library calls by the line that makes them, and
   \`ASM=fill_face\` prints a function's instructions with their counts.
