@@ -221,7 +221,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     } else {
                         &NO_COLORS
                     };
-                    self.fill_face(target, &setup, tri, v, colors, area, &mut stats)?;
+                    self.fill_face(target, &setup, tri, &v, colors, area, &mut stats)?;
                     continue;
                 }
                 if a.outcode & b.outcode & c.outcode != 0 {
@@ -276,7 +276,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 let area = area2(&[v[0].0, v[1].0, v[2].0]);
                 if kept(facing, area, stats) {
                     let colors = [first.2, v1.2, v2.2];
-                    self.fill_face(target, setup, tri, v, &colors, area, stats)?;
+                    self.fill_face(target, setup, tri, &v, &colors, area, stats)?;
                 }
             }
         }
@@ -297,20 +297,20 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         target: &mut T,
         setup: &ObjectSetup<'_, N>,
         tri: &Triangle,
-        v: [(ScreenPoint, i32); 3],
+        v: &[(ScreenPoint, i32); 3],
         colors: &[[i32; 3]; 3],
         area: i64,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         let clip = target.clip();
-        let p = map3(v, |v| v.0);
+        let p = map3(*v, |v| v.0);
         // Culling came first so that every band of a frame counts the same culled triangles.
         // A band skips shading the triangles of other bands; a whole frame has none to skip.
         let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
         if band && !rows_overlap(&p, &clip) {
             return Ok(());
         }
-        let z = map3(v, |v| v.1);
+        let z = map3(*v, |v| v.1);
         // Flat shading in model space where the model matrix allows it (see `in_model_space`).
         let (lighting, normal_matrix) = match &setup.model_lighting {
             Some(lighting) => (lighting, None),
@@ -323,7 +323,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             extents: (setup.object.mesh.extent(), setup.object.mesh.edge_extent()),
             normal_matrix,
             normalize: self.frame.precision.normalize(),
-            vertices: &v,
+            vertices: v,
             colors,
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
