@@ -7,9 +7,9 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::Pixel;
 
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
-use super::vertex::{project, ScreenMap};
+use super::vertex::{project, ScreenMap, GUARD};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
-use crate::math::{map3, Mat4};
+use crate::math::{map3, Mat4, NARROW_CORE};
 use crate::mesh::{Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
@@ -23,6 +23,34 @@ const NO_COLORS: [[i32; 3]; 3] = [[0; 3]; 3];
 #[inline]
 fn area2(p: &[ScreenPoint; 3]) -> i64 {
     crate::raster::doubled_area(p[0], p[1], p[2])
+}
+
+/// [`area2`] of a triangle whose vertices all lie inside every clip plane (outcode 0): each
+/// within `GUARD` sub-pixels of the screen centre (a rounded quotient of at most `GUARD`, whose
+/// every snapping step divides it: see `outcode_and_project`), so each side within
+/// ±2·`GUARD`, below 2¹⁵. On cores without a long multiply the cross product in words then
+/// needs no test of the sides, which `area2` makes (the Cortex-M0's frame 0.3% fewer
+/// instructions, the `wire` preset's 0.4%).
+#[inline(always)]
+fn inside_area2(p: &[ScreenPoint; 3]) -> i64 {
+    if NARROW_CORE {
+        short_sides_area2(p)
+    } else {
+        area2(p)
+    }
+}
+
+// Sides of at most 2·GUARD are short; a snapping step of up to 2⁴ sub-pixels divides GUARD.
+const _: () = assert!(2 * GUARD < 1 << 15 && GUARD % 16 == 0);
+
+/// [`area2`] of sides within ±2¹⁵, in 32-bit words: products within ±2³⁰, their difference
+/// within ±2³¹ − 2¹⁵.
+#[inline(always)]
+fn short_sides_area2(p: &[ScreenPoint; 3]) -> i64 {
+    let [a, b, c] = *p;
+    let (ux, uy) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
+    let (vx, vy) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
+    ux.wrapping_mul(vy).wrapping_sub(vx.wrapping_mul(uy)) as i64
 }
 
 /// True when culling keeps a triangle of this signed area (non-zero).
@@ -214,7 +242,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 if inside || a.outcode | b.outcode | c.outcode == 0 {
                     // Culled before anything else is gathered: half the triangles of a closed
                     // mesh end here.
-                    let area = area2(&[a.point(), b.point(), c.point()]);
+                    let area = inside_area2(&[a.point(), b.point(), c.point()]);
                     if !kept(cull, area, &mut stats) {
                         continue;
                     }
@@ -415,7 +443,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 // Inside every plane first (the usual case), then outside one of them.
                 let planes = a.outcode | b.outcode | c.outcode;
                 let area = if planes == 0 {
-                    area2(&[a.point(), b.point(), c.point()])
+                    inside_area2(&[a.point(), b.point(), c.point()])
                 } else if a.outcode & b.outcode & c.outcode != 0 {
                     bump(&mut stats.outside);
                     continue;
@@ -480,6 +508,36 @@ mod tests {
     use crate::scene::{LightColor, Scene};
     use crate::shade::Flat;
     use crate::target::{ColorDepth, DepthBuffer, FrameBuffer};
+
+    /// The cross product in words of triangles whose vertices lie within `GUARD` of a screen
+    /// centre (every vertex inside every clip plane) is the exact doubled area: at random
+    /// and at the band's corners, whose sides are the longest (2·`GUARD`).
+    #[test]
+    fn inside_triangles_take_their_area_in_words() {
+        let g = GUARD as i32;
+        let centre = ScreenPoint::new(2560, 1920);
+        let at = |x: i32, y: i32| ScreenPoint::new(centre.x + x, centre.y + y);
+        let corners = [at(-g, -g), at(g, -g), at(g, g), at(-g, g)];
+        let mut triangles = vec::Vec::new();
+        for a in corners {
+            for b in corners {
+                for c in corners {
+                    triangles.push([a, b, c]);
+                }
+            }
+        }
+        let mut rng = crate::testing::XorShift(0x5DEE_CE66_D1CE_4E5Bu64);
+        for _ in 0..100_000 {
+            let mut point = || {
+                let mut coordinate = || (rng.next_u64() % (2 * g as u64 + 1)) as i32 - g;
+                at(coordinate(), coordinate())
+            };
+            triangles.push([point(), point(), point()]);
+        }
+        for p in triangles {
+            assert_eq!(short_sides_area2(&p), area2(&p), "{p:?}");
+        }
+    }
 
     /// The frame's pixels and statistics, drawn into fresh 64x48 buffers.
     fn drawn(p: &Prepared<'_, '_, 1, Flat>) -> (Stats, vec::Vec<Rgb565>) {

@@ -62,7 +62,7 @@ pub(crate) const PLANES: u32 = 6;
 
 /// Half the guard band in sub-pixels around the screen centre: projected coordinates within it
 /// stay below 2¹⁵ in magnitude (the attribute set-up's bound) for viewports up to 2048 pixels.
-const GUARD: i64 = (1 << 14) - 16;
+pub(super) const GUARD: i64 = (1 << 14) - 16;
 // The band around the farthest screen centre (a 2048-pixel viewport's) ends at the bound the
 // rasteriser relies on.
 const _: () = assert!((1 << 14) + GUARD == PIPELINE_LIMIT as i64);
@@ -366,5 +366,38 @@ mod tests {
         }
         // Offsets reach the guard band's edge (GUARD: 16368 sub-pixels).
         assert!(inside > 40_000 && widest > 16_300, "{inside} {widest}");
+    }
+
+    /// A vertex inside every plane lies within `GUARD` sub-pixels of the screen centre at every
+    /// snapping (the triangle walk's area in words relies on it), out to that edge.
+    #[test]
+    fn inside_vertices_lie_within_the_guard_band_at_every_snapping() {
+        let viewport = Viewport::new(320, 240).unwrap_or_else(|_| unreachable!());
+        let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
+        for bits in 0..=4 {
+            let map = ScreenMap::new(&viewport, &Precision::DEFAULT.with_subpixel_bits(bits));
+            let mut widest = 0;
+            for i in 0..50_000u32 {
+                let w = (rng.next_u64() >> (34 + i % 30)) as i64 + 1;
+                let mut coordinate = |range: i64| {
+                    let x = rng.next_u64() as i64;
+                    x.rem_euclid(2 * range + 1) - range
+                };
+                // Out to the guard band and past it (GUARD over half the viewport: 12.8w, 17.05w).
+                let c = [
+                    coordinate(w * 13),
+                    coordinate(w * 18),
+                    coordinate(w).abs(),
+                    w,
+                ];
+                let (code, p, _) = outcode_and_project(c, &map, false);
+                if code == 0 {
+                    let offset = (p.x - 2560).abs().max((p.y - 1920).abs()) as i64;
+                    assert!(offset <= GUARD, "{bits} {c:?} {p:?}");
+                    widest = widest.max(offset);
+                }
+            }
+            assert!(widest > GUARD - 64, "{bits} {widest}");
+        }
     }
 }
