@@ -376,10 +376,17 @@ impl<W: LoopWord> RoundedRows<W> {
     /// The walk of the plane through `(p[i], z[i])` (depths in Q1.30, at most 2³⁰; `area` the
     /// doubled signed area, non-zero; coordinates within the pipeline's range) on row `y`,
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
-    /// nearly edge-on, which the general loop takes).
+    /// nearly edge-on, which the general loop takes). `short`: every side known to lie within
+    /// ±2¹⁵ (see [`Plane::numerators_of`]).
     #[inline]
-    pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
-        let (nx, ny) = Plane::numerators(p, z);
+    pub(crate) fn new(
+        p: &[ScreenPoint; 3],
+        z: [i32; 3],
+        area: i64,
+        y: i32,
+        short: bool,
+    ) -> Option<(Self, i32)> {
+        let (nx, ny) = Plane::numerators_of(p, z, short);
         let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
         // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area. Without a
         // divide instruction (Cortex-M0), for the usual triangle (a doubled area below 2²⁹,
@@ -603,9 +610,9 @@ mod tests {
             let spans = triangle_spans(p, clip);
             let y0 = spans.row();
             let (Some((mut narrow, st)), Some((mut wide, _)), Some((mut early, _))) = (
-                RoundedRows::<i32>::new(&p, z, area, y0),
-                RoundedRows::<i64>::new(&p, z, area, y0),
-                RoundedRows::<i32>::new(&p, z, area, y0 - 7),
+                RoundedRows::<i32>::new(&p, z, area, y0, false),
+                RoundedRows::<i64>::new(&p, z, area, y0, false),
+                RoundedRows::<i32>::new(&p, z, area, y0 - 7, false),
             ) else {
                 continue;
             };
