@@ -145,7 +145,7 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.3% fewer
   instructions per frame (4.3% with the \`asm\` loops too, which then need no count either), the
-  M0 2.8% (2.1% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
+  M0 2.9% (1.9% with its \`asm\` loop), x86-64 3.2% (the counts hold registers in the row
   loop; 3.3% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
@@ -331,8 +331,8 @@ $stages
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 59% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.44 M, the rest about 0.97 M). The largest excess found is per drawn triangle: on
+  rows, 60% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.44 M, the rest about 0.96 M). The largest excess found is per drawn triangle: on
   the M4 about 675 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
   and the edge set-ups it calls, 0.65 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
