@@ -289,6 +289,12 @@ fn face_direction(
             return n;
         }
     }
+    // On x86-64 too for such a mesh, where no edge needs a test: the frame 0.4% fewer
+    // instructions than the 64-bit product and its shift (tested here first, the 32-bit
+    // cores' frames measured 0.1% and 0.3% more).
+    if cfg!(target_pointer_width = "64") && normal_matrix.is_none() && edge_extent < 1 << 15 {
+        return cross_in_words(u, v);
+    }
     // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
     let n = cross_wide(u, v);
     let n = match normal_matrix {
