@@ -332,7 +332,7 @@ $stages
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 60% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.44 M, the rest about 0.96 M). The largest excess found is per drawn triangle: on
+  about 0.44 M, the rest about 0.95 M). The largest excess found is per drawn triangle: on
   the M4 about 675 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
   and the edge set-ups it calls, 0.65 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
