@@ -567,7 +567,7 @@ mod tests {
     /// An object whose every vertex lies inside every clip plane is marked so by `prepare`,
     /// and the triangle walk reads none of its outcodes; an object across the near plane is
     /// not marked, and is clipped. With every mark cleared (each triangle's outcodes read),
-    /// the frame and its statistics are the same.
+    /// the frame and its statistics are the same. Of 70 objects, the first 64 are marked.
     #[test]
     fn objects_inside_every_plane_skip_their_outcodes() {
         let viewport = Viewport::new(64, 48).unwrap_or_else(|_| unreachable!());
@@ -605,6 +605,21 @@ mod tests {
             ..prepared
         };
         assert!(marked.0.clipped > 0 && marked.0.drawn > 0, "{:?}", marked.0);
+        assert!(marked == drawn(&unmarked));
+        // Only the first 64 objects have a bit: the others read their outcodes.
+        let many = [Object::new(&CUBE, Mat4::IDENTITY, Rgb888::WHITE); 70];
+        let scene = Scene::new(&many, Lighting::new(LightColor::gray(Scalar::from_num(1))));
+        let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
+        let prepared = frame.prepare(&scene, &mut cache, Flat);
+        let prepared = prepared.unwrap_or_else(|_| unreachable!());
+        assert_eq!(prepared.inside, u64::MAX);
+        assert_eq!(prepared.objects().filter(|o| o.inside).count(), 64);
+        let marked = drawn(&prepared);
+        assert_eq!(marked.0.primitives, 70 * 12);
+        let unmarked = Prepared {
+            inside: 0,
+            ..prepared
+        };
         assert!(marked == drawn(&unmarked));
     }
 }
