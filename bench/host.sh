@@ -143,10 +143,10 @@ $stages
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.3% fewer
-  instructions per frame (4.3% with the \`asm\` loops too, which then need no count either), the
-  M0 2.9% (1.9% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
-  loop; 2.6% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.8% fewer
+  instructions per frame (4.5% with the \`asm\` loops, which then need no count either), the
+  M0 3.0% (1.9% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
+  loop; 2.4% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -329,8 +329,8 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
-  0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+- **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
+  0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 60% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
   about 0.44 M, the rest about 0.95 M). The largest excess found is per drawn triangle: on
   the M4 about 675 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`

@@ -107,9 +107,9 @@ CUTS = [
     )]),
     ("triangle walk (fetch, trivial reject, culling)", "vertex stage and walk", [(
         "src/pipeline/draw.rs",
-        "        let clip = target.clip();\n        let p = map3(*v, |v| v.0);",
+        "        let p = map3(*v, |v| v.0);\n        // Culling came first",
         f"        if {BB}(true) {{ return Ok(()); }}\n"
-        "        let clip = target.clip();\n        let p = map3(*v, |v| v.0);",
+        "        let p = map3(*v, |v| v.0);\n        // Culling came first",
     )]),
     ("vertex stage (and the frame's camera and model matrix)", "vertex stage", [(
         "src/pipeline/draw.rs",
