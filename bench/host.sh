@@ -333,8 +333,8 @@ $stages
   0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 60% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
   about 0.44 M, the rest about 0.95 M). The largest excess found is per drawn triangle: on
-  the M4 about 675 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.65 M, about 60 of them the \`asm\` row loop's set-up)
+  the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.64 M, about 60 of them the \`asm\` row loop's set-up)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
   dozens of pieces of 5 to 25 instructions: about 0.34 M. The M4's rows and pixels are already hand-written (the \`asm\`
