@@ -23,8 +23,8 @@ pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
 pub(crate) use scalar::{
-    below_bits, is_short, magnitude_bits, map3, mul_short, mul_wide, narrow_cross, shr_round,
-    DEPTH_ONE, NARROW_CORE, UNIT_ONE,
+    below_bits, is_short, magnitude_bits, map3, mul_short, mul_wide, narrow_cross,
+    short_sides_cross, shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 
 pub(crate) use divide::{div_round, DivideBy, ShortQuotients};

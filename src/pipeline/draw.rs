@@ -7,7 +7,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::Pixel;
 
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
-use super::vertex::{project, ScreenMap, GUARD};
+use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::math::{map3, Mat4, NARROW_CORE};
 use crate::mesh::{Object, Triangle};
@@ -34,23 +34,10 @@ fn area2(p: &[ScreenPoint; 3]) -> i64 {
 #[inline(always)]
 fn inside_area2(p: &[ScreenPoint; 3]) -> i64 {
     if NARROW_CORE {
-        short_sides_area2(p)
+        crate::raster::short_sides_area(p[0], p[1], p[2])
     } else {
         area2(p)
     }
-}
-
-// Sides of at most 2·GUARD are short; a snapping step of up to 2⁴ sub-pixels divides GUARD.
-const _: () = assert!(2 * GUARD < 1 << 15 && GUARD % 16 == 0);
-
-/// [`area2`] of sides within ±2¹⁵, in 32-bit words: products within ±2³⁰, their difference
-/// within ±2³¹ − 2¹⁵.
-#[inline(always)]
-fn short_sides_area2(p: &[ScreenPoint; 3]) -> i64 {
-    let [a, b, c] = *p;
-    let (ux, uy) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
-    let (vx, vy) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
-    ux.wrapping_mul(vy).wrapping_sub(vx.wrapping_mul(uy)) as i64
 }
 
 /// True when culling keeps a triangle of this signed area (non-zero).
@@ -155,12 +142,12 @@ fn fill<T: RasterTarget, P: Paint>(
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
-    short: bool,
+    short_sides: bool,
     paint: &P,
     stats: &mut Stats,
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
-    target.fill_triangle(&ScreenTriangle::new(p, z, area, short), paint, stats)
+    target.fill_triangle(&ScreenTriangle::new(p, z, area, short_sides), paint, stats)
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
@@ -269,8 +256,17 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     // Every side short (see `inside_area2`): what only Cortex-M0 reads (false
                     // elsewhere, as from the clipper, so the compiler drops the argument: as
                     // true everywhere it cost the M4 0.13% of its frame).
-                    let short = NARROW_CORE;
-                    self.fill_face(target, &setup, tri, &v, colors, area, short, &mut stats)?;
+                    let short_sides = NARROW_CORE;
+                    self.fill_face(
+                        target,
+                        &setup,
+                        tri,
+                        &v,
+                        colors,
+                        area,
+                        short_sides,
+                        &mut stats,
+                    )?;
                     continue;
                 }
                 if a.outcode & b.outcode & c.outcode != 0 {
@@ -334,8 +330,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
 
     /// Shades and fills one screen triangle of `tri` (the whole triangle, or a piece of it after
     /// clipping), which culling kept: vertices are (snapped position, depth), `colors` their
-    /// lit colours (Gouraud), `area` its doubled signed area, `short` true only when every side
-    /// is known to lie within ±2¹⁵ (its vertices inside every clip plane).
+    /// lit colours (Gouraud), `area` its doubled signed area, `short_sides` true only when every
+    /// side is known to lie within ±2¹⁵ (its vertices inside every clip plane).
     // Not inlined: one call per triangle costs little and keeps the stage measurable. The
     // vertices' positions and colours come as two arguments: in one struct (by value or by
     // reference, with or without the area) they cost the Cortex-M4 0.05% to 0.3% more and
@@ -350,7 +346,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         v: &[(ScreenPoint, i32); 3],
         colors: &[[i32; 3]; 3],
         area: i64,
-        short: bool,
+        short_sides: bool,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         let p = map3(*v, |v| v.0);
@@ -380,14 +376,14 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
             let paint = self.shading.paint(&face, lighting);
-            fill(target, p, z, area, short, &paint, stats)
+            fill(target, p, z, area, short_sides, &paint, stats)
         } else {
             fill(
                 target,
                 p,
                 z,
                 area,
-                short,
+                short_sides,
                 &Flat.paint(&face, lighting),
                 stats,
             )
@@ -523,8 +519,10 @@ mod tests {
     use crate::camera::LookAt;
     use crate::math::{Angle, Scalar, Vec3};
     use crate::mesh::CUBE;
+    use crate::pipeline::vertex::GUARD;
     use crate::pipeline::Frame;
     use crate::projection::{Projection, Viewport};
+    use crate::raster::short_sides_area;
     use crate::scene::{LightColor, Scene};
     use crate::shade::Flat;
     use crate::target::{ColorDepth, DepthBuffer, FrameBuffer};
@@ -555,7 +553,7 @@ mod tests {
             triangles.push([point(), point(), point()]);
         }
         for p in triangles {
-            assert_eq!(short_sides_area2(&p), area2(&p), "{p:?}");
+            assert_eq!(short_sides_area(p[0], p[1], p[2]), area2(&p), "{p:?}");
         }
     }
 

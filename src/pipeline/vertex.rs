@@ -66,6 +66,10 @@ pub(super) const GUARD: i64 = (1 << 14) - 16;
 // The band around the farthest screen centre (a 2048-pixel viewport's) ends at the bound the
 // rasteriser relies on.
 const _: () = assert!((1 << 14) + GUARD == PIPELINE_LIMIT as i64);
+// Vertices inside every plane lie within GUARD of the screen centre at every snapping (each
+// snapping step, up to 2⁴ sub-pixels, divides GUARD), so two of them lie less than 2¹⁵ apart
+// on each axis: the triangle walk takes their sides as short (see `inside_area2`).
+const _: () = assert!(2 * GUARD < 1 << 15 && GUARD % 16 == 0);
 
 /// Viewport constants in sub-pixels.
 #[derive(Clone, Copy, Debug)]

@@ -34,7 +34,7 @@ pub(crate) use triangle::{EdgeWalk, Runs, TriangleRows};
 
 use embedded_graphics::primitives::Rectangle;
 
-use crate::math::{mul_wide, narrow_cross, NARROW_CORE, SUBPIXEL_SCALE};
+use crate::math::{mul_wide, narrow_cross, short_sides_cross, NARROW_CORE, SUBPIXEL_SCALE};
 
 /// The largest magnitude of a sub-pixel coordinate the rasterisers accept (2²⁴, a million
 /// pixels); anything further is rejected as a whole.
@@ -139,6 +139,15 @@ impl PixelRect {
     pub const fn contains(&self, x: i32, y: i32) -> bool {
         x >= self.x0 && x < self.x1 && y >= self.y0 && y < self.y1
     }
+}
+
+/// [`doubled_area`] of a triangle whose sides are known to lie within ±2¹⁵, in 32-bit words
+/// without testing them (which `doubled_area` does first on cores without a long multiply).
+#[inline(always)]
+pub(crate) fn short_sides_area(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i64 {
+    let (ux, uy) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
+    let (vx, vy) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
+    short_sides_cross(ux, uy, vx, vy)
 }
 
 /// Twice the signed area of triangle `a b c` (y down: negative when counter-clockwise on

@@ -50,16 +50,20 @@ impl Plane {
     /// exact, within ±2⁴⁷, from 32-bit differences and products.
     #[inline(always)]
     pub(crate) fn numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
-        Plane::numerators_of(p, v, false)
+        Plane::numerators_given(p, v, false)
     }
 
     /// [`numerators`](Self::numerators) of a triangle whose sides are known to lie within
-    /// ±2¹⁵ when `short` (its vertices inside every clip plane): on Cortex-M0 no side is
+    /// ±2¹⁵ when `short_sides` (its vertices inside every clip plane): on Cortex-M0 no side is
     /// tested before its two-multiply product.
     #[inline(always)]
-    pub(crate) fn numerators_of(p: &[ScreenPoint; 3], v: [i32; 3], short: bool) -> (i64, i64) {
+    pub(crate) fn numerators_given(
+        p: &[ScreenPoint; 3],
+        v: [i32; 3],
+        short_sides: bool,
+    ) -> (i64, i64) {
         const SUMS: bool = cfg!(all(target_pointer_width = "32", target_has_atomic = "32"));
-        Plane::numerators_as::<SUMS>(p, v, short)
+        Plane::numerators_as::<SUMS>(p, v, short_sides)
     }
 
     /// [`numerators`](Self::numerators) as differences of products, or with `SUMS` as sums of
@@ -71,7 +75,7 @@ impl Plane {
     fn numerators_as<const SUMS: bool>(
         p: &[ScreenPoint; 3],
         v: [i32; 3],
-        short: bool,
+        short_sides: bool,
     ) -> (i64, i64) {
         let [a, b, c] = *p;
         // Coordinates within ±2¹⁵ and values in [0, 2³⁰]: every difference fits i32.
@@ -81,7 +85,7 @@ impl Plane {
         // On Cortex-M0 a side within ±2¹⁵ (every side of an on-screen triangle) takes the
         // two-multiply product.
         let times = |v: i32, side: i32| {
-            if NARROW_CORE && (short || is_short(side)) {
+            if NARROW_CORE && (short_sides || is_short(side)) {
                 mul_short(v, side)
             } else {
                 mul_wide(v, side)

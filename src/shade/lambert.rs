@@ -275,10 +275,11 @@ fn face_direction(
     let (u, v) = (edge(b), edge(c));
     // Edges within ±2¹⁵ on 32-bit cores: the exact cross product in words (Cortex-M0, without
     // a long multiply: 1.1% of the frame; the M4 0.7% since its edges divide, 1.1% more
-    // before, when its pixel loop then reloaded two values per pixel; on x86-64 the 64-bit
-    // path: 1% fewer instructions). It lies within ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)`
-    // leaves it too: the same direction on every core. (Halving it from 2³⁰ on, as the normal
-    // matrix's path does, cost the M4 1.3% and the M0 0.2% of the frame.)
+    // before, when its pixel loop then reloaded two values per pixel; on x86-64, where each
+    // edge would be tested, the 64-bit path: 1% fewer instructions). It lies within
+    // ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)` leaves it too: the same direction on every
+    // core. (Halving it from 2³⁰ on, as the normal matrix's path does, cost the M4 1.3% and
+    // the M0 0.2% of the frame.)
     if cfg!(not(target_pointer_width = "64")) && normal_matrix.is_none() {
         // Every edge of the mesh within ±(2¹⁵ − 1), as the torus': no test of each (the
         // frame 0.45% fewer instructions on the Cortex-M4, 0.3% on the M0).

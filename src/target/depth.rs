@@ -376,17 +376,17 @@ impl<W: LoopWord> RoundedRows<W> {
     /// The walk of the plane through `(p[i], z[i])` (depths in Q1.30, at most 2³⁰; `area` the
     /// doubled signed area, non-zero; coordinates within the pipeline's range) on row `y`,
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
-    /// nearly edge-on, which the general loop takes). `short`: every side known to lie within
-    /// ±2¹⁵ (see [`Plane::numerators_of`]).
+    /// nearly edge-on, which the general loop takes). `short_sides`: every side known to lie
+    /// within ±2¹⁵ (see [`Plane::numerators_given`]).
     #[inline]
     pub(crate) fn new(
         p: &[ScreenPoint; 3],
         z: [i32; 3],
         area: i64,
         y: i32,
-        short: bool,
+        short_sides: bool,
     ) -> Option<(Self, i32)> {
-        let (nx, ny) = Plane::numerators_of(p, z, short);
+        let (nx, ny) = Plane::numerators_given(p, z, short_sides);
         let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
         // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area. Without a
         // divide instruction (Cortex-M0), for the usual triangle (a doubled area below 2²⁹,

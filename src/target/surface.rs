@@ -29,17 +29,22 @@ pub struct ScreenTriangle {
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
-    /// Every side within ±2¹⁵ (its vertices inside every clip plane).
-    short: bool,
+    /// Every side known to lie within ±2¹⁵ (its vertices inside every clip plane).
+    short_sides: bool,
 }
 
 impl ScreenTriangle {
     /// The triangle `p` with depths `z` (Q1.30, in [0, 2³⁰]; any for a target without depth)
-    /// and doubled signed area `area` (non-zero), within the pipeline's range; `short` when
-    /// every side is known to lie within ±2¹⁵ (its vertices inside every clip plane).
+    /// and doubled signed area `area` (non-zero), within the pipeline's range; `short_sides`
+    /// when every side is known to lie within ±2¹⁵ (its vertices inside every clip plane).
     #[inline(always)]
-    pub(crate) fn new(p: [ScreenPoint; 3], z: [i32; 3], area: i64, short: bool) -> Self {
-        ScreenTriangle { p, z, area, short }
+    pub(crate) fn new(p: [ScreenPoint; 3], z: [i32; 3], area: i64, short_sides: bool) -> Self {
+        ScreenTriangle {
+            p,
+            z,
+            area,
+            short_sides,
+        }
     }
 
     /// Its spans clipped to `clip` (see `spans_in_range`: within the pipeline's range, its
@@ -227,8 +232,8 @@ where
         // from a walk set up at the triangle's own vertex (see `RoundedRows`), so that a band
         // starts them as the whole frame does.
         let unclamped = if D::unclamped(triangle.max()) {
-            let (p, z, area, short) = (&triangle.p, triangle.z, triangle.area, triangle.short);
-            RoundedRows::<NativeWord>::new(p, z, area, y, short)
+            let (p, z, area) = (&triangle.p, triangle.z, triangle.area);
+            RoundedRows::<NativeWord>::new(p, z, area, y, triangle.short_sides)
         } else {
             None
         };
