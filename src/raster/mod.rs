@@ -27,10 +27,10 @@ mod triangle;
 
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
+pub(crate) use triangle::{columns_bound, EdgeWalk, Runs, TriangleRows};
 pub(crate) use triangle::{rows_in_range, spans_in_range};
 pub use triangle::{triangle_spans, Span, TriangleSpans};
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-pub(crate) use triangle::{EdgeWalk, Runs, TriangleRows};
 
 use embedded_graphics::primitives::Rectangle;
 

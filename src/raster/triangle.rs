@@ -275,6 +275,20 @@ impl TriangleRows {
         }
     }
 
+    /// True when every span end of these rows lies in `0..=width` before any clamp to the
+    /// columns (a target's row loop then needs none), for the `bound` of `width` columns
+    /// ([`columns_bound`]): when every vertex's x lies in `[−7, 16·width + 8]`. A row's span
+    /// ends are `ceil((x − 8) / 16)` of points on its edges (the exact values every edge walk
+    /// steps through), whose x lie between their edge's vertices', and the ceiling is
+    /// monotonic: from `ceil(−15 / 16) = 0` to `ceil(16·width / 16) = width`.
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
+    #[inline(always)]
+    pub(crate) fn within_columns(&self, bound: u32) -> bool {
+        let [a, b, c] = self.v;
+        let at = |x: i32| x.wrapping_add(7) as u32;
+        at(a.x).max(at(b.x)).max(at(c.x)) <= bound
+    }
+
     /// These rows for a target's own row loop, of a triangle within the pipeline's range
     /// (whose edges walk all its rows from one set-up on Cortex-M: `seed_rows` is `u32::MAX`):
     /// the left, right and lower short edges set up where the loop reads them, and the counts
@@ -335,6 +349,21 @@ impl TriangleRows {
             lower_is_left: !long_is_left,
         })
     }
+}
+
+/// The bound of [`TriangleRows::within_columns`] for `width` columns: one unsigned comparison a
+/// vertex, `x + 7 ≤ 16·width + 15` (a wrapped negative fails it). Widths from 2²⁷ on are taken
+/// as 2²⁷ − 1, which only tests more strictly, so that the bound stays below 2³¹.
+#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
+pub(crate) const fn columns_bound(width: i32) -> u32 {
+    let w = if width < 0 {
+        0
+    } else if width > (1 << 27) - 1 {
+        (1 << 27) - 1
+    } else {
+        width
+    };
+    w as u32 * 16 + 15
 }
 
 /// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row `py`
@@ -805,21 +834,30 @@ mod tests {
             .rows_reseeding(&mut |x0, x1| reseeding.push((x0, x1)));
         assert_eq!(in_runs, one_by_one);
         assert_eq!(in_runs, reseeding);
-        // As runs for a target's own loop, where the edges need no second set-up.
-        if let Some(runs) = runs_of(p, clip) {
+        // As runs for a target's own loop, where the edges need no second set-up; where
+        // `within_columns` holds, every end lies in the columns before the clamp.
+        if let Some((runs, within)) = runs_of(p, clip) {
             assert_eq!(walk_runs(runs, (clip.x0, clip.x1)), in_runs);
+            if within && clip.x0 == 0 {
+                let (x_min, x_max) = (i32::MIN, i32::MAX);
+                let raw = walk_runs(runs, (x_min, x_max));
+                assert!(raw.iter().all(|&(x0, x1)| (0..=clip.x1).contains(&x0)
+                    && (0..=clip.x1).contains(&x1)), "{p:?} {clip:?}");
+            }
         }
         in_runs
     }
 
     /// The runs of `p` in `clip` for a target's own row loop, if it has rows and its edges need
     /// no second set-up.
-    fn runs_of(p: [ScreenPoint; 3], clip: PixelRect) -> Option<Runs> {
+    /// Also whether they lie within the columns `0..clip.x1` (`within_columns`).
+    fn runs_of(p: [ScreenPoint; 3], clip: PixelRect) -> Option<(Runs, bool)> {
         let area = doubled_area(p[0], p[1], p[2]);
         if area == 0 {
             return None;
         }
-        rows_in_range(p, clip, area)?.runs()
+        let rows = rows_in_range(p, clip, area)?;
+        Some((rows.runs()?, rows.within_columns(columns_bound(clip.x1))))
     }
 
     /// The rows of [`Runs`] as their documentation describes them (as the `asm` feature's row
@@ -1097,7 +1135,7 @@ mod tests {
                 .map(|s| (s, plane.at(s.x0, s.y)))
                 .collect();
             let spans = triangle_spans(p, clip);
-            split_runs += usize::from(runs_of(p, clip).is_some_and(|r| r.upper < r.rows));
+            split_runs += usize::from(runs_of(p, clip).is_some_and(|(r, _)| r.upper < r.rows));
             let y0 = spans.row();
             let mut wide = plane.rows(clip.x0, y0);
             let (mut walked, mut y) = (Vec::new(), y0);
@@ -1114,6 +1152,61 @@ mod tests {
         assert!(spans_seen > 100_000, "{spans_seen}");
         // Runs that switch an edge on the way down, which `rows_both_ways` walks too.
         assert!(split_runs > 5_000, "{split_runs}");
+    }
+
+    /// `within_columns` holds exactly for triangles whose vertices lie in `[−7, 16·w + 8]`, and
+    /// where it holds every row's span ends, before any clamp, lie in `0..=w` (what the `asm`
+    /// row loops rely on to leave their clamps out): triangles of every size around both sides
+    /// of a 40-pixel-wide target, the bound's ends, and widths from 2²⁷ on (tested more
+    /// strictly, never wrongly).
+    #[test]
+    fn within_columns_bounds_every_span_end() {
+        let mut rng = crate::testing::XorShift(0xB7E1_5162_8AED_2A6Bu64);
+        let w = 40;
+        let clip = PixelRect::new(0, 0, w, 64);
+        let rows_of = |p: [ScreenPoint; 3], clip| {
+            let area = doubled_area(p[0], p[1], p[2]);
+            (area != 0).then(|| rows_in_range(p, clip, area)).flatten()
+        };
+        let (mut within, mut outside) = (0, 0);
+        for _ in 0..20_000 {
+            let scale = rng.pick(&[16, 100, 400, 1000]);
+            let x = rng.pick(&[0, 8, 16 * w / 2, 16 * w - 8, 16 * w]);
+            let p = rng.triangle(ScreenPoint::new(x, 32 * 16), scale);
+            let (Some(rows), Some((runs, ok))) = (rows_of(p, clip), runs_of(p, clip)) else {
+                continue;
+            };
+            assert_eq!(ok, rows.within_columns(columns_bound(w)));
+            assert_eq!(
+                ok,
+                p.iter().all(|q| (-7..=16 * w + 8).contains(&q.x)),
+                "{p:?}"
+            );
+            if ok {
+                within += 1;
+                let raw = walk_runs(runs, (i32::MIN, i32::MAX));
+                assert!(
+                    raw.iter()
+                        .all(|&(x0, x1)| (0..=w).contains(&x0) && (0..=w).contains(&x1)),
+                    "{p:?}"
+                );
+            } else {
+                outside += 1;
+            }
+        }
+        assert!(within > 2_000 && outside > 2_000, "{within} {outside}");
+        // The bound's ends, and the widths it caps.
+        let q = ScreenPoint::new;
+        let tall = |x0: i32, x1: i32| [q(x0, 0), q(x1, 16 * 30), q(x0, 16 * 60)];
+        let within_at = |p, w| rows_of(p, clip).is_some_and(|r| r.within_columns(columns_bound(w)));
+        assert!(within_at(tall(-7, 16 * w + 8), w));
+        assert!(!within_at(tall(-8, 16 * w + 8), w));
+        assert!(!within_at(tall(-7, 16 * w + 9), w));
+        for wide in [1 << 27, i32::MAX] {
+            assert!(within_at(tall(-7, 1 << 30), wide));
+            assert!(!within_at(tall(-8, 1 << 30), wide));
+        }
+        assert!(within_at(tall(-7, 8), 0) && !within_at(tall(-7, 9), 0));
     }
 
     /// `spans_in_range` tests neither the clip rectangle nor the area: a rectangle without

@@ -41,18 +41,28 @@ use crate::raster::Runs;
 /// step down. At the end of the first run the lower short edge takes its side, and the second
 /// run goes on to `last`.
 macro_rules! rows_fn {
+    // Spans clamped to `0..width` (x0 = max(x0, 0), x1 = min(x1, width); the width compared
+    // and moved from r12 itself, `cmp` and `mov` taking high registers: a row one instruction
+    // shorter than through r2, 0.25% of the frame), or known to lie within it.
+    (clamped $($rest:tt)*) => {
+        rows_fn!(["asrs r2, r0, #31", "bics r0, r2", "cmp r1, r12", "ble 9f", "mov r1, r12",
+                  "9:"] $($rest)*);
+    };
+    (within $($rest:tt)*) => {
+        rows_fn!([] $($rest)*);
+    };
     // Counted: each span's length added to `fragments` (from its byte index, 2·(x0 − x1)),
     // and each losing fragment to `failed`, on a path of its own.
-    (counted $name:ident, $fail:literal) => {
-        rows_fn!($name, $fail,
+    ([$($clamp:literal),*] counted $name:ident, $fail:literal) => {
+        rows_fn!([$($clamp),*] $name, $fail,
             ["asrs r1, r3, #1", "ldr r0, [r6, #{frag}]", "subs r0, r0, r1",
              "str r0, [r6, #{frag}]"],
             ["b 4f", "5:", "mov r0, lr", "ldr r1, [r0, #{frag} + 4]", "adds r1, #1",
              "str r1, [r0, #{frag} + 4]",
              "b 6b"], frag = const offset_of!(RowBlock, fragments));
     };
-    ($name:ident, $fail:literal, [$($span:literal),*], [$($tail:literal),*]
-     $(, $extra:ident = const $value:expr)*) => {
+    ([$($clamp:literal),*] $name:ident, $fail:literal, [$($span:literal),*],
+     [$($tail:literal),*] $(, $extra:ident = const $value:expr)*) => {
         /// The row loop (see `rows_fn!`) on the block at `block`.
         ///
         /// # Safety
@@ -105,16 +115,8 @@ macro_rules! rows_fn {
                 "8:",
                 "str r4, [r6, #{right}]",
                 "str r2, [r6, #{right} + 4]",
-                // x0 = max(x0, 0), x1 = min(x1, width); no pixels unless x0 < x1 (signed).
-                // The width compared and moved from r12 itself (`cmp` and `mov` take high
-                // registers): a row one instruction shorter than through r2, 0.25% of the
-                // frame.
-                "asrs r2, r0, #31",
-                "bics r0, r2",
-                "cmp r1, r12",
-                "ble 9f",
-                "mov r1, r12",
-                "9:",
+                // The clamps if any; no pixels unless x0 < x1 (signed).
+                $($clamp,)*
                 "cmp r0, r1",
                 "bge 4f",
                 // The depth at x0; both buffers addressed from their cell x1.
@@ -186,10 +188,14 @@ macro_rules! rows_fn {
     };
 }
 
-rows_fn!(rows_less, "bhs 6f", [], []);
-rows_fn!(rows_less_or_equal, "bhi 6f", [], []);
-rows_fn!(counted rows_less_counted, "bhs 5f");
-rows_fn!(counted rows_less_or_equal_counted, "bhi 5f");
+rows_fn!(clamped rows_less, "bhs 6f", [], []);
+rows_fn!(clamped rows_less_or_equal, "bhi 6f", [], []);
+rows_fn!(clamped counted rows_less_counted, "bhs 5f");
+rows_fn!(clamped counted rows_less_or_equal_counted, "bhi 5f");
+rows_fn!(within within_less, "bhs 6f", [], []);
+rows_fn!(within within_less_or_equal, "bhi 6f", [], []);
+rows_fn!(within counted within_less_counted, "bhs 5f");
+rows_fn!(within counted within_less_or_equal_counted, "bhi 5f");
 
 // The edges lie at the block's start, one edge's size apart; every field lies within reach
 // of Thumb-1's word loads from a register (offsets up to 124).
@@ -205,7 +211,7 @@ const _: () = {
 /// `block` keeps [`RowBlock`]'s contract.
 #[inline(always)]
 #[allow(unsafe_code)]
-pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) {
+pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, clamp: bool) {
     let block: *mut RowBlock = block;
     // SAFETY (the caller keeps `RowBlock`'s contract):
     // - Calling convention: the functions are `extern "C"` (AAPCS) and keep it: they save r4
@@ -214,7 +220,8 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) 
     //   return with `pop {.., pc}`; their argument, the block's address, comes in r0.
     // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row` (the
     //   row address, r11, steps by a row's bytes, `stride`). A row's span is clamped to
-    //   x0 ≥ 0 and x1 ≤ width, and touched only where x0 < x1: the halfwords at r4 + i and
+    //   x0 ≥ 0 and x1 ≤ width with `clamp`, and lies within them without (the contract), and
+    //   is touched only where x0 < x1: the halfwords at r4 + i and
     //   r5 + i for byte indices i from 2·(x0 − x1) to −2, with r4 the address of the row's
     //   cell x1 and r5 = r4 + delta the same cell of the depth cells: cells k·width + x for
     //   x0 ≤ x < x1, below rows·width, which the caller holds mutably. It also reads the block
@@ -229,11 +236,15 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) 
     //   `end` after `upper` ≥ 1 rows; unless that is `last` (upper = rows), `end` becomes
     //   `last`, which it meets after the other rows ≥ 1.
     unsafe {
-        match (T::OR_EQUAL, K::COUNTED) {
-            (false, false) => rows_less(block),
-            (true, false) => rows_less_or_equal(block),
-            (false, true) => rows_less_counted(block),
-            (true, true) => rows_less_or_equal_counted(block),
+        match (T::OR_EQUAL, K::COUNTED, clamp) {
+            (false, false, true) => rows_less(block),
+            (true, false, true) => rows_less_or_equal(block),
+            (false, true, true) => rows_less_counted(block),
+            (true, true, true) => rows_less_or_equal_counted(block),
+            (false, false, false) => within_less(block),
+            (true, false, false) => within_less_or_equal(block),
+            (false, true, false) => within_less_counted(block),
+            (true, true, false) => within_less_or_equal_counted(block),
         }
     }
 }

@@ -136,18 +136,29 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
     f
 }
 
-/// The row loop in assembly: `$it` and `$pass` as in `pixels!`, then the count's
-/// instructions before the pixel loop, in it, and after it (none uncounted), then the block's
-/// address and the counts' operands if any. The block's fields at their offsets (`const`
-/// operands), first the first row's colour address, the depth walk and the colour; an edge's
-/// numerator and step as a pair, its denominator and base as another. A row: each edge's span
-/// end (one division of its numerator, which then steps), the span clamped to `0..width`, and
-/// where it holds pixels the depth at its first one and the pixel loop; then the depth walk
-/// and the row address step down. At the end of the first run the lower short edge takes its
-/// side, and the second run goes on to `last`.
+/// The row loop in assembly: `clamped` or `within` (spans clamped to `0..width`, or known to
+/// lie within it), `$it` and `$pass` as in `pixels!`, then the count's instructions before the
+/// pixel loop, in it, and after it (none uncounted), then the block's address and the counts'
+/// operands if any. The block's fields at their offsets (`const` operands), first the first
+/// row's colour address, the depth walk and the colour; an edge's numerator and step as a
+/// pair, its denominator and base as another. A row: each edge's span end (one division of
+/// its numerator, which then steps), the span clamped to `0..width` if `clamped`, and where it
+/// holds pixels the depth at its first one and the pixel loop; then the depth walk and the row
+/// address step down. At the end of the first run the lower short edge takes its side, and
+/// the second run goes on to `last`.
 macro_rules! rows_loop {
-    ($it:literal, $pass:literal, [$($before:literal),*], [$($count:literal)?],
-     [$($after:literal)?]; $block:expr $(, $extra:ident = const $value:expr)*) => {
+    // x0 = max(x0, 0), x1 = min(x1, width), the width in a register of its own (the M4's
+    // frame 0.44% fewer instructions than loaded each row).
+    (clamped [$($width:tt)*] $($rest:tt)*) => {
+        rows_loop!(["bic {x0}, {x0}, {x0}, asr #31", "cmp {x1}, {w}", "it gt",
+                    "movgt {x1}, {w}"] [w = in(reg) $($width)*,] $($rest)*)
+    };
+    (within [$($width:tt)*] $($rest:tt)*) => {
+        rows_loop!([] [] $($rest)*)
+    };
+    ([$($clamp:literal),*] [$($width:tt)*] $it:literal, $pass:literal,
+     [$($before:literal),*], [$($count:literal)?], [$($after:literal)?]; $block:expr
+     $(, $extra:ident = const $value:expr)*) => {
         core::arch::asm!(
             // The first row's colour address, the depth walk and the colour from the block.
             "ldr {cptr}, [{s}, #{row}]",
@@ -168,12 +179,8 @@ macro_rules! rows_loop {
             "ldrd {b}, {c}, [{s}, #{right} + 8]",
             "udiv {x1}, {a}, {b}",
             "add {x1}, {c}",
-            // x0 = max(x0, 0), x1 = min(x1, width); no pixels unless x0 < x1 (signed).
-            "bic {x0}, {x0}, {x0}, asr #31",
-            "ldr {b}, [{s}, #{width}]",
-            "cmp {x1}, {b}",
-            "it gt",
-            "movgt {x1}, {b}",
+            // The clamps if any; no pixels unless x0 < x1 (signed).
+            $($clamp,)*
             "subs {i}, {x0}, {x1}",
             "bge 4f",
             // The depth at x0; both buffers addressed from their cell x1, i from x0 − x1 to 0.
@@ -210,11 +217,12 @@ macro_rules! rows_loop {
             c = out(reg) _, d = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
             acc = out(reg) _,
             right = const EDGE, lower = const 2 * EDGE,
-            width = const offset_of!(RowBlock, width), step_x = const offset_of!(RowBlock, step_x),
+            step_x = const offset_of!(RowBlock, step_x),
             step_y = const offset_of!(RowBlock, step_y), end = const offset_of!(RowBlock, end),
             last = const offset_of!(RowBlock, last), row = const offset_of!(RowBlock, row),
             row_z = const offset_of!(RowBlock, row_z), bits = const offset_of!(RowBlock, bits),
             $($extra = const $value,)*
+            $($width)*
             options(nostack),
         )
     };
@@ -230,11 +238,12 @@ const _: () = assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges)
 /// `block` keeps [`RowBlock`]'s contract.
 #[inline(always)]
 #[allow(unsafe_code)]
-pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) {
+pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, clamp: bool) {
     // SAFETY (the caller keeps `RowBlock`'s contract):
     // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row`
     //   (`cptr` steps by a row's bytes, `stride`). A row's span is clamped to x0 ≥ 0 and
-    //   x1 ≤ width, and touched only where x0 < x1: the halfwords at c + 2i and d + 2i for i
+    //   x1 ≤ width with `clamp`, and lies within them without (the contract), and is
+    //   touched only where x0 < x1: the halfwords at c + 2i and d + 2i for i
     //   from x0 − x1 to −1, with c the address of the row's cell x1 and d = c + delta the same
     //   cell of the depth cells: cells k·width + x for x0 ≤ x < x1, below rows·width, which
     //   the caller holds mutably. It also reads `block` (borrowed mutably), and writes its
@@ -251,20 +260,30 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) 
     //   after the other rows ≥ 1.
     // - Registers: every register the block writes is an output; the flags it changes are
     //   not preserved, as asm! allows by default.
+    let width = block.width;
     unsafe {
-        match (T::OR_EQUAL, K::COUNTED) {
-            (false, true) => rows_loop!("itte", "lo",
-                ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
-                 "str {x0}, [{s}, #{frag}]"],
-                ["addhs {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"];
-                block, frag = const offset_of!(RowBlock, fragments)),
-            (true, true) => rows_loop!("itte", "ls",
-                ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
-                 "str {x0}, [{s}, #{frag}]"],
-                ["addhi {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"];
-                block, frag = const offset_of!(RowBlock, fragments)),
-            (false, false) => rows_loop!("itt", "lo", [], [], []; block),
-            (true, false) => rows_loop!("itt", "ls", [], [], []; block),
+        macro_rules! by_test_and_count {
+            ($clamp:ident $width:tt) => {
+                match (T::OR_EQUAL, K::COUNTED) {
+                    (false, true) => rows_loop!($clamp $width "itte", "lo",
+                        ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
+                         "str {x0}, [{s}, #{frag}]"],
+                        ["addhs {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"];
+                        block, frag = const offset_of!(RowBlock, fragments)),
+                    (true, true) => rows_loop!($clamp $width "itte", "ls",
+                        ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
+                         "str {x0}, [{s}, #{frag}]"],
+                        ["addhi {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"];
+                        block, frag = const offset_of!(RowBlock, fragments)),
+                    (false, false) => rows_loop!($clamp $width "itt", "lo", [], [], []; block),
+                    (true, false) => rows_loop!($clamp $width "itt", "ls", [], [], []; block),
+                }
+            };
+        }
+        if clamp {
+            by_test_and_count!(clamped[width])
+        } else {
+            by_test_and_count!(within [])
         }
     }
 }

@@ -64,11 +64,25 @@ macro_rules! pixel {
 /// to the count's path for it; then the count's instructions before the pixel loop, after it
 /// and on those paths (none uncounted), then the block's address and the counts' operands
 /// if any. A row: each edge's span end (the high half of its walk, which then steps), the
-/// span clamped to `0..width`, and where it holds pixels the depth at its first one and the
-/// pixel loop; then the depth walk and the row address step down. At the end of the first
-/// run the lower short edge takes its side, and the second run goes on to `last`.
+/// span clamped to `0..width` if `clamped` (not if `within`: known to lie within it), and
+/// where it holds pixels the depth at its first one and the pixel loop; then the depth walk
+/// and the row address step down. At the end of the first run the lower short edge takes
+/// its side, and the second run goes on to `last`.
 macro_rules! rows_loop {
-    ($fail:literal, [$odd:literal, $first:literal, $second:literal], [$($before:literal),*],
+    // x0 = max(x0, 0) (out of line: only spans crossing the left column), x1 = min(x1,
+    // width); 32-bit operations clear the high halves.
+    (clamped $($rest:tt)*) => {
+        rows_loop!(["test {x0:e}, {x0:e}", "js 8f", "3:",
+                    "cmp {x1:e}, dword ptr [{s} + {width}]",
+                    "cmovg {x1:e}, dword ptr [{s} + {width}]"]
+                   ["8:", "xor {x0:e}, {x0:e}", "jmp 3b"] $($rest)*,
+                   width = const offset_of!(RowBlock, width))
+    };
+    (within $($rest:tt)*) => {
+        rows_loop!([] [] $($rest)*)
+    };
+    ([$($clamp:literal),*] [$($left:literal),*] $fail:literal,
+     [$odd:literal, $first:literal, $second:literal], [$($before:literal),*],
      [$($after:literal),*], [$($path:literal)?];
      $block:expr $(, $extra:ident = const $value:expr)*) => {
         core::arch::asm!(
@@ -88,14 +102,8 @@ macro_rules! rows_loop {
             "mov {x1}, {r}",
             "shr {x1}, 32",
             "add {r}, qword ptr [{s} + {right} + 8]",
-            // x0 = max(x0, 0) (out of line: only spans crossing the left column),
-            // x1 = min(x1, width); no pixels unless x0 < x1 (signed). 32-bit operations
-            // clear the high halves.
-            "test {x0:e}, {x0:e}",
-            "js 8f",
-            "3:",
-            "cmp {x1:e}, dword ptr [{s} + {width}]",
-            "cmovg {x1:e}, dword ptr [{s} + {width}]",
+            // The clamps if any; no pixels unless x0 < x1 (signed).
+            $($clamp,)*
             "cmp {x0:e}, {x1:e}",
             "jge 4f",
             // The depth at x0; both buffers addressed from their cell x1, i from x0 − x1 to 0
@@ -147,9 +155,7 @@ macro_rules! rows_loop {
             "mov {r}, qword ptr [{s} + {lower}]",
             "jmp 2b",
             // A span from left of column 0.
-            "8:",
-            "xor {x0:e}, {x0:e}",
-            "jmp 3b",
+            $($left,)*
             // A fragment that loses, counted, from each of the three pixels' places.
             $("22:", $path, "jmp 7b", "23:", $path, "jmp 17b", "24:", $path, "jmp 27b",)?
             "5:",
@@ -158,7 +164,7 @@ macro_rules! rows_loop {
             x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _, acc = out(reg) _,
             c = out(reg) _, d = out(reg) _,
             right = const EDGE, lower = const 2 * EDGE,
-            width = const offset_of!(RowBlock, width), step_x = const offset_of!(RowBlock, step_x),
+            step_x = const offset_of!(RowBlock, step_x),
             delta_at = const offset_of!(RowBlock, delta),
             step_y = const offset_of!(RowBlock, step_y), stride = const offset_of!(RowBlock, stride),
             end = const offset_of!(RowBlock, end), last = const offset_of!(RowBlock, last),
@@ -183,11 +189,12 @@ const _: () = assert!(offset_of!(RowBlock, failed) == offset_of!(RowBlock, fragm
 /// `block` keeps [`RowBlock`]'s contract.
 #[inline(always)]
 #[allow(unsafe_code)]
-pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) {
+pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, clamp: bool) {
     // SAFETY (the caller keeps `RowBlock`'s contract):
     // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row`
     //   (`cptr` steps by a row's bytes, `stride`). A row's span is clamped to x0 ≥ 0 and
-    //   x1 ≤ width, and touched only where x0 < x1: the u16s at c + 2i and d + 2i for i from
+    //   x1 ≤ width with `clamp`, and lies within them without (the contract), and is
+    //   touched only where x0 < x1: the u16s at c + 2i and d + 2i for i from
     //   x0 − x1 to −1 (a turn of two pixels takes i and i + 1 only while i + 2 ≤ 0, the count
     //   left being even), with c the address of the row's cell x1 and d = c + delta the same
     //   cell of the depth cells: cells k·width + x for x0 ≤ x < x1, below rows·width, which
@@ -205,17 +212,30 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock) 
     // - Registers: every register the block writes is an output; the flags it changes are
     //   not preserved, as asm! allows by default.
     unsafe {
-        match (T::OR_EQUAL, K::COUNTED) {
-            (false, true) => rows_loop!("jae", ["23f", "22f", "24f"],
-                ["sub dword ptr [{s} + {frag}], {i:e}", "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
-                ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
-                block, frag = const offset_of!(RowBlock, fragments)),
-            (true, true) => rows_loop!("ja", ["23f", "22f", "24f"],
-                ["sub dword ptr [{s} + {frag}], {i:e}", "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
-                ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
-                block, frag = const offset_of!(RowBlock, fragments)),
-            (false, false) => rows_loop!("jae", ["17f", "7f", "27f"], [], [], []; block),
-            (true, false) => rows_loop!("ja", ["17f", "7f", "27f"], [], [], []; block),
+        macro_rules! by_test_and_count {
+            ($clamp:ident) => {
+                match (T::OR_EQUAL, K::COUNTED) {
+                    (false, true) => rows_loop!($clamp "jae", ["23f", "22f", "24f"],
+                        ["sub dword ptr [{s} + {frag}], {i:e}",
+                         "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
+                        ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
+                        block, frag = const offset_of!(RowBlock, fragments)),
+                    (true, true) => rows_loop!($clamp "ja", ["23f", "22f", "24f"],
+                        ["sub dword ptr [{s} + {frag}], {i:e}",
+                         "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
+                        ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
+                        block, frag = const offset_of!(RowBlock, fragments)),
+                    (false, false) => rows_loop!($clamp "jae", ["17f", "7f", "27f"], [], [], [];
+                        block),
+                    (true, false) => rows_loop!($clamp "ja", ["17f", "7f", "27f"], [], [], [];
+                        block),
+                }
+            };
+        }
+        if clamp {
+            by_test_and_count!(clamped)
+        } else {
+            by_test_and_count!(within)
         }
     }
 }
