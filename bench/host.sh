@@ -189,7 +189,8 @@ $stages
   \`DivideStepper\`), where the arithmetic needs about 25: the rest moves the row's state (the edges, the depth walk, the clip column, the
   buffers) between registers and the stack around the pixel loop. With the \`asm\` feature
   (the firmware presets have it) the M4's whole row loop is Thumb-2 too, for a solid colour
-  into u16 depth: 25 instructions a row and 4 more to enter a span. It reads the edges and
+  into u16 depth: 20 instructions a row (24 for a triangle that crosses the target's left
+  or right side, whose spans are clamped) and 4 more to enter a span. It reads the edges and
   the triangle's constants in pairs (\`ldrd\`) from one block in memory and stores the two
   numerators back, which leaves twelve registers for the row and the pixel loop together;
   the runs above and below the middle vertex go through it in one call, the lower short
@@ -212,7 +213,8 @@ $stages
   and lr and keeps the step along a row, the colour, the depth walk, the row's address, the
   width and the block's address there. It walks the same exact edges from the same kind of
   block, each edge's five words loaded by one \`ldm\` (1.3% of the frame against a load a
-  word): 27 instructions a row (2 more when an edge's remainder borrows) and 10 to enter a
+  word): 23 instructions a row (2 more when an edge's remainder borrows, 4 more to clamp)
+  and 10 to enter a
   span, against about 60 for the compiled row loop; its pixel loop 9 instructions (7 for a
   fragment that loses) against the compiler's 10, the colour moved into a low register for
   each span (0.4%). The M0's frame 5.1% fewer instructions (3.536 M → 3.357 M), 510 bytes
@@ -231,7 +233,7 @@ $stages
   about 10.2 a fragment (its unrolled pixel loop reloads the colour from the stack, and a
   span's odd pixel goes apart). With the \`asm\` feature x86-64 runs the whole triangle's
   rows in assembly too (src/target/x86_64.rs), from the Cortex-M loops' block and set-up:
-  both edges' walks stay in registers (their steps in the block), 16 instructions a row, 6
+  both edges' walks stay in registers (their steps in the block), 12 instructions a row, 6
   to enter a span, 7 a fragment and 2 more a write (now 5 and 2, and 2 for each two
   pixels): the frame 10% fewer instructions (1.660 M → 1.493 M), where the same block
   walked by a compiled loop (for targets without assembly) had measured 3.7% more. The clamps to the clip columns take at most 1.8% of the M4's frame
@@ -340,7 +342,7 @@ $stages
   dozens of pieces of 5 to 25 instructions: about 0.34 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
-  25 a row against about 49), and so are the M0's (Thumb-1: 27 a row against about 60, 9 a
+  20 a row against about 49), and so are the M0's (Thumb-1: 23 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
   stage (0.69 M, about 590
   a vertex, of which the transform takes about 200 and the divisions by w about 155) and the depth

@@ -75,9 +75,9 @@ CUTS = [
     ), (
         # The `asm` feature's row loops (both cores): everything up to the call.
         "src/target/asm_rows.rs",
-        "    unsafe { core_rows::rows::<T, K>(&mut block) };",
+        "    unsafe { core_rows::rows::<T, K>(&mut block, clamp) };",
         f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return true; }}\n"
-        "    unsafe { core_rows::rows::<T, K>(&mut block) };",
+        "    unsafe { core_rows::rows::<T, K>(&mut block, clamp) };",
     )]),
     ("span set-up (sorting, edge steppers)", "no fill set-up", [(
         # The rows and edges as the build sets them up (for the `asm` row loops as runs), then

@@ -12,9 +12,10 @@
 //!
 //! The row loop ([`rows`], on the block `asm_rows::solid_rows` fills in) around the same pixel
 //! loop: a whole triangle, both runs of rows (above and below its middle vertex), in one
-//! block of assembly. A row takes 25
-//! instructions (each edge's end by one division of its numerator, the clamps to the
-//! target's columns, the depth walk and the row address), 4 more to enter a span, where the
+//! block of assembly. A row takes 20
+//! instructions (each edge's end by one division of its numerator, the depth walk and the
+//! row address; 4 more to clamp the span to the target's columns, for a triangle that
+//! crosses its left or right side), 4 more to enter a span, where the
 //! compiler's row loop took about 49, moving the row's state between registers and the
 //! stack around the pixel loop; here the edges and the constants are read in pairs from one
 //! block in memory. Its set-up takes about 60 instructions a triangle more than the
