@@ -42,28 +42,18 @@ use crate::raster::Runs;
 /// step down. At the end of the first run the lower short edge takes its side, and the second
 /// run goes on to `last`.
 macro_rules! rows_fn {
-    // Spans clamped to `0..width` (x0 = max(x0, 0), x1 = min(x1, width); the width compared
-    // and moved from r12 itself, `cmp` and `mov` taking high registers: a row one instruction
-    // shorter than through r2, 0.25% of the frame), or known to lie within it.
-    (clamped $($rest:tt)*) => {
-        rows_fn!(["asrs r2, r0, #31", "bics r0, r2", "cmp r1, r12", "ble 9f", "mov r1, r12",
-                  "9:"] $($rest)*);
-    };
-    (within $($rest:tt)*) => {
-        rows_fn!([] $($rest)*);
-    };
     // Counted: each span's length added to `fragments` (from its byte index, 2·(x0 − x1)),
     // and each losing fragment to `failed`, on a path of its own.
-    ([$($clamp:literal),*] counted $name:ident, $fail:literal) => {
-        rows_fn!([$($clamp),*] $name, $fail,
+    (counted $name:ident, $fail:literal) => {
+        rows_fn!($name, $fail,
             ["asrs r1, r3, #1", "ldr r0, [r6, #{frag}]", "subs r0, r0, r1",
              "str r0, [r6, #{frag}]"],
             ["b 4f", "5:", "mov r0, lr", "ldr r1, [r0, #{frag} + 4]", "adds r1, #1",
              "str r1, [r0, #{frag} + 4]",
              "b 6b"], frag = const offset_of!(RowBlock, fragments));
     };
-    ([$($clamp:literal),*] $name:ident, $fail:literal, [$($span:literal),*],
-     [$($tail:literal),*] $(, $extra:ident = const $value:expr)*) => {
+    ($name:ident, $fail:literal, [$($span:literal),*], [$($tail:literal),*]
+     $(, $extra:ident = const $value:expr)*) => {
         /// The row loop (see `rows_fn!`) on the block at `block`.
         ///
         /// # Safety
@@ -116,10 +106,16 @@ macro_rules! rows_fn {
                 "8:",
                 "str r4, [r6, #{right}]",
                 "str r2, [r6, #{right} + 4]",
-                // The clamps if any; no pixels unless x0 < x1 (signed).
-                $($clamp,)*
+                // Pixels where 0 ≤ x0 < x1 ≤ width, by two unsigned comparisons (a negative
+                // end is a large unsigned one; the width compared from r12 itself, `cmp`
+                // taking high registers); a span that crosses a side of the buffers is clamped
+                // to them out of line (the clamps in line took two instructions a row more).
+                "cmp r1, r12",
+                "bhi 21f",
+                "12:",
                 "cmp r0, r1",
-                "bge 4f",
+                "bhs 22f",
+                "13:",
                 // The depth at x0; both buffers addressed from their cell x1.
                 "mov r2, r8",
                 "muls r2, r0, r2",
@@ -167,6 +163,21 @@ macro_rules! rows_fn {
                 "adds r0, r0, r6",
                 "stm r0!, {{r1, r2, r3, r4, r5}}",
                 "b 2b",
+                // x1 beyond the last column, or left of column 0 (then no pixels).
+                "21:",
+                "cmp r1, #0",
+                "blt 4b",
+                "mov r1, r12",
+                "b 12b",
+                // x0 ≥ x1 unsigned with 0 ≤ x1 ≤ width: no pixels, unless x0 is negative and
+                // x1 positive (the span from column 0).
+                "22:",
+                "cmp r0, #0",
+                "bge 4b",
+                "cmp r1, #0",
+                "beq 4b",
+                "movs r0, #0",
+                "b 13b",
                 "1:",
                 "pop {{r4, r5, r6, r7}}",
                 "mov r8, r4",
@@ -189,14 +200,10 @@ macro_rules! rows_fn {
     };
 }
 
-rows_fn!(clamped rows_less, "bhs 6f", [], []);
-rows_fn!(clamped rows_less_or_equal, "bhi 6f", [], []);
-rows_fn!(clamped counted rows_less_counted, "bhs 5f");
-rows_fn!(clamped counted rows_less_or_equal_counted, "bhi 5f");
-rows_fn!(within within_less, "bhs 6f", [], []);
-rows_fn!(within within_less_or_equal, "bhi 6f", [], []);
-rows_fn!(within counted within_less_counted, "bhs 5f");
-rows_fn!(within counted within_less_or_equal_counted, "bhi 5f");
+rows_fn!(rows_less, "bhs 6f", [], []);
+rows_fn!(rows_less_or_equal, "bhi 6f", [], []);
+rows_fn!(counted rows_less_counted, "bhs 5f");
+rows_fn!(counted rows_less_or_equal_counted, "bhi 5f");
 
 // The edges lie at the block's start, one edge's size apart; every field lies within reach
 // of Thumb-1's word loads from a register (offsets up to 124).
@@ -205,14 +212,19 @@ const _: () = {
     assert!(size_of::<RowBlock>() <= 128);
 };
 
+/// This core's loop tests every span against the columns at two comparisons a row: no loop
+/// without the clamps (see `asm_rows::solid_rows`).
+pub(super) const WITHOUT_CLAMPS: bool = false;
+
 /// The rows of a triangle in `block` (see [`RowBlock`]) through the naked function of `T` and
-/// `K`.
+/// `K` (`clamp` is not read: see [`WITHOUT_CLAMPS`]).
 ///
 /// # Safety
 /// `block` keeps [`RowBlock`]'s contract.
 #[inline(always)]
 #[allow(unsafe_code)]
 pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, clamp: bool) {
+    let _ = clamp;
     let block: *mut RowBlock = block;
     // SAFETY (the caller keeps `RowBlock`'s contract):
     // - Calling convention: the functions are `extern "C"` (AAPCS) and keep it: they save r4
@@ -220,9 +232,11 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     //   the flags are the caller's to lose), use the stack only for that (balanced), and
     //   return with `pop {.., pc}`; their argument, the block's address, comes in r0.
     // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row` (the
-    //   row address, r11, steps by a row's bytes, `stride`). A row's span is clamped to
-    //   x0 ≥ 0 and x1 ≤ width with `clamp`, and lies within them without (the contract), and
-    //   is touched only where x0 < x1: the halfwords at r4 + i and
+    //   row address, r11, steps by a row's bytes, `stride`). A row's pixels are touched only
+    //   where 0 ≤ x0 < x1 ≤ width: two unsigned comparisons pass only then (x1 ≤ width as
+    //   unsigned, so 0 ≤ x1 < 2³¹, and x0 < x1 as unsigned, so x0 ≥ 0), and otherwise the
+    //   out-of-line paths clamp x1 to width (only where it is positive) or x0 to 0 (only
+    //   where x1 > 0) before the same test, or skip the row: the halfwords at r4 + i and
     //   r5 + i for byte indices i from 2·(x0 − x1) to −2, with r4 the address of the row's
     //   cell x1 and r5 = r4 + delta the same cell of the depth cells: cells k·width + x for
     //   x0 ≤ x < x1, below rows·width, which the caller holds mutably. It also reads the block
@@ -237,15 +251,11 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     //   `end` after `upper` ≥ 1 rows; unless that is `last` (upper = rows), `end` becomes
     //   `last`, which it meets after the other rows ≥ 1.
     unsafe {
-        match (T::OR_EQUAL, K::COUNTED, clamp) {
-            (false, false, true) => rows_less(block),
-            (true, false, true) => rows_less_or_equal(block),
-            (false, true, true) => rows_less_counted(block),
-            (true, true, true) => rows_less_or_equal_counted(block),
-            (false, false, false) => within_less(block),
-            (true, false, false) => within_less_or_equal(block),
-            (false, true, false) => within_less_counted(block),
-            (true, true, false) => within_less_or_equal_counted(block),
+        match (T::OR_EQUAL, K::COUNTED) {
+            (false, false) => rows_less(block),
+            (true, false) => rows_less_or_equal(block),
+            (false, true) => rows_less_counted(block),
+            (true, true) => rows_less_or_equal_counted(block),
         }
     }
 }

@@ -232,8 +232,12 @@ macro_rules! rows_loop {
 // The edges lie at the block's start, one edge's size apart.
 const _: () = assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
 
+/// This core has loops without the clamps to the columns, for triangles within them (see
+/// `asm_rows::solid_rows`).
+pub(super) const WITHOUT_CLAMPS: bool = true;
+
 /// The rows of a triangle in `block` (see [`RowBlock`]) through `rows_loop!`, the fragments
-/// counted when `K` counts.
+/// counted when `K` counts, the spans clamped to the columns if `clamp`.
 ///
 /// # Safety
 /// `block` keeps [`RowBlock`]'s contract.

@@ -65,25 +65,12 @@ macro_rules! pixel {
 /// to the count's path for it; then the count's instructions before the pixel loop, after it
 /// and on those paths (none uncounted), then the block's address and the counts' operands
 /// if any. A row: each edge's span end (the high half of its walk, which then steps), the
-/// span clamped to `0..width` if `clamped` (not if `within`: known to lie within it), and
+/// span clamped to `0..width` (tested by two unsigned comparisons, clamped out of line), and
 /// where it holds pixels the depth at its first one and the pixel loop; then the depth walk
 /// and the row address step down. At the end of the first run the lower short edge takes
 /// its side, and the second run goes on to `last`.
 macro_rules! rows_loop {
-    // x0 = max(x0, 0) (out of line: only spans crossing the left column), x1 = min(x1,
-    // width); 32-bit operations clear the high halves.
-    (clamped $($rest:tt)*) => {
-        rows_loop!(["test {x0:e}, {x0:e}", "js 8f", "3:",
-                    "cmp {x1:e}, dword ptr [{s} + {width}]",
-                    "cmovg {x1:e}, dword ptr [{s} + {width}]"]
-                   ["8:", "xor {x0:e}, {x0:e}", "jmp 3b"] $($rest)*,
-                   width = const offset_of!(RowBlock, width))
-    };
-    (within $($rest:tt)*) => {
-        rows_loop!([] [] $($rest)*)
-    };
-    ([$($clamp:literal),*] [$($left:literal),*] $fail:literal,
-     [$odd:literal, $first:literal, $second:literal], [$($before:literal),*],
+    ($fail:literal, [$odd:literal, $first:literal, $second:literal], [$($before:literal),*],
      [$($after:literal),*], [$($path:literal)?];
      $block:expr $(, $extra:ident = const $value:expr)*) => {
         core::arch::asm!(
@@ -103,10 +90,16 @@ macro_rules! rows_loop {
             "mov {x1}, {r}",
             "shr {x1}, 32",
             "add {r}, qword ptr [{s} + {right} + 8]",
-            // The clamps if any; no pixels unless x0 < x1 (signed).
-            $($clamp,)*
+            // Pixels where 0 ≤ x0 < x1 ≤ width, by two unsigned comparisons (a negative end is
+            // a large unsigned one); a span that crosses a side of the buffers is clamped to
+            // them out of line (the clamps in line took two instructions a row more). 32-bit
+            // operations clear the high halves.
+            "cmp {x1:e}, dword ptr [{s} + {width}]",
+            "ja 31f",
+            "3:",
             "cmp {x0:e}, {x1:e}",
-            "jge 4f",
+            "jae 12f",
+            "13:",
             // The depth at x0; both buffers addressed from their cell x1, i from x0 − x1 to 0
             // (0 ≤ x0 < x1, both zero-extended: the 64-bit difference is negative).
             "mov {i}, {x0}",
@@ -155,8 +148,21 @@ macro_rules! rows_loop {
             "9:",
             "mov {r}, qword ptr [{s} + {lower}]",
             "jmp 2b",
-            // A span from left of column 0.
-            $($left,)*
+            // x1 beyond the last column, or left of column 0 (then no pixels).
+            "31:",
+            "test {x1:e}, {x1:e}",
+            "js 4b",
+            "mov {x1:e}, dword ptr [{s} + {width}]",
+            "jmp 3b",
+            // x0 ≥ x1 unsigned with 0 ≤ x1 ≤ width: no pixels, unless x0 is negative and
+            // x1 positive (the span from column 0).
+            "12:",
+            "test {x0:e}, {x0:e}",
+            "jns 4b",
+            "test {x1:e}, {x1:e}",
+            "jz 4b",
+            "xor {x0:e}, {x0:e}",
+            "jmp 13b",
             // A fragment that loses, counted, from each of the three pixels' places.
             $("22:", $path, "jmp 7b", "23:", $path, "jmp 17b", "24:", $path, "jmp 27b",)?
             "5:",
@@ -165,7 +171,7 @@ macro_rules! rows_loop {
             x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _, acc = out(reg) _,
             c = out(reg) _, d = out(reg) _,
             right = const EDGE, lower = const 2 * EDGE,
-            step_x = const offset_of!(RowBlock, step_x),
+            width = const offset_of!(RowBlock, width), step_x = const offset_of!(RowBlock, step_x),
             delta_at = const offset_of!(RowBlock, delta),
             step_y = const offset_of!(RowBlock, step_y), stride = const offset_of!(RowBlock, stride),
             end = const offset_of!(RowBlock, end), last = const offset_of!(RowBlock, last),
@@ -183,19 +189,27 @@ const _: () = assert!(EDGE == 16);
 // The counts lie one word apart.
 const _: () = assert!(offset_of!(RowBlock, failed) == offset_of!(RowBlock, fragments) + 4);
 
+/// This core's loop tests every span against the columns at two comparisons a row: no loop
+/// without the clamps (see `asm_rows::solid_rows`).
+pub(super) const WITHOUT_CLAMPS: bool = false;
+
 /// The rows of a triangle in `block` (see [`RowBlock`]) through `rows_loop!`, the fragments
-/// counted when `K` counts.
+/// counted when `K` counts (`clamp` is not read: see [`WITHOUT_CLAMPS`]).
 ///
 /// # Safety
 /// `block` keeps [`RowBlock`]'s contract.
 #[inline(always)]
 #[allow(unsafe_code)]
 pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, clamp: bool) {
+    let _ = clamp;
     // SAFETY (the caller keeps `RowBlock`'s contract):
     // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row`
-    //   (`cptr` steps by a row's bytes, `stride`). A row's span is clamped to x0 ≥ 0 and
-    //   x1 ≤ width with `clamp`, and lies within them without (the contract), and is
-    //   touched only where x0 < x1: the u16s at c + 2i and d + 2i for i from
+    //   (`cptr` steps by a row's bytes, `stride`). A row's pixels are touched only where
+    //   0 ≤ x0 < x1 ≤ width: two unsigned comparisons pass only then (x1 ≤ width as
+    //   unsigned, so 0 ≤ x1 < 2³¹, and x0 < x1 as unsigned, so x0 ≥ 0), and otherwise the
+    //   out-of-line paths clamp x1 to width (only where it is positive) or x0 to 0 (only
+    //   where x1 > 0) before the same test, or skip the row: the u16s at c + 2i and d + 2i
+    //   for i from
     //   x0 − x1 to −1 (a turn of two pixels takes i and i + 1 only while i + 2 ≤ 0, the count
     //   left being even), with c the address of the row's cell x1 and d = c + delta the same
     //   cell of the depth cells: cells k·width + x for x0 ≤ x < x1, below rows·width, which
@@ -213,30 +227,17 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     // - Registers: every register the block writes is an output; the flags it changes are
     //   not preserved, as asm! allows by default.
     unsafe {
-        macro_rules! by_test_and_count {
-            ($clamp:ident) => {
-                match (T::OR_EQUAL, K::COUNTED) {
-                    (false, true) => rows_loop!($clamp "jae", ["23f", "22f", "24f"],
-                        ["sub dword ptr [{s} + {frag}], {i:e}",
-                         "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
-                        ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
-                        block, frag = const offset_of!(RowBlock, fragments)),
-                    (true, true) => rows_loop!($clamp "ja", ["23f", "22f", "24f"],
-                        ["sub dword ptr [{s} + {frag}], {i:e}",
-                         "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
-                        ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
-                        block, frag = const offset_of!(RowBlock, fragments)),
-                    (false, false) => rows_loop!($clamp "jae", ["17f", "7f", "27f"], [], [], [];
-                        block),
-                    (true, false) => rows_loop!($clamp "ja", ["17f", "7f", "27f"], [], [], [];
-                        block),
-                }
-            };
-        }
-        if clamp {
-            by_test_and_count!(clamped)
-        } else {
-            by_test_and_count!(within)
+        match (T::OR_EQUAL, K::COUNTED) {
+            (false, true) => rows_loop!("jae", ["23f", "22f", "24f"],
+                ["sub dword ptr [{s} + {frag}], {i:e}", "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
+                ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
+                block, frag = const offset_of!(RowBlock, fragments)),
+            (true, true) => rows_loop!("ja", ["23f", "22f", "24f"],
+                ["sub dword ptr [{s} + {frag}], {i:e}", "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
+                ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
+                block, frag = const offset_of!(RowBlock, fragments)),
+            (false, false) => rows_loop!("jae", ["17f", "7f", "27f"], [], [], []; block),
+            (true, false) => rows_loop!("ja", ["17f", "7f", "27f"], [], [], []; block),
         }
     }
 }
