@@ -144,9 +144,9 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.8% fewer
-  instructions per frame (4.5% with the \`asm\` loops, which then need no count either), the
-  M0 3.0% (1.9% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
-  loop; 2.4% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  instructions per frame (4.7% with the \`asm\` loops, which then need no count either), the
+  M0 3.0% (1.8% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
+  loop; 1.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -213,8 +213,8 @@ $stages
   and lr and keeps the step along a row, the colour, the depth walk, the row's address, the
   width and the block's address there. It walks the same exact edges from the same kind of
   block, each edge's five words loaded by one \`ldm\` (1.3% of the frame against a load a
-  word): 23 instructions a row (2 more when an edge's remainder borrows, 4 more to clamp)
-  and 10 to enter a
+  word): 25 instructions a row (2 more when an edge's remainder borrows; a span crossing a
+  side of the buffers clamped out of line) and 10 to enter a
   span, against about 60 for the compiled row loop; its pixel loop 9 instructions (7 for a
   fragment that loses) against the compiler's 10, the colour moved into a low register for
   each span (0.4%). The M0's frame 5.1% fewer instructions (3.536 M → 3.357 M), 510 bytes
@@ -233,7 +233,7 @@ $stages
   about 10.2 a fragment (its unrolled pixel loop reloads the colour from the stack, and a
   span's odd pixel goes apart). With the \`asm\` feature x86-64 runs the whole triangle's
   rows in assembly too (src/target/x86_64.rs), from the Cortex-M loops' block and set-up:
-  both edges' walks stay in registers (their steps in the block), 12 instructions a row, 6
+  both edges' walks stay in registers (their steps in the block), 14 instructions a row, 6
   to enter a span, 7 a fragment and 2 more a write (now 5 and 2, and 2 for each two
   pixels): the frame 10% fewer instructions (1.660 M → 1.493 M), where the same block
   walked by a compiled loop (for targets without assembly) had measured 3.7% more. The clamps to the clip columns take at most 1.8% of the M4's frame
@@ -333,16 +333,17 @@ $stages
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
 - **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
   0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 60% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.44 M, the rest about 0.95 M). The largest excess found is per drawn triangle: on
-  the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.64 M, about 60 of them the \`asm\` row loop's set-up)
+  rows, 62% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.43 M, the rest about 0.95 M). The largest excess found is per drawn triangle: on
+  the M4 about 700 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.67 M, about 80 of them the \`asm\` row loop's set-up with
+  its test of the columns)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
   dozens of pieces of 5 to 25 instructions: about 0.34 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
-  20 a row against about 49), and so are the M0's (Thumb-1: 23 a row against about 60, 9 a
+  20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
   stage (0.69 M, about 590
   a vertex, of which the transform takes about 200 and the divisions by w about 155) and the depth

@@ -64,7 +64,7 @@ CUTS = [
         '            "b 4f",',
     ), (
         "src/target/thumb1.rs",
-        '                "bge 4f",',
+        '                "bhs 22f",',
         '                "b 4f",',
     )]),
     ("fill set-up (colour, depth walk: steps and start; first row)", "no rows", [(

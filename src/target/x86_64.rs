@@ -6,9 +6,9 @@
 //! assembly on the block `asm_rows::solid_rows` fills in ([`RowBlock`]), as on the Cortex-M
 //! cores. An edge is the walk the compiled loop steps (`FractionStepper`: its value in the
 //! high half of one 64-bit word, one addition a row); both walks stay in registers, their
-//! steps in the block. A row takes 12 instructions (both edges, the depth walk and the row
-//! address; 4 more to clamp the span to the target's columns, for a triangle that crosses its
-//! left or right side) and 6 more to enter a span; the compiled row
+//! steps in the block. A row takes 14 instructions (both edges, two unsigned comparisons of
+//! the span's ends with the target's columns, a span that crosses a side clamped out of line,
+//! the depth walk and the row address) and 6 more to enter a span; the compiled row
 //! loop took about 45 a row, 52 with pixels, moving its edges, clip columns and buffers
 //! between the stack and registers around the pixel loop and entering its unrolled pixel
 //! loop. A fragment takes 7 instructions and 2 more where it wins (the compiled loop about
