@@ -265,25 +265,36 @@ const SHORT_QUOTIENT: i32 = 8;
 const EDGE_SHORT_QUOTIENT: i32 = 16;
 
 /// [`floor_divmod`] of 32-bit operands (`d > 0`) for quotients in `[−SHORT, SHORT)` (shallow
-/// edges), by repeated subtraction; `None` otherwise.
+/// edges), by repeated subtraction; `None` otherwise. A negative `n` counts the subtractions
+/// of `⌈−n / d⌉ = ⌊(−n + d − 1) / d⌋` instead, so that both signs take [`subtract_below`]'s
+/// loop of a test, a subtraction and a count a turn (one loop telling the signs apart took
+/// half as many again; a loop adding `d` back to a negative `n` the compiler turned into a
+/// library division).
 #[inline(always)]
 fn small_floor_divmod32<const SHORT: i32>(n: i32, d: i32) -> Option<(i32, i32)> {
-    let (mut q, mut r) = (0i32, n);
-    for _ in 0..SHORT {
-        if r < 0 {
-            // r < 0 < d: no overflow.
-            r = r.wrapping_add(d);
-            q -= 1;
-            if r >= 0 {
-                return Some((q, r));
-            }
-        } else if r < d {
-            return Some((q, r));
-        } else {
-            // r ≥ d > 0: no overflow.
-            r = r.wrapping_sub(d);
-            q += 1;
+    let d = d as u32;
+    if n >= 0 {
+        let (q, r) = subtract_below(n as u32, d, SHORT as u32)?;
+        return Some((q as i32, r as i32));
+    }
+    // −n ≤ 2³¹ and d − 1 < 2³¹: no overflow. k ≤ SHORT, r in [0, d).
+    let m = (n as u32).wrapping_neg().wrapping_add(d.wrapping_sub(1));
+    let (k, rem) = subtract_below(m, d, SHORT as u32 + 1)?;
+    Some((
+        (k as i32).wrapping_neg(),
+        d.wrapping_sub(1).wrapping_sub(rem) as i32,
+    ))
+}
+
+/// `(⌊m / d⌋, m mod d)` for `d > 0` and quotients below `turns`, by repeated subtraction;
+/// `None` otherwise.
+#[inline(always)]
+fn subtract_below(mut m: u32, d: u32, turns: u32) -> Option<(u32, u32)> {
+    for q in 0..turns {
+        if m < d {
+            return Some((q, m));
         }
+        m = m.wrapping_sub(d);
     }
     None
 }
@@ -714,14 +725,21 @@ mod tests {
 
     /// The division-free quotients (used where division is a library routine, so not on the
     /// host) equal floor division wherever they answer, and answer for quotients −1, 0, 1
-    /// (−8 to 7 for 32-bit operands).
+    /// (for 32-bit operands exactly those from −SHORT to SHORT − 1): at random, and at the
+    /// ends of i32 for both operands.
     #[test]
     fn small_quotients_equal_floor_division() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        for _ in 0..200_000 {
+        let ends = [i32::MIN, i32::MIN + 1, -17, -16, -1, 0, 1, 15, 16, i32::MAX];
+        let ends = ends.iter().flat_map(|&n| {
+            [1, 2, 3, 1 << 27, (1 << 27) + 1, 1 << 30, i32::MAX].map(|d| (n as i64, d as i64))
+        });
+        let random = (0..200_000).map(|_| {
             let x = rng.next_u64();
             let d = ((x >> 40) as i64 >> (x % 24)).max(1);
-            let n = ((x as i64) >> (x % 64)) % (20 * d + 1);
+            (((x as i64) >> (x % 64)) % (20 * d + 1), d)
+        });
+        for (n, d) in ends.collect::<std::vec::Vec<_>>().into_iter().chain(random) {
             let expected = (n.div_euclid(d), n.rem_euclid(d));
             match small_floor_divmod(n, d) {
                 Some(qr) => assert_eq!(qr, expected, "{n} / {d}"),
@@ -736,10 +754,9 @@ mod tests {
                         EDGE_SHORT_QUOTIENT,
                     ),
                 ] {
-                    match found {
-                        Some(qr) => assert_eq!(qr, expected, "{n} / {d}"),
-                        None => assert!(!(-short..short).contains(&expected.0), "{n} / {d}"),
-                    }
+                    // An answer for every quotient in range, none outside it.
+                    let in_range = (-short..short).contains(&expected.0);
+                    assert_eq!(found, in_range.then_some(expected), "{n} / {d}");
                 }
                 assert_eq!(floor_divmod32::<SHORT_QUOTIENT>(n, d), expected);
             }
