@@ -253,15 +253,16 @@ fn small_floor_divmod(n: i64, d: i64) -> Option<(i64, i64)> {
     }
 }
 
-/// Quotients [`small_floor_divmod32`] finds by subtraction before a library division, for lines:
-/// up to this many subtractions (six instructions each) cost less than the division (on
-/// Cortex-M0 a hundred or more, and its call).
-const SHORT_QUOTIENT: i32 = 8;
+/// Quotients [`small_floor_divmod32`] finds by subtraction before a library division, for lines
+/// (after [`small_floor_divmod`]'s −1 to 1): many lines are flat, and the turns a larger
+/// quotient takes before the division are lost (on Cortex-M0 the `wire` preset 1.6% fewer
+/// instructions with 2 than with 8, 3.8% more with 1).
+const SHORT_QUOTIENT: i32 = 2;
 
 /// [`SHORT_QUOTIENT`] for a triangle's edges, whose quotients are the pixels a row steps and the
-/// first row's offset: with 16 the M0's reference frame takes 0.3% fewer instructions (32:
-/// 0.35%, where an edge as flat as that costs up to 200 instructions more before the
-/// division); for lines, many of them flatter, 16 cost the `wire` preset 2.5%.
+/// first row's offset: with 16 the M0's reference frame takes 0.4% fewer instructions than
+/// with 8 (32: 0.5%, where an edge as flat as that costs up to 100 instructions more before
+/// the division); for lines, many of them flatter, 16 cost the `wire` preset 3.6% more than 2.
 const EDGE_SHORT_QUOTIENT: i32 = 16;
 
 /// [`floor_divmod`] of 32-bit operands (`d > 0`) for quotients in `[−SHORT, SHORT)` (shallow
