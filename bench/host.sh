@@ -263,7 +263,8 @@ $stages
   by subtraction before a library division, one loop of a test, a subtraction and a count
   for both signs (a negative numerator counts the subtractions of ⌈−n / d⌉): 0.4% against
   quotients to 8, and the loop 1% against one that told the signs apart at 9 instructions a
-  turn; the flatter lines of a wireframe try 2: 16 cost the \`wire\` preset 3.6%), then flat shading: the face normal (a cross
+  turn; the flatter lines of a wireframe try 2: 16 cost the \`wire\` preset 3.6%), then
+  flat shading: the face normal (a cross
   product of 32-bit edges; on 32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4
   since its edges divide, 0.7% of its frame; on x86-64 1% more; taken as it is, within
   ±2³¹, where it was halved from 2³⁰ on: the M4 1.3%, the M0 0.2%; untested where every

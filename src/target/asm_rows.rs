@@ -84,8 +84,9 @@ const _: () = {
 /// the span loop over
 /// [`for_each_row`](crate::raster::TriangleSpans::for_each_row) does, the counts into `stats`
 /// when `K` counts, with the whole row loop in assembly. False, with nothing drawn, where
-/// `width` is 0 or from 2¹⁶ on, or the edges would be set up again on the way down (none happens to the
-/// pipeline's triangles in a [`ColorDepth`](super::ColorDepth)); nothing is drawn where the
+/// `width` is 0 or from 2¹⁶ on, or the edges would be set up again on the way down (none
+/// happens to the pipeline's triangles in a [`ColorDepth`](super::ColorDepth) of fewer than
+/// 2¹⁶ columns); nothing is drawn where the
 /// buffers do not hold the triangle's rows (never, for rows clipped to the target).
 #[inline(always)]
 #[allow(unsafe_code, clippy::too_many_arguments)]
@@ -387,6 +388,28 @@ mod tests {
             &mut cells,
             &mut stats
         ));
+        assert_eq!((&cells, stats), (&untouched, Stats::default()));
+        // Rows of 2¹⁶ pixels or more (and of none) take the caller's loop: declined.
+        let v = vertices(Shape::Wide);
+        let full = PixelRect::new(0, 0, W as i32, H as i32);
+        let rows = rows_in_range(v, full, doubled_area(v[0], v[1], v[2]));
+        let bits = color_bits(&Rgb565::RED).unwrap_or_default();
+        for width in [0, 1 << 16] {
+            let (colors, depths) = &mut cells;
+            let drew = rows.as_ref().is_some_and(|rows| {
+                solid_rows::<Rgb565, Less, Counted, i32>(
+                    rows,
+                    &walk(),
+                    colors,
+                    depths,
+                    0,
+                    width,
+                    bits,
+                    &mut stats,
+                )
+            });
+            assert!(!drew && rows.is_some(), "{width}");
+        }
         assert_eq!((cells, stats), (untouched, Stats::default()));
         // Colours of another size take the caller's loop.
         assert_eq!(color_bits(&[0u8; 3]), None);
