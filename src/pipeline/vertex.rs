@@ -219,7 +219,7 @@ pub(crate) fn outcode_and_project(
             None => (div_round(xh, w), div_round(yh, w), div_round(z << 30, w)),
         }
     } else {
-        let by_w = DivideBy::new(w);
+        let by_w = DivideBy::new_positive32(w as i32);
         let (qx, qy) = (by_w.round_i32(xh), by_w.round_i32(yh));
         (qx, qy, by_w.round_fraction(z))
     };
