@@ -210,7 +210,7 @@ pub(crate) fn outcode_and_project(
         // Without a divide instruction: short quotients by w in words (w below 2²⁹, every
         // ordinary scene; 6% of the Cortex-M0's frame) instead of a reciprocal to 32 bits,
         // their numerators within the band and the planes as they require (untested there).
-        match ShortQuotients::new(w) {
+        match ShortQuotients::new32(w as u32) {
             Some(by_w) => (
                 by_w.round(xh) as i64,
                 by_w.round(yh) as i64,
