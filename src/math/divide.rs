@@ -177,7 +177,8 @@ const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     ((q as u64) << s) + ((r << s) + d / 2) as u64 / d as u64
 }
 
-/// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁸` and `0 ≤ n ≤ d`
+/// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁸` (a word: its range
+/// one test, the Cortex-M4's frame 0.5% fewer instructions than of a 64-bit `d`) and `0 ≤ n ≤ d`
 /// (a vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁸ within
 /// four units of the camera); `None` for another `d`. `n` must lie in `[0, d]`, which the
 /// caller knows (a vertex inside the near and far planes; checking it here cost the
@@ -185,9 +186,9 @@ const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
 /// `n·2³⁰ + ⌊d/2⌋ < 2⁴⁹` is the magnitude `div_round` rounds, and the quotient is at most
 /// 2³⁰.
 #[inline(always)]
-const fn fraction_by_short(n: i64, d: i64) -> Option<i64> {
-    // Unsigned: d − 1 in [0, 2¹⁸ − 1), one test.
-    if d.wrapping_sub(1) as u64 >= (1 << SHORT_DIVISOR_BITS) - 1 {
+const fn fraction_by_short(n: i64, d: i32) -> Option<i64> {
+    // Unsigned: d − 1 in [0, 2¹⁸ − 1), one test of a word.
+    if (d as u32).wrapping_sub(1) >= (1 << SHORT_DIVISOR_BITS) - 1 {
         return None;
     }
     // `div_round_by_short(n << 30, d)` without its sign and saturation, which n ≥ 0 and the
@@ -293,7 +294,7 @@ impl DivideBy {
     #[inline(always)]
     pub(crate) fn round_fraction(&self, n: i64) -> i64 {
         if !NARROW_CORE && cfg!(target_pointer_width = "32") {
-            if let Some(q) = fraction_by_short(n, self.d) {
+            if let Some(q) = fraction_by_short(n, self.d32) {
                 return q;
             }
         }
@@ -807,17 +808,17 @@ mod tests {
                 _ => (rng.next_u64() % (d as u64 + 1)) as i64,
             };
             assert_eq!(
-                fraction_by_short(n, d),
+                fraction_by_short(n, d as i32),
                 Some(div_round(n << 30, d)),
                 "{n} / {d}"
             );
         }
-        assert_eq!(fraction_by_short(top, top), Some(1 << 30));
-        for (n, d) in [(0, 0), (1, 0), (1, top + 1), (0, -3)] {
+        assert_eq!(fraction_by_short(top, top as i32), Some(1 << 30));
+        for (n, d) in [(0, 0), (1, 0), (1, top as i32 + 1), (0, -3), (0, i32::MIN)] {
             assert_eq!(fraction_by_short(n, d), None, "{n} / {d}");
         }
         // An n outside [0, d] gives some quotient, and no overflow.
-        for (n, d) in [(-1, 5), (6, 5), (i64::MAX, top), (i64::MIN, 1)] {
+        for (n, d) in [(-1, 5), (6, 5), (i64::MAX, top as i32), (i64::MIN, 1)] {
             assert!(fraction_by_short(n, d).is_some(), "{n} / {d}");
         }
     }
