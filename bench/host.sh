@@ -143,8 +143,8 @@ $stages
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 4.9% fewer
-  instructions per frame (4.8% with the \`asm\` loops, which then need no count either), the
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.4% fewer
+  instructions per frame (5.5% with the \`asm\` loops, which then need no count either), the
   M0 3.0% (1.8% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
   loop; 1.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
@@ -336,10 +336,10 @@ $stages
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
 - **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
   0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 63% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  rows, 64% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
   about 0.43 M, the rest about 0.95 M). The largest excess found is per drawn triangle: on
-  the M4 about 700 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.67 M, about 80 of them the \`asm\` row loop's set-up with
+  the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.64 M, about 80 of them the \`asm\` row loop's set-up with
   its test of the columns)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
