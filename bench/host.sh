@@ -153,7 +153,8 @@ $stages
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
   frame); with the \`asm\` loop in line the pixels take about 0.26 M there.
-- **Rows and span entries**: every row steps two edges, clips the span to the target, and
+- **Rows and span entries**: every row steps two edges, clips the span to the target (on
+  the M4 only for a triangle that crosses its left or right side), and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
   the span against the buffers (one bounds check serves both: same length), takes the depth
   at its first pixel from the row's value at column 0 (one 32-bit multiply and addition:
@@ -236,9 +237,14 @@ $stages
   both edges' walks stay in registers (their steps in the block), 14 instructions a row, 6
   to enter a span, 7 a fragment and 2 more a write (now 5 and 2, and 2 for each two
   pixels): the frame 10% fewer instructions (1.660 M → 1.493 M), where the same block
-  walked by a compiled loop (for targets without assembly) had measured 3.7% more. The clamps to the clip columns take at most 1.8% of the M4's frame
-  (measured without them), but a copy of the row loop without them for triangles within
-  the columns measured 0.7% more on the M4 and 12% more on the M0, 750 to 780 bytes more. An
+  walked by a compiled loop (for targets without assembly) had measured 3.7% more. In the
+  \`asm\` loops the clamps to the columns took 4 or 5 instructions a row (without them the
+  M4's frame measured 2.5% fewer, the M0's 1.0%, x86-64's 2.2%): the M4 takes a second loop
+  without them for a triangle within the columns (one unsigned test a vertex,
+  \`TriangleRows::within_columns\`: 1.5% net, about 200 bytes), the M0 and x86-64 test both ends
+  of every span by two unsigned comparisons and clamp out of line (a second loop and its test
+  gained them only 0.3% and 0.4%, 216 bytes on the M0). A copy of the compiled row loop
+  without the clamps had measured 0.7% more on the M4 and 12% more on the M0. An
   earlier fixed-point walk for small triangles only (exact while rows × 16 × height ≤ 2¹⁶,
   in a second copy of the row loop) measured no gain on the M4, 1.8% more on x86-64 and
   850 bytes more flash. Two passes

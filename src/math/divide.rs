@@ -177,14 +177,14 @@ const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     ((q as u64) << s) + ((r << s) + d / 2) as u64 / d as u64
 }
 
-/// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁸` (a word: its range
-/// one test, the Cortex-M4's frame 0.5% fewer instructions than of a 64-bit `d`) and `0 ≤ n ≤ d`
-/// (a vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁸ within
-/// four units of the camera); `None` for another `d`. `n` must lie in `[0, d]`, which the
-/// caller knows (a vertex inside the near and far planes; checking it here cost the
-/// Cortex-M4's frame 0.2%); outside that the result means nothing, but nothing overflows.
-/// `n·2³⁰ + ⌊d/2⌋ < 2⁴⁹` is the magnitude `div_round` rounds, and the quotient is at most
-/// 2³⁰.
+/// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁸` and `0 ≤ n ≤ d` (a
+/// vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁸ within four
+/// units of the camera); `None` for another `d`. `d` is a word, its range one test (the
+/// Cortex-M4's frame 0.5% fewer instructions than the test of a 64-bit `d`). `n` must lie in
+/// `[0, d]`, which the caller knows (a vertex inside the near and far planes; checking it here
+/// cost the Cortex-M4's frame 0.2%); outside that the result means nothing, but nothing
+/// overflows. `n·2³⁰ + ⌊d/2⌋ < 2⁴⁹` is the magnitude `div_round` rounds, and the quotient is at
+/// most 2³⁰.
 #[inline(always)]
 const fn fraction_by_short(n: i64, d: i32) -> Option<i64> {
     // Unsigned: d − 1 in [0, 2¹⁸ − 1), one test of a word.

@@ -839,18 +839,14 @@ mod tests {
         if let Some((runs, within)) = runs_of(p, clip) {
             assert_eq!(walk_runs(runs, (clip.x0, clip.x1)), in_runs);
             if within && clip.x0 == 0 {
-                let (x_min, x_max) = (i32::MIN, i32::MAX);
-                let raw = walk_runs(runs, (x_min, x_max));
-                assert!(raw.iter().all(|&(x0, x1)| (0..=clip.x1).contains(&x0)
-                    && (0..=clip.x1).contains(&x1)), "{p:?} {clip:?}");
+                assert!(unclamped_ends_within(runs, clip.x1), "{p:?} {clip:?}");
             }
         }
         in_runs
     }
 
     /// The runs of `p` in `clip` for a target's own row loop, if it has rows and its edges need
-    /// no second set-up.
-    /// Also whether they lie within the columns `0..clip.x1` (`within_columns`).
+    /// no second set-up, and whether `within_columns` holds for the columns `0..clip.x1`.
     fn runs_of(p: [ScreenPoint; 3], clip: PixelRect) -> Option<(Runs, bool)> {
         let area = doubled_area(p[0], p[1], p[2]);
         if area == 0 {
@@ -858,6 +854,13 @@ mod tests {
         }
         let rows = rows_in_range(p, clip, area)?;
         Some((rows.runs()?, rows.within_columns(columns_bound(clip.x1))))
+    }
+
+    /// Every span end of `runs`, before any clamp, lies in `0..=width`.
+    fn unclamped_ends_within(runs: Runs, width: i32) -> bool {
+        let ends = walk_runs(runs, (i32::MIN, i32::MAX));
+        ends.iter()
+            .all(|&(x0, x1)| (0..=width).contains(&x0) && (0..=width).contains(&x1))
     }
 
     /// The rows of [`Runs`] as their documentation describes them (as the `asm` feature's row
@@ -1184,12 +1187,7 @@ mod tests {
             );
             if ok {
                 within += 1;
-                let raw = walk_runs(runs, (i32::MIN, i32::MAX));
-                assert!(
-                    raw.iter()
-                        .all(|&(x0, x1)| (0..=w).contains(&x0) && (0..=w).contains(&x1)),
-                    "{p:?}"
-                );
+                assert!(unclamped_ends_within(runs, w), "{p:?}");
             } else {
                 outside += 1;
             }

@@ -5,17 +5,16 @@
 //! A whole triangle's rows, both runs (above and below its middle vertex), in one naked
 //! function: inline assembly on ARMv6-M gets six registers, and the pixel loop alone needs
 //! eight, so the function saves and uses the high registers r8 to r11 and lr as the calling
-//! convention lets it: the step along a row in r8, which the pixel loop adds; the colour in
-//! r9, moved into r6 for each span while the block's address waits in lr; the depth walk,
-//! the row's address and the width in r10 to r12. The edges and the triangle's constants live
-//! in one block in memory ([`RowBlock`]), the edges as the exact quotient-and-remainder walk
+//! convention lets it: the step along a row in r8, which the pixel loop adds; the colour in r9,
+//! moved into r6 for each span while the block's address waits in lr; the depth walk, the row's
+//! address and the width in r10 to r12. The edges and the triangle's constants live in one
+//! block in memory ([`RowBlock`]), the edges as the exact quotient-and-remainder walk
 //! (`CeilStepper`) the compiled loop steps, each edge's five words loaded by one `ldm`. A row
 //! takes 25 instructions (2 more for each edge whose remainder borrows; both span ends tested
-//! against the columns by two unsigned comparisons, a span that crosses a side clamped out
-//! of line) and 10 more to enter
-//! a span, where the compiled row loop took about 60; a pixel 9 instructions (7 when the
-//! fragment loses), where the compiler's loop took 10. The reference frame on the Cortex-M0
-//! 5.1% fewer instructions (3.536 M → 3.357 M), 510 bytes more flash.
+//! against the columns by two unsigned comparisons, a span that crosses a side clamped out of
+//! line) and 10 more to enter a span, where the compiled row loop took about 60; a pixel 9
+//! instructions (7 when the fragment loses), where the compiler's loop took 10. The reference
+//! frame on the Cortex-M0 5.1% fewer instructions (3.536 M → 3.357 M), 510 bytes more flash.
 //!
 //! It computes exactly what the Rust loops compute: the same span ends (the same steps of the
 //! same quotients and remainders, clamped to the same columns), the same depths (`acc >> 15`,

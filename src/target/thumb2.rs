@@ -12,22 +12,21 @@
 //!
 //! The row loop ([`rows`], on the block `asm_rows::solid_rows` fills in) around the same pixel
 //! loop: a whole triangle, both runs of rows (above and below its middle vertex), in one
-//! block of assembly. A row takes 20
-//! instructions (each edge's end by one division of its numerator, the depth walk and the
-//! row address; 4 more to clamp the span to the target's columns, for a triangle that
-//! crosses its left or right side), 4 more to enter a span, where the
-//! compiler's row loop took about 49, moving the row's state between registers and the
-//! stack around the pixel loop; here the edges and the constants are read in pairs from one
-//! block in memory. Its set-up takes about 60 instructions a triangle more than the
-//! compiler's; with it the reference frame on the Cortex-M4F takes 3.9% fewer instructions
-//! (1.722 M → 1.655 M).
+//! block of assembly. A row takes 20 instructions (each edge's end by one division of its
+//! numerator, the depth walk and the row address; 4 more to clamp the span to the target's
+//! columns, for a triangle that crosses its left or right side), 4 more to enter a span,
+//! where the compiler's row loop took about 49, moving the row's state between registers and
+//! the stack around the pixel loop; here the edges and the constants are read in pairs from
+//! one block in memory. Its set-up takes about 60 instructions a triangle more than the
+//! compiler's (about 80 with the test of the columns); with it the reference frame on the
+//! Cortex-M4F took 3.9% fewer instructions (1.722 M → 1.655 M).
 //!
 //! Both compute exactly what the Rust loops compute: the same span ends (the same unsigned
-//! division of the same numerators, clamped to the same columns), the same depths (`acc >>
-//! 15`, below 2¹⁶ since every value lies in [0, 2³¹)), the same test on the same stored
-//! depth (zero-extended to 32 bits in both), the same stores and counts. The row loop's runs
-//! are [`Runs`], whose walk a host test checks against the Rust row loops; the firmware
-//! presets' frame hashes, equal to the host's, check both loops under emulation
+//! division of the same numerators, clamped to the same columns, or already within them), the
+//! same depths (`acc >> 15`, below 2¹⁶ since every value lies in [0, 2³¹)), the same test on
+//! the same stored depth (zero-extended to 32 bits in both), the same stores and counts. The
+//! row loop's runs are [`Runs`], whose walk a host test checks against the Rust row loops; the
+//! firmware presets' frame hashes, equal to the host's, check both loops under emulation
 //! (`bench/mcu/run.sh`, in CI): the `variants` preset each of the four forms (depth test ×
 //! counted), on ties too, and spans clamped to the target's columns (its `clipped`
 //! configuration), `bands` a band's first row other than 0.
