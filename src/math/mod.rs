@@ -28,7 +28,7 @@ pub(crate) use scalar::{
 };
 
 pub(crate) use divide::{div_round, DivideBy, ShortQuotients};
-pub(crate) use sqrt::isqrt_u64;
+pub(crate) use sqrt::{isqrt_ceil, isqrt_u64, sqrt_above};
 #[cfg(test)]
 pub(crate) use vector::dot_wide;
 pub(crate) use vector::{

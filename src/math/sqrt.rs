@@ -3,7 +3,10 @@
 
 use super::scalar::{mul_wide_u32, NARROW_CORE};
 
-/// `floor(sqrt(n))`, bit by bit: 32 iterations of shifts, adds and compares, no division.
+/// `floor(sqrt(n))`, bit by bit: 32 iterations of shifts, adds and compares, no division. Out
+/// of line: its callers take roots once per frame or object, not per vertex or triangle, and
+/// share one copy.
+#[inline(never)]
 pub(crate) const fn isqrt_u64(n: u64) -> u64 {
     let mut rem = n;
     let mut root = 0u64;
@@ -21,6 +24,42 @@ pub(crate) const fn isqrt_u64(n: u64) -> u64 {
         bit >>= 2;
     }
     root
+}
+
+/// `⌈√n⌉` for `n < 2⁶⁴ − 2³³` (three squared i32 magnitudes are below 3·2⁶²), which fits 32
+/// bits.
+pub(crate) const fn isqrt_ceil(n: u64) -> u32 {
+    let r = isqrt_u64(n);
+    (if r * r < n { r + 1 } else { r }) as u32
+}
+
+/// An upper bound on `√n`, within a factor `1 + 2⁻¹⁴` of it (or 1 above it), found in 32-bit
+/// words: `n`'s top bits below 2³¹ (an even shift `2k`), rounded up, their root rounded up, times
+/// 2^k. Where a bound serves, a fraction of [`isqrt_u64`]'s work on 32-bit cores (its 64-bit
+/// steps are several instructions each there, on Cortex-M0 about 1,400 a root).
+pub(crate) const fn sqrt_above(n: u64) -> u64 {
+    let bits = 64 - n.leading_zeros();
+    let k = bits.saturating_sub(31).div_ceil(2);
+    // At least n / 2^2k, at most 2³¹.
+    let top = (n >> (2 * k)) as u32 + 1;
+    let mut rem = top;
+    let mut root = 0u32;
+    let mut bit = 1u32 << 30;
+    while bit > top {
+        bit >>= 2;
+    }
+    while bit != 0 {
+        if rem >= root + bit {
+            rem -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    // ⌈√top⌉ · 2^k ≥ √n.
+    let root = if root * root < top { root + 1 } else { root };
+    (root as u64) << k
 }
 
 /// `RSQRT[i] = 2³³ / sqrt(i + 0.5)`: seeds for `1/sqrt(m)` with `m` in `[2²⁸, 2³⁰)`, indexed by
@@ -119,6 +158,32 @@ mod tests {
             .chain([(1 << 30) - 1])
         {
             assert_eq!(rsqrt_q45(m) as u64, wide(m as u64), "{m}");
+        }
+    }
+
+    #[test]
+    fn sqrt_above_bounds_the_root_closely() {
+        let mut rng = crate::testing::XorShift(0x94D0_49BB_1331_11EBu64);
+        let ends = [
+            0u64,
+            1,
+            2,
+            3,
+            4,
+            (1 << 31) - 1,
+            1 << 31,
+            (1 << 32) - 1,
+            u64::MAX,
+        ];
+        let random = (0..100_000).map(|_| {
+            let x = rng.next_u64();
+            x >> (x % 64)
+        });
+        for n in ends.into_iter().chain(random) {
+            let r = sqrt_above(n) as u128;
+            assert!(r * r >= n as u128, "{n}");
+            let exact = isqrt_u64(n) as u128;
+            assert!(r <= exact + 1 + exact / (1 << 14), "{n} {r} {exact}");
         }
     }
 

@@ -13,7 +13,7 @@ use core::fmt;
 
 use embedded_graphics::pixelcolor::Rgb888;
 
-use crate::math::{Angle, Mat4, Trig, Vec3};
+use crate::math::{isqrt_ceil, Angle, Mat4, Trig, Vec3};
 
 pub use normals::vertex_normals;
 pub use shapes::{
@@ -93,6 +93,8 @@ pub struct Mesh<'a> {
     /// The largest component magnitude of any triangle's two edges from its first vertex (raw
     /// Q16.16).
     edge_extent: u32,
+    /// The largest distance of any position from the origin, rounded up (raw Q16.16).
+    radius: u32,
 }
 
 impl<'a> Mesh<'a> {
@@ -104,6 +106,7 @@ impl<'a> Mesh<'a> {
         edges: None,
         extent: 0,
         edge_extent: 0,
+        radius: 0,
     };
 
     /// A mesh of `positions` and `triangles`; every index must be below `positions.len()`.
@@ -135,15 +138,23 @@ impl<'a> Mesh<'a> {
             i += 1;
         }
         let mut extent = 0u32;
+        // The largest squared distance from the origin: three squares below 2⁶² each.
+        let mut farthest = 0u64;
         let mut k = 0;
         while k < n {
             let c = positions[k].to_bits();
+            let mut squared = 0u64;
             let mut j = 0;
             while j < 3 {
-                if c[j].unsigned_abs() > extent {
-                    extent = c[j].unsigned_abs();
+                let m = c[j].unsigned_abs();
+                if m > extent {
+                    extent = m;
                 }
+                squared += m as u64 * m as u64;
                 j += 1;
+            }
+            if squared > farthest {
+                farthest = squared;
             }
             k += 1;
         }
@@ -154,6 +165,7 @@ impl<'a> Mesh<'a> {
             edges: None,
             extent,
             edge_extent,
+            radius: isqrt_ceil(farthest),
         })
     }
 
@@ -192,6 +204,22 @@ impl<'a> Mesh<'a> {
     #[must_use]
     pub const fn extent(&self) -> u32 {
         self.extent
+    }
+
+    /// The largest distance of any position from the model's origin, rounded up, raw Q16.16:
+    /// the radius of a sphere about the origin that holds the mesh (the vertex stage skips
+    /// the clip planes' tests of each vertex of an object whose sphere lies inside them).
+    ///
+    /// ```
+    /// use fixed3d::math::Vec3;
+    /// use fixed3d::mesh::Mesh;
+    /// let p = [Vec3::from_int(3, 0, 0), Vec3::from_int(0, 3, 4), Vec3::from_int(-1, 1, 1)];
+    /// let mesh = Mesh::new(&p, &[[0, 1, 2]]).unwrap();
+    /// assert_eq!(mesh.radius(), 5 << 16);
+    /// ```
+    #[must_use]
+    pub const fn radius(&self) -> u32 {
+        self.radius
     }
 
     /// The largest magnitude of any component of any triangle's two edges from its first
@@ -388,5 +416,43 @@ mod tests {
         assert_eq!(mesh(&[[0, 1, 2], [3, 4, 0]]), Ok(u32::MAX));
         assert_eq!(mesh(&[]), Ok(0));
         assert_eq!(Mesh::EMPTY.edge_extent(), 0);
+    }
+
+    /// `radius` is the largest distance of any position from the origin, rounded up, at the
+    /// ends of the coordinate range too (three squares of 2³¹ sum to 3·2⁶²), and for random
+    /// positions; the vertex stage's sphere test relies on it bounding every position.
+    #[test]
+    fn radius_is_the_farthest_distance_rounded_up() {
+        let q = Vec3::from_bits;
+        let radius = |p: &[Vec3]| Mesh::new(p, &[]).map(|m| m.radius()).unwrap_or(0);
+        assert_eq!(radius(&[q(3, 4, 0), q(-2, 2, 1)]), 5);
+        assert_eq!(radius(&[q(1, 1, 1)]), 2);
+        assert_eq!(radius(&[q(i32::MIN, i32::MIN, i32::MIN)]), 3_719_550_787);
+        assert_eq!(radius(&[]), 0);
+        assert_eq!(Mesh::EMPTY.radius(), 0);
+        let mut rng = crate::testing::XorShift(0x5851_F42D_4C95_7F2Du64);
+        for _ in 0..2000 {
+            let p: std::vec::Vec<Vec3> = (0..4)
+                .map(|_| {
+                    let x = rng.next_u64() as i32 >> (rng.next_u64() % 32);
+                    q(x, rng.next_u64() as i32 >> 8, rng.next_u64() as i32)
+                })
+                .collect();
+            let r = u128::from(radius(&p));
+            let farthest = p
+                .iter()
+                .map(|v| {
+                    v.to_bits()
+                        .iter()
+                        .map(|&c| (c as i128 * c as i128) as u128)
+                        .sum()
+                })
+                .max()
+                .unwrap_or(0u128);
+            assert!(
+                r * r >= farthest && (r == 0 || (r - 1) * (r - 1) < farthest),
+                "{p:?}"
+            );
+        }
     }
 }

@@ -235,6 +235,13 @@ impl Frame {
             let extent = object.mesh.extent();
             // Clip coordinates known to need no reduction (every unit-scale scene).
             let fits = clip_from_model.fits_32_bits(extent);
+            // Every vertex known inside every plane (an object on screen and beyond the near
+            // plane): no vertex is tested against them (the reference frame 2% fewer
+            // instructions on every core). The test costs about what the tests of 100 vertices
+            // do on the Cortex-M0, 60 on the M4: smaller meshes test each vertex.
+            let known_inside = fits
+                && object.mesh.positions().len() >= SPHERE_TEST_VERTICES
+                && map.sphere_inside(&clip_from_model, object.mesh.radius());
             // Without a long multiply, the transform in 32-bit products where they suffice.
             let halves = if NARROW_CORE {
                 clip_from_model.halves(extent)
@@ -248,13 +255,14 @@ impl Frame {
                     // long multiplies, one path from the transform to the projection, whose
                     // coordinates then stay in registers (x86-64 0.7%, Cortex-M4 1.6% of the
                     // frame; on the M4 with the projection in line, see `outcode_and_project`).
-                    outcode_and_project(clip_from_model.transform_short(p.to_bits()), &map, true)
+                    let c = clip_from_model.transform_short(p.to_bits());
+                    outcode_and_project(c, &map, true, known_inside)
                 } else {
                     let c = match &halves {
                         Some(h) => h.transform(p.to_bits()),
                         None => clip_from_model.transform_within(p.to_bits(), extent),
                     };
-                    outcode_and_project_unfit(c, &map, fits)
+                    outcode_and_project_unfit(c, &map, fits, known_inside)
                 };
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
@@ -290,6 +298,10 @@ impl Frame {
         })
     }
 }
+
+/// The fewest vertices of a mesh whose bounding sphere the vertex stage tests against the clip
+/// planes instead of testing each vertex (see `ScreenMap::sphere_inside`).
+const SPHERE_TEST_VERTICES: usize = 128;
 
 /// A frame whose vertices are transformed, ready to draw (in full or band by band).
 #[derive(Debug)]

@@ -8,8 +8,8 @@
 
 use super::Precision;
 use crate::math::{
-    below_bits, div_round, magnitude_bits, mul_short, shr_round, DivideBy, ShortQuotients,
-    DEPTH_ONE, NARROW_CORE,
+    below_bits, div_round, magnitude_bits, mul_short, mul_wide, shr_round, sqrt_above, DivideBy,
+    Mat4, ShortQuotients, DEPTH_ONE, NARROW_CORE,
 };
 use crate::projection::Viewport;
 use crate::raster::{ScreenPoint, PIPELINE_LIMIT};
@@ -90,6 +90,31 @@ impl ScreenMap {
         }
     }
 
+    /// True when `m` takes every point within `radius` of the origin (raw Q16.16) inside
+    /// every clip plane, its coordinates rounded as [`Mat4::transform_short`] rounds them (for
+    /// a matrix that [`fits_32_bits`](Mat4::fits_32_bits)): then the vertex stage need not
+    /// test each vertex against the planes. A plane's distance is an affine function of the
+    /// point, `a·t + g·p` (`a` its coefficients over the clip coordinates, `t` the matrix'
+    /// translation, `g = a·M` through its other columns), least on the sphere at
+    /// `a·t − |g|·radius`, and the rounding of the four coordinates moves it by at most half
+    /// of `Σ|a_i|`. False for matrices far beyond unit scale (see [`keeps_sphere`]): the
+    /// vertices' tests decide then.
+    pub(crate) fn sphere_inside(&self, m: &Mat4, radius: u32) -> bool {
+        // At most 2¹⁴ each (viewports of at most 2048 pixels).
+        let (hw, hh, g) = (self.half_w as i32, self.half_h as i32, GUARD as i32);
+        // Each plane's coefficients of (x, y, z, w), in `distance`'s order.
+        let planes = [
+            [0, 0, 1, 0],
+            [0, 0, -1, 1],
+            [hw, 0, 0, g],
+            [-hw, 0, 0, g],
+            [0, -hh, 0, g],
+            [0, hh, 0, g],
+        ];
+        let rows = m.to_bits();
+        planes.iter().all(|a| keeps_sphere(a, &rows, radius))
+    }
+
     /// `x·half_w` and `y·half_h` of reduced coordinates (below 2³¹; half sizes at most 2¹⁴,
     /// viewports being at most 2048 pixels): 32-bit factors, the second short.
     #[inline(always)]
@@ -99,6 +124,46 @@ impl ScreenMap {
             mul_short(y as i32, self.half_h as i32),
         )
     }
+}
+
+/// True when the plane of coefficients `a` (over x, y, z, w; each within ±2¹⁵) keeps every
+/// point within `radius` of the origin strictly inside, through the matrix of raw entries
+/// `rows`, its clip coordinates rounded half up (see [`ScreenMap::sphere_inside`]): times 2¹⁶,
+/// `a·t·2¹⁶ − |g|·radius − 2¹⁵·Σ|a_i| > 0`. False where `a·t` reaches 2⁴⁷ or a component of
+/// `g` 2⁴⁰ (matrices far beyond unit scale).
+#[inline(never)]
+fn keeps_sphere(a: &[i32; 4], rows: &[[i32; 4]; 4], radius: u32) -> bool {
+    // The plane's coefficients of the matrix' columns, each within ±2⁴⁸ (the products of its
+    // zero coefficients left out: most are).
+    let mut columns = [0i64; 4];
+    for (&ai, r) in a.iter().zip(rows) {
+        if ai != 0 {
+            for (c, &m) in columns.iter_mut().zip(r) {
+                *c += mul_wide(ai, m);
+            }
+        }
+    }
+    let [g0, g1, g2, at_origin] = columns;
+    // The origin itself inside (below 2⁴⁷, so that the products below fit).
+    if at_origin <= 0 || !below_bits(at_origin, 47) {
+        return false;
+    }
+    // Within ±2⁶³, and positive where the plane keeps the sphere.
+    let least =
+        (at_origin << 16) - (i64::from(a.iter().map(|v| v.unsigned_abs()).sum::<u32>()) << 15);
+    // `least` must exceed |g|·radius: `g'`, g's components over 2⁹ rounded up (below 2³¹ for
+    // every g below 2⁴⁰, squares summing below 2⁶⁴), bounds |g| / 2⁹, `sqrt_above` bounds |g'|.
+    const SHIFT: u32 = 9;
+    let g = [g0, g1, g2];
+    if !g.iter().all(|&c| below_bits(c, 31 + SHIFT)) {
+        return false;
+    }
+    let squares = g.iter().fold(0u64, |s, &c| {
+        let c = (c.unsigned_abs() + (1 << SHIFT) - 1) >> SHIFT;
+        s + c * c
+    });
+    let spread = sqrt_above(squares).saturating_mul(u64::from(radius));
+    least > 0 && (least as u64) >> SHIFT > spread
 }
 
 /// Shift that brings the largest magnitude below 2³¹.
@@ -174,7 +239,9 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 /// The vertex stage's hot path: the planes a clip-space vertex is outside of (one bit each,
 /// in [`distance`]'s order) and, when there are none, its [`project`]ion; the reduction and
 /// the viewport products are done once for both. `fits` says that every coordinate is known
-/// to lie strictly within ±2³¹ (see `Mat4::fits_32_bits`): nothing to reduce.
+/// to lie strictly within ±2³¹ (see `Mat4::fits_32_bits`): nothing to reduce. `inside` says
+/// that the vertex is known to lie inside every plane (see [`ScreenMap::sphere_inside`]): its
+/// outcode is 0 without a test.
 // In line on cores with a long multiply, where the vertex loop calls it on its path from a
 // transform known to fit 32 bits (the coordinates stay in registers: the Cortex-M4's frame 1.6%
 // fewer instructions); on the others at the compiler's choice (forced: Cortex-M0 0.6% more).
@@ -190,10 +257,15 @@ pub(crate) fn outcode_and_project(
     c: [i64; 4],
     m: &ScreenMap,
     fits: bool,
+    inside: bool,
 ) -> (u8, ScreenPoint, i32) {
     let [x, y, z, w] = if fits { c } else { reduce(c) };
     let (xh, yh) = m.viewport_products(x, y);
-    let code = outcode_reduced(z, w, xh, yh);
+    let code = if inside {
+        0
+    } else {
+        outcode_reduced(z, w, xh, yh)
+    };
     if code != 0 {
         return (code, ScreenPoint::default(), 0);
     }
@@ -237,14 +309,15 @@ pub(crate) fn outcode_and_project_unfit(
     c: [i64; 4],
     m: &ScreenMap,
     fits: bool,
+    inside: bool,
 ) -> (u8, ScreenPoint, i32) {
     #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
     {
-        let _ = fits;
+        let _ = (fits, inside);
         outcode_and_project_by_planes(c, m)
     }
     #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
-    outcode_and_project(c, m, fits)
+    outcode_and_project(c, m, fits, inside)
 }
 
 /// [`outcode_and_project`] from its definitions: [`distance`] and [`inside`] for each plane of
@@ -303,11 +376,122 @@ fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(S
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::vec;
+    use std::vec::Vec;
 
     /// The screen map of a 320x240 viewport at the default precision.
     fn map_320x240() -> ScreenMap {
         let viewport = Viewport::new(320, 240).unwrap_or_else(|_| unreachable!());
         ScreenMap::new(&viewport, &Precision::DEFAULT)
+    }
+
+    /// A frame of a random camera, lens and viewport, and a random model matrix (rotation and
+    /// scale), with a random mesh radius: the clip-from-model matrix, the screen map and the
+    /// radius (raw Q16.16).
+    fn random_view(rng: &mut crate::testing::XorShift) -> (Mat4, ScreenMap, u32) {
+        use crate::camera::LookAt;
+        use crate::math::{Angle, Scalar, Vec3};
+        use crate::pipeline::Frame;
+        use crate::projection::Projection;
+        let mut unit = |lo: f64, hi: f64| lo + (hi - lo) * (rng.next_u64() % 10_000) as f64 / 1e4;
+        let (w, h) = (unit(16.0, 2048.0) as u32, unit(16.0, 2048.0) as u32);
+        let viewport = Viewport::new(w, h).unwrap_or_else(|_| unreachable!());
+        let (distance, turn, tilt) = (
+            unit(1.5, 30.0),
+            unit(0.0, std::f64::consts::TAU),
+            unit(-1.4, 1.4),
+        );
+        let eye = Vec3::from_f32(
+            (distance * turn.cos() * tilt.cos()) as f32,
+            (distance * tilt.sin()) as f32,
+            (distance * turn.sin() * tilt.cos()) as f32,
+        )
+        .unwrap_or_else(|| unreachable!());
+        let aim = Vec3::from_f32(unit(-0.5, 0.5) as f32, unit(-0.5, 0.5) as f32, 0.0)
+            .unwrap_or_else(|| unreachable!());
+        let view = LookAt::new(eye, aim, Vec3::Y)
+            .view()
+            .unwrap_or_else(|_| unreachable!());
+        let near = unit(0.1, 2.0);
+        let projection = Projection::perspective(
+            Angle::from_degrees(unit(20.0, 120.0) as i32),
+            viewport.aspect(),
+            Scalar::from_num(near),
+            Scalar::from_num(near + unit(0.5, 40.0)),
+        )
+        .unwrap_or_else(|_| unreachable!());
+        let frame = Frame::new(&view, &projection, viewport);
+        let scale = Scalar::from_num(unit(0.2, 3.0));
+        let model = Mat4::rotation_y(Angle::from_degrees(unit(0.0, 360.0) as i32))
+            * Mat4::rotation_x(Angle::from_degrees(unit(0.0, 360.0) as i32))
+            * Mat4::scaling(Vec3::new(scale, scale, scale));
+        let radius = (unit(0.05, 4.0) * 65536.0) as u32;
+        let m = frame.clip_from_model_within(&model, radius);
+        (m, ScreenMap::new(&viewport, &Precision::DEFAULT), radius)
+    }
+
+    /// Points within `radius` of the origin: on the sphere (where a plane's distance is least)
+    /// in random directions, and inside it.
+    fn points_in_sphere(rng: &mut crate::testing::XorShift, radius: u32) -> Vec<[i32; 3]> {
+        (0..64)
+            .map(|k| {
+                let mut c = || (rng.next_u64() % 20_001) as f64 / 1e4 - 1.0;
+                let d = [c(), c(), c()];
+                let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-9);
+                let r = radius as f64 * if k % 4 == 0 { c().abs() } else { 1.0 };
+                // Rounded toward the origin: within the radius.
+                d.map(|v| (v / len * r).trunc() as i32)
+            })
+            .collect()
+    }
+
+    /// Case T18's rule on the near plane and the guard band's, for whole objects: where
+    /// `sphere_inside` holds for a mesh's radius, every point within it projects inside every
+    /// plane, to the point and depth the per-vertex path gives (which the vertex stage then
+    /// skips). It holds for the reference scene (the torus, radius 1.4, seen from 2.6 units
+    /// with the near plane at 1.0) and for many random views, and fails for many others.
+    #[test]
+    fn t18_sphere_inside_every_plane_means_every_vertex_inside() {
+        let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
+        let (mut held, mut failed) = (0, 0);
+        for _ in 0..4000 {
+            let (m, map, radius) = random_view(&mut rng);
+            if !m.fits_32_bits(radius) || !map.sphere_inside(&m, radius) {
+                failed += 1;
+                continue;
+            }
+            held += 1;
+            for p in points_in_sphere(&mut rng, radius) {
+                let c = m.transform_short(p);
+                let tested = outcode_and_project(c, &map, true, false);
+                assert_eq!(tested.0, 0, "{m:?} {radius} {p:?}");
+                assert_eq!(outcode_and_project(c, &map, true, true), tested);
+            }
+        }
+        assert!(held > 500 && failed > 500, "{held} {failed}");
+        // The reference scene's torus and view (bench/SCENE.md).
+        use crate::camera::LookAt;
+        use crate::math::{Angle, Scalar, Vec3};
+        use crate::mesh::{torus, torus_counts, Mesh};
+        use crate::projection::Projection;
+        let (nv, nt) = torus_counts(48, 24);
+        let (mut p, mut n, mut t) = (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0; 3]; nt]);
+        let s = Scalar::from_num;
+        let mesh = torus(s(1.0), s(0.4), 48, 24, &mut p, &mut n, &mut t).unwrap_or(Mesh::EMPTY);
+        let viewport = Viewport::new(320, 240).unwrap_or_else(|_| unreachable!());
+        let view = LookAt::new(Vec3::new(s(0.0), s(0.0), s(2.6)), Vec3::ZERO, Vec3::Y).view();
+        let projection =
+            Projection::perspective(Angle::from_degrees(60), viewport.aspect(), s(1.0), s(10.0));
+        let (Ok(view), Ok(projection)) = (view, projection) else {
+            unreachable!()
+        };
+        let model =
+            Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::rotation_x(Angle::from_degrees(20));
+        let m = super::super::Frame::new(&view, &projection, viewport)
+            .clip_from_model_within(&model, mesh.extent());
+        let map = ScreenMap::new(&viewport, &Precision::DEFAULT);
+        assert_eq!(mesh.radius(), 91751);
+        assert!(m.fits_32_bits(mesh.extent()) && map.sphere_inside(&m, mesh.radius()));
     }
 
     /// The written-out outcode is the one `distance` and `inside` define, plane by plane.
@@ -329,11 +513,15 @@ mod tests {
                     code | (1 << k)
                 }
             });
-            let general = outcode_and_project(c, &map, false);
+            let general = outcode_and_project(c, &map, false, false);
             assert_eq!(general.0, expected, "{c:?}");
             assert_eq!(outcode_and_project_by_planes(c, &map), general, "{c:?}");
             if c.iter().all(|v| below_bits(*v, 31)) {
-                assert_eq!(outcode_and_project(c, &map, true).0, expected, "{c:?}");
+                assert_eq!(
+                    outcode_and_project(c, &map, true, false).0,
+                    expected,
+                    "{c:?}"
+                );
             }
         }
     }
@@ -356,7 +544,7 @@ mod tests {
             let (x, y) = (coordinate(w * 13), coordinate(w * 18));
             let z = coordinate(w).abs();
             let c = [x, y, z, w];
-            let (code, p, depth) = outcode_and_project(c, &map, false);
+            let (code, p, depth) = outcode_and_project(c, &map, false, false);
             assert_eq!(
                 outcode_and_project_by_planes(c, &map),
                 (code, p, depth),
@@ -394,7 +582,7 @@ mod tests {
                     coordinate(w).abs(),
                     w,
                 ];
-                let (code, p, _) = outcode_and_project(c, &map, false);
+                let (code, p, _) = outcode_and_project(c, &map, false, false);
                 if code == 0 {
                     let offset = (p.x - 2560).abs().max((p.y - 1920).abs()) as i64;
                     assert!(offset <= GUARD, "{bits} {c:?} {p:?}");
