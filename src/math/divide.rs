@@ -177,33 +177,54 @@ const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     ((q as u64) << s) + ((r << s) + d / 2) as u64 / d as u64
 }
 
-/// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁸` and `0 ≤ n ≤ d` (a
-/// vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁸ within four
-/// units of the camera); `None` for another `d`. `d` is a word, its range one test (the
+/// [`fraction_by_short`]'s divisors lie below `2^FRACTION_DIVISOR_BITS`: a numerator of at most
+/// the divisor, shifted by a 13-bit digit, still fits a 32-bit word.
+const FRACTION_DIVISOR_BITS: u32 = 19;
+
+/// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁹` and `0 ≤ n ≤ d` (a
+/// vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁹ within
+/// eight units of the camera); `None` for another `d`. `d` is a word, its range one test (the
 /// Cortex-M4's frame 0.5% fewer instructions than the test of a 64-bit `d`). `n` must lie in
 /// `[0, d]`, which the caller knows (a vertex inside the near and far planes; checking it here
 /// cost the Cortex-M4's frame 0.2%); outside that the result means nothing, but nothing
-/// overflows. `n·2³⁰ + ⌊d/2⌋ < 2⁴⁹` is the magnitude `div_round` rounds, and the quotient is at
+/// overflows. `n·2³⁰ + ⌊d/2⌋ < 2⁵⁰` is the magnitude `div_round` rounds, and the quotient is at
 /// most 2³⁰.
 #[inline(always)]
 const fn fraction_by_short(n: i64, d: i32) -> Option<i64> {
-    // Unsigned: d − 1 in [0, 2¹⁸ − 1), one test of a word.
-    if (d as u32).wrapping_sub(1) >= (1 << SHORT_DIVISOR_BITS) - 1 {
+    // Unsigned: d − 1 in [0, 2¹⁹ − 1), one test of a word.
+    if (d as u32).wrapping_sub(1) >= (1 << FRACTION_DIVISOR_BITS) - 1 {
         return None;
     }
+    Some(fraction_in_words(n as u32, d as u32))
+}
+
+/// [`fraction_by_short`]'s quotient, for `0 < d < 2¹⁹` and `0 ≤ n ≤ d`, which the caller
+/// knows (see there; any other operands give a meaningless quotient, without overflow, but
+/// `d = 0` divides by zero): with 64-bit words one division, else [`fraction_by_digits`].
+#[inline(always)]
+pub(crate) const fn fraction_in_words(n: u32, d: u32) -> i64 {
+    if cfg!(target_pointer_width = "64") {
+        // Below 2⁵⁰.
+        return ((((n as u64) << 30) + (d / 2) as u64) / d as u64) as i64;
+    }
+    fraction_by_digits(n, d)
+}
+
+/// [`fraction_in_words`] by three 32-bit divisions (tested on every host).
+#[inline(always)]
+const fn fraction_by_digits(n: u32, d: u32) -> i64 {
     // `div_round_by_short(n << 30, d)` without its sign and saturation, which n ≥ 0 and the
     // bound need not (measured: 0.5% of the M4's frame), and with three divides instead of
-    // four: the numerator's low 30 bits are zero. With n·2¹⁴ = q₁·d + r₁ and r₁·2¹⁴ = q₂·d + r₂,
-    // n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁶ + q₂·2²) + r₂·2² + ⌊d/2⌋, whose last part divides to at most 4.
-    // n ≤ d < 2¹⁸: every shifted value below fits a word, and the sum is at most 2³⁰ (the
+    // four: the numerator's low 30 bits are zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂,
+    // n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) + r₂·2⁴ + ⌊d/2⌋, whose last part divides to at most 16.
+    // n ≤ d < 2¹⁹: every shifted value below fits a word, and the sum is at most 2³⁰ (the
     // sums wrap, without meaning, only for an n beyond d).
-    let (n, d) = (n as u32, d as u32);
-    let t = n << 14;
+    let t = n << 13;
     let (q1, r1) = (t / d, t % d);
-    let t = r1 << 14;
+    let t = r1 << 13;
     let (q2, r2) = (t / d, t % d);
-    let q3 = ((r2 << 2) + d / 2) / d;
-    Some((q1 << 16).wrapping_add(q2 << 2).wrapping_add(q3) as i64)
+    let q3 = ((r2 << 4) + d / 2) / d;
+    (q1 << 17).wrapping_add(q2 << 4).wrapping_add(q3) as i64
 }
 
 /// [`div_round`] by a 32-bit division, when `|n| + d/2` and `d > 0` fit 32 bits.
@@ -218,10 +239,11 @@ const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
     Some(with_sign_of(n, (a as u32 / d as u32) as u64))
 }
 
-/// [`div_round`] of 32-bit operands (`d > 0`) in 32-bit words, exactly: the one quotient
-/// beyond i32, 2³¹ (of `i32::MIN / 1`), is negated after wrapping to the true `−2³¹`.
+/// [`div_round`] of 32-bit operands (`d > 0`, which the caller knows; `d = 0` divides by zero)
+/// in 32-bit words, exactly: the one quotient beyond i32, 2³¹ (of `i32::MIN / 1`), is negated
+/// after wrapping to the true `−2³¹`.
 #[inline(always)]
-const fn div_round_i32(n: i32, d: i32) -> i32 {
+pub(crate) const fn div_round_i32(n: i32, d: i32) -> i32 {
     // |n| ≤ 2³¹ and d/2 < 2³⁰: the sum fits u32.
     let q = ((n.unsigned_abs() + d as u32 / 2) / d as u32) as i32;
     if n < 0 {
@@ -288,7 +310,7 @@ impl DivideBy {
 
     /// [`round`](Self::round)`(n · 2³⁰)` for `0 ≤ n ≤ d`, which the caller knows (a vertex's
     /// depth `z / w` in Q1.30, inside the near and far planes; any other `n` gives a meaningless
-    /// quotient): on 32-bit cores with a divide instruction and `d` below 2¹⁸ (unit-scale clip
+    /// quotient): on 32-bit cores with a divide instruction and `d` below 2¹⁹ (unit-scale clip
     /// coordinates) [`fraction_by_short`] in line, where [`div_round`] is a call that first
     /// chooses a path by the operands' sizes.
     #[inline(always)]
@@ -795,32 +817,36 @@ mod tests {
     }
 
     /// A depth's division by `w` through short digits equals `div_round(n · 2³⁰, d)` wherever
-    /// it applies (`0 < d < 2¹⁸`, `0 ≤ n ≤ d`, the ends included), declines other divisors, and
+    /// it applies (`0 < d < 2¹⁹`, `0 ≤ n ≤ d`, the ends included), declines other divisors, and
     /// overflows nowhere for an `n` outside its range (which its caller never passes).
     #[test]
     fn fraction_by_short_equals_div_round() {
         let mut rng = crate::testing::XorShift(0x5DEE_CE66_D1CE_4E5Bu64);
-        let top = (1i64 << SHORT_DIVISOR_BITS) - 1;
+        let top = (1i64 << FRACTION_DIVISOR_BITS) - 1;
         for i in 0..200_000u32 {
-            let d = ((rng.next_u64() >> 46) as i64 >> (i % 18)).max(1);
+            let d = ((rng.next_u64() >> 45) as i64 >> (i % 19)).max(1);
             let n = match i % 100 {
                 0 => 0,
                 1 => d,
                 _ => (rng.next_u64() % (d as u64 + 1)) as i64,
             };
+            let expected = div_round(n << 30, d);
+            assert_eq!(fraction_by_short(n, d as i32), Some(expected), "{n} / {d}");
             assert_eq!(
-                fraction_by_short(n, d as i32),
-                Some(div_round(n << 30, d)),
+                fraction_by_digits(n as u32, d as u32),
+                expected,
                 "{n} / {d}"
             );
         }
         assert_eq!(fraction_by_short(top, top as i32), Some(1 << 30));
+        assert_eq!(fraction_by_digits(top as u32, top as u32), 1 << 30);
         for (n, d) in [(0, 0), (1, 0), (1, top as i32 + 1), (0, -3), (0, i32::MIN)] {
             assert_eq!(fraction_by_short(n, d), None, "{n} / {d}");
         }
         // An n outside [0, d] gives some quotient, and no overflow.
         for (n, d) in [(-1, 5), (6, 5), (i64::MAX, top as i32), (i64::MIN, 1)] {
             assert!(fraction_by_short(n, d).is_some(), "{n} / {d}");
+            fraction_by_digits(n as u32, d as u32);
         }
     }
 

@@ -31,7 +31,7 @@ use crate::projection::{Projection, Viewport};
 use crate::scene::Scene;
 use crate::shade::{vertex_normal, Shading};
 
-use vertex::{outcode_and_project, outcode_and_project_unfit, ScreenMap};
+use vertex::{outcode_and_project, outcode_and_project_unfit, Known, ScreenMap};
 
 /// Which triangles back-face culling removes. Front faces are counter-clockwise when seen from
 /// outside (in world space); on screen (y down) that is a negative signed area.
@@ -239,9 +239,11 @@ impl Frame {
             // plane): no vertex is tested against them (the reference frame 2% fewer
             // instructions on every core). The test costs about what the tests of 100 vertices
             // do on the Cortex-M0, 60 on the M4: smaller meshes test each vertex.
-            let known_inside = fits
-                && object.mesh.positions().len() >= SPHERE_TEST_VERTICES
-                && map.sphere_inside(&clip_from_model, object.mesh.radius());
+            let known = if fits && object.mesh.positions().len() >= SPHERE_TEST_VERTICES {
+                map.known(&clip_from_model, object.mesh.radius())
+            } else {
+                Known::Nothing
+            };
             // Without a long multiply, the transform in 32-bit products where they suffice.
             let halves = if NARROW_CORE {
                 clip_from_model.halves(extent)
@@ -256,13 +258,13 @@ impl Frame {
                     // coordinates then stay in registers (x86-64 0.7%, Cortex-M4 1.6% of the
                     // frame; on the M4 with the projection in line, see `outcode_and_project`).
                     let c = clip_from_model.transform_short(p.to_bits());
-                    outcode_and_project(c, &map, true, known_inside)
+                    outcode_and_project(c, &map, true, known)
                 } else {
                     let c = match &halves {
                         Some(h) => h.transform(p.to_bits()),
                         None => clip_from_model.transform_within(p.to_bits(), extent),
                     };
-                    outcode_and_project_unfit(c, &map, fits, known_inside)
+                    outcode_and_project_unfit(c, &map, fits, known)
                 };
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
@@ -300,7 +302,7 @@ impl Frame {
 }
 
 /// The fewest vertices of a mesh whose bounding sphere the vertex stage tests against the clip
-/// planes instead of testing each vertex (see `ScreenMap::sphere_inside`).
+/// planes instead of testing each vertex (see `ScreenMap::known`).
 const SPHERE_TEST_VERTICES: usize = 128;
 
 /// A frame whose vertices are transformed, ready to draw (in full or band by band).

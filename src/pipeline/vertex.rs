@@ -8,8 +8,8 @@
 
 use super::Precision;
 use crate::math::{
-    below_bits, div_round, magnitude_bits, mul_short, mul_wide, shr_round, sqrt_above, DivideBy,
-    Mat4, ShortQuotients, DEPTH_ONE, NARROW_CORE,
+    below_bits, div_round, div_round_i32, fraction_in_words, magnitude_bits, mul_short, mul_wide,
+    shr_round, sqrt_above, DivideBy, Mat4, ShortQuotients, DEPTH_ONE, NARROW_CORE,
 };
 use crate::projection::Viewport;
 use crate::raster::{ScreenPoint, PIPELINE_LIMIT};
@@ -90,29 +90,46 @@ impl ScreenMap {
         }
     }
 
-    /// True when `m` takes every point within `radius` of the origin (raw Q16.16) inside
-    /// every clip plane, its coordinates rounded as [`Mat4::transform_short`] rounds them (for
-    /// a matrix that [`fits_32_bits`](Mat4::fits_32_bits)): then the vertex stage need not
-    /// test each vertex against the planes. A plane's distance is an affine function of the
-    /// point, `a·t + g·p` (`a` its coefficients over the clip coordinates, `t` the matrix'
-    /// translation, `g = a·M` through its other columns), least on the sphere at
-    /// `a·t − |g|·radius`, and the rounding of the four coordinates moves it by at most half
-    /// of `Σ|a_i|`. False for matrices far beyond unit scale (see [`keeps_sphere`]): the
-    /// vertices' tests decide then.
-    pub(crate) fn sphere_inside(&self, m: &Mat4, radius: u32) -> bool {
+    /// What holds for every point within `radius` of the origin (raw Q16.16) through `m`, its
+    /// coordinates rounded as [`Mat4::transform_short`] rounds them (for a matrix that
+    /// [`fits_32_bits`](Mat4::fits_32_bits)): inside every clip plane, and then whether its
+    /// projection's operands fit words (see [`Known`]). A plane's distance is an affine
+    /// function of the point, `a·t + g·p` (`a` its coefficients over the clip coordinates, `t`
+    /// the matrix' translation, `g = a·M` through its other columns), least on the sphere at
+    /// `a·t − |g|·radius`, and the rounding of the four coordinates moves it by at most half of
+    /// `Σ|a_i|`; so are the bounds on `x·half_w`, `y·half_h` and `w` (see [`keeps_sphere`]).
+    pub(crate) fn known(&self, m: &Mat4, radius: u32) -> Known {
         // At most 2¹⁴ each (viewports of at most 2048 pixels).
         let (hw, hh, g) = (self.half_w as i32, self.half_h as i32, GUARD as i32);
+        let rows = m.to_bits();
+        let keeps = |&(a, offset): &([i32; 4], i64)| keeps_sphere(&a, offset, &rows, radius);
         // Each plane's coefficients of (x, y, z, w), in `distance`'s order.
         let planes = [
-            [0, 0, 1, 0],
-            [0, 0, -1, 1],
-            [hw, 0, 0, g],
-            [-hw, 0, 0, g],
-            [0, -hh, 0, g],
-            [0, hh, 0, g],
+            ([0, 0, 1, 0], 0),
+            ([0, 0, -1, 1], 0),
+            ([hw, 0, 0, g], 0),
+            ([-hw, 0, 0, g], 0),
+            ([0, -hh, 0, g], 0),
+            ([0, hh, 0, g], 0),
         ];
-        let rows = m.to_bits();
-        planes.iter().all(|a| keeps_sphere(a, &rows, radius))
+        if !planes.iter().all(keeps) {
+            return Known::Nothing;
+        }
+        // |x·half_w| and |y·half_h| below 2³¹ − 1, w below 2¹⁹ (w > 0 inside the planes). Cores
+        // without a divide instruction divide by `ShortQuotients`, which needs none of it.
+        let words = i64::from(i32::MAX);
+        let bounds = [
+            ([-hw, 0, 0, 0], words),
+            ([hw, 0, 0, 0], words),
+            ([0, -hh, 0, 0], words),
+            ([0, hh, 0, 0], words),
+            ([0, 0, 0, -1], 1 << 19),
+        ];
+        if !NARROW_CORE && bounds.iter().all(keeps) {
+            Known::InWords
+        } else {
+            Known::Inside
+        }
     }
 
     /// `x·half_w` and `y·half_h` of reduced coordinates (below 2³¹; half sizes at most 2¹⁴,
@@ -126,13 +143,13 @@ impl ScreenMap {
     }
 }
 
-/// True when the plane of coefficients `a` (over x, y, z, w; each within ±2¹⁵) keeps every
-/// point within `radius` of the origin strictly inside, through the matrix of raw entries
-/// `rows`, its clip coordinates rounded half up (see [`ScreenMap::sphere_inside`]): times 2¹⁶,
-/// `a·t·2¹⁶ − |g|·radius − 2¹⁵·Σ|a_i| > 0`. False where `a·t` reaches 2⁴⁷ or a component of
-/// `g` 2⁴⁰ (matrices far beyond unit scale).
+/// True when `a·c + offset > 0` for the clip coordinates `c` (x, y, z, w; coefficients `a`
+/// within ±2¹⁵, `offset` within ±2⁴⁰) that the matrix of raw entries `rows` gives every point
+/// within `radius` of the origin, rounded half up (see [`ScreenMap::known`]): times 2¹⁶,
+/// `(a·t + offset)·2¹⁶ − |g|·radius − 2¹⁵·Σ|a_i| > 0`. False where `a·t + offset` reaches 2⁴⁷
+/// or a component of `g` 2⁴⁰ (matrices far beyond unit scale).
 #[inline(never)]
-fn keeps_sphere(a: &[i32; 4], rows: &[[i32; 4]; 4], radius: u32) -> bool {
+fn keeps_sphere(a: &[i32; 4], offset: i64, rows: &[[i32; 4]; 4], radius: u32) -> bool {
     // The plane's coefficients of the matrix' columns, each within ±2⁴⁸ (the products of its
     // zero coefficients left out: most are).
     let mut columns = [0i64; 4];
@@ -144,6 +161,7 @@ fn keeps_sphere(a: &[i32; 4], rows: &[[i32; 4]; 4], radius: u32) -> bool {
         }
     }
     let [g0, g1, g2, at_origin] = columns;
+    let at_origin = at_origin + offset;
     // The origin itself inside (below 2⁴⁷, so that the products below fit).
     if at_origin <= 0 || !below_bits(at_origin, 47) {
         return false;
@@ -164,6 +182,20 @@ fn keeps_sphere(a: &[i32; 4], rows: &[[i32; 4]; 4], radius: u32) -> bool {
     });
     let spread = sqrt_above(squares).saturating_mul(u64::from(radius));
     least > 0 && (least as u64) >> SHIFT > spread
+}
+
+/// What the vertex stage knows of every vertex of an object before it transforms any (from
+/// [`ScreenMap::known`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Known {
+    /// Nothing: each vertex is tested against the clip planes.
+    Nothing,
+    /// Inside every clip plane: no vertex is tested.
+    Inside,
+    /// Inside every clip plane, with `x·half_w` and `y·half_h` within i32 and `w` below 2¹⁹:
+    /// the projection divides words without testing its operands (on cores with a divide
+    /// instruction).
+    InWords,
 }
 
 /// Shift that brings the largest magnitude below 2³¹.
@@ -239,9 +271,8 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 /// The vertex stage's hot path: the planes a clip-space vertex is outside of (one bit each,
 /// in [`distance`]'s order) and, when there are none, its [`project`]ion; the reduction and
 /// the viewport products are done once for both. `fits` says that every coordinate is known
-/// to lie strictly within ±2³¹ (see `Mat4::fits_32_bits`): nothing to reduce. `inside` says
-/// that the vertex is known to lie inside every plane (see [`ScreenMap::sphere_inside`]): its
-/// outcode is 0 without a test.
+/// to lie strictly within ±2³¹ (see `Mat4::fits_32_bits`): nothing to reduce. `known` is what
+/// holds for the vertex before it is tested (see [`Known`]).
 // In line on cores with a long multiply, where the vertex loop calls it on its path from a
 // transform known to fit 32 bits (the coordinates stay in registers: the Cortex-M4's frame 1.6%
 // fewer instructions); on the others at the compiler's choice (forced: Cortex-M0 0.6% more).
@@ -257,14 +288,14 @@ pub(crate) fn outcode_and_project(
     c: [i64; 4],
     m: &ScreenMap,
     fits: bool,
-    inside: bool,
+    known: Known,
 ) -> (u8, ScreenPoint, i32) {
     let [x, y, z, w] = if fits { c } else { reduce(c) };
     let (xh, yh) = m.viewport_products(x, y);
-    let code = if inside {
-        0
-    } else {
+    let code = if known == Known::Nothing {
         outcode_reduced(z, w, xh, yh)
+    } else {
+        0
     };
     if code != 0 {
         return (code, ScreenPoint::default(), 0);
@@ -290,6 +321,15 @@ pub(crate) fn outcode_and_project(
             ),
             None => (div_round(xh, w), div_round(yh, w), div_round(z << 30, w)),
         }
+    } else if known == Known::InWords {
+        // x·half_w and y·half_h within i32 and 0 < z ≤ w < 2¹⁹ (see `Known::InWords`): words,
+        // untested.
+        let w = w as i32;
+        (
+            div_round_i32(xh as i32, w) as i64,
+            div_round_i32(yh as i32, w) as i64,
+            fraction_in_words(z as u32, w as u32),
+        )
     } else {
         let by_w = DivideBy::new_positive32(w as i32);
         let (qx, qy) = (by_w.round_i32(xh), by_w.round_i32(yh));
@@ -309,15 +349,15 @@ pub(crate) fn outcode_and_project_unfit(
     c: [i64; 4],
     m: &ScreenMap,
     fits: bool,
-    inside: bool,
+    known: Known,
 ) -> (u8, ScreenPoint, i32) {
     #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
     {
-        let _ = (fits, inside);
+        let _ = (fits, known);
         outcode_and_project_by_planes(c, m)
     }
     #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
-    outcode_and_project(c, m, fits, inside)
+    outcode_and_project(c, m, fits, known)
 }
 
 /// [`outcode_and_project`] from its definitions: [`distance`] and [`inside`] for each plane of
@@ -394,10 +434,10 @@ mod tests {
         use crate::pipeline::Frame;
         use crate::projection::Projection;
         let mut unit = |lo: f64, hi: f64| lo + (hi - lo) * (rng.next_u64() % 10_000) as f64 / 1e4;
-        let (w, h) = (unit(16.0, 2048.0) as u32, unit(16.0, 2048.0) as u32);
+        let (w, h) = (unit(16.0, 1024.0) as u32, unit(16.0, 1024.0) as u32);
         let viewport = Viewport::new(w, h).unwrap_or_else(|_| unreachable!());
         let (distance, turn, tilt) = (
-            unit(1.5, 30.0),
+            unit(1.5, 8.0),
             unit(0.0, std::f64::consts::TAU),
             unit(-1.4, 1.4),
         );
@@ -446,28 +486,37 @@ mod tests {
     }
 
     /// Case T18's rule on the near plane and the guard band's, for whole objects: where
-    /// `sphere_inside` holds for a mesh's radius, every point within it projects inside every
-    /// plane, to the point and depth the per-vertex path gives (which the vertex stage then
-    /// skips). It holds for the reference scene (the torus, radius 1.4, seen from 2.6 units
-    /// with the near plane at 1.0) and for many random views, and fails for many others.
+    /// `known` finds a mesh's sphere inside every plane, every point within it projects inside
+    /// every plane, to the point and depth the per-vertex path gives (which the vertex stage
+    /// then skips); where it finds the projection in words, its operands fit them. Both hold
+    /// for the reference scene (the torus, radius 1.4, seen from 2.6 units with the near plane
+    /// at 1.0) and for many random views, and fail for many others.
     #[test]
     fn t18_sphere_inside_every_plane_means_every_vertex_inside() {
         let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
-        let (mut held, mut failed) = (0, 0);
+        let (mut held, mut in_words, mut failed) = (0, 0, 0);
         for _ in 0..4000 {
             let (m, map, radius) = random_view(&mut rng);
-            if !m.fits_32_bits(radius) || !map.sphere_inside(&m, radius) {
+            let known = map.known(&m, radius);
+            if !m.fits_32_bits(radius) || known == Known::Nothing {
                 failed += 1;
                 continue;
             }
             held += 1;
+            in_words += (known == Known::InWords) as u32;
             for p in points_in_sphere(&mut rng, radius) {
                 let c = m.transform_short(p);
-                let tested = outcode_and_project(c, &map, true, false);
+                let tested = outcode_and_project(c, &map, true, Known::Nothing);
                 assert_eq!(tested.0, 0, "{m:?} {radius} {p:?}");
-                assert_eq!(outcode_and_project(c, &map, true, true), tested);
+                assert_eq!(outcode_and_project(c, &map, true, known), tested);
+                if known == Known::InWords {
+                    let (xh, yh) = map.viewport_products(c[0], c[1]);
+                    let word = |v: i64| i32::try_from(v).is_ok();
+                    assert!(word(xh) && word(yh) && 0 < c[3] && c[3] < 1 << 19, "{c:?}");
+                }
             }
         }
+        assert!(in_words > 50 && held > in_words + 500 && failed > 500);
         assert!(held > 500 && failed > 500, "{held} {failed}");
         // The reference scene's torus and view (bench/SCENE.md).
         use crate::camera::LookAt;
@@ -491,7 +540,8 @@ mod tests {
             .clip_from_model_within(&model, mesh.extent());
         let map = ScreenMap::new(&viewport, &Precision::DEFAULT);
         assert_eq!(mesh.radius(), 91751);
-        assert!(m.fits_32_bits(mesh.extent()) && map.sphere_inside(&m, mesh.radius()));
+        assert!(m.fits_32_bits(mesh.extent()));
+        assert_eq!(map.known(&m, mesh.radius()), Known::InWords);
     }
 
     /// The written-out outcode is the one `distance` and `inside` define, plane by plane.
@@ -513,12 +563,12 @@ mod tests {
                     code | (1 << k)
                 }
             });
-            let general = outcode_and_project(c, &map, false, false);
+            let general = outcode_and_project(c, &map, false, Known::Nothing);
             assert_eq!(general.0, expected, "{c:?}");
             assert_eq!(outcode_and_project_by_planes(c, &map), general, "{c:?}");
             if c.iter().all(|v| below_bits(*v, 31)) {
                 assert_eq!(
-                    outcode_and_project(c, &map, true, false).0,
+                    outcode_and_project(c, &map, true, Known::Nothing).0,
                     expected,
                     "{c:?}"
                 );
@@ -544,7 +594,7 @@ mod tests {
             let (x, y) = (coordinate(w * 13), coordinate(w * 18));
             let z = coordinate(w).abs();
             let c = [x, y, z, w];
-            let (code, p, depth) = outcode_and_project(c, &map, false, false);
+            let (code, p, depth) = outcode_and_project(c, &map, false, Known::Nothing);
             assert_eq!(
                 outcode_and_project_by_planes(c, &map),
                 (code, p, depth),
@@ -582,7 +632,7 @@ mod tests {
                     coordinate(w).abs(),
                     w,
                 ];
-                let (code, p, _) = outcode_and_project(c, &map, false, false);
+                let (code, p, _) = outcode_and_project(c, &map, false, Known::Nothing);
                 if code == 0 {
                     let offset = (p.x - 2560).abs().max((p.y - 1920).abs()) as i64;
                     assert!(offset <= GUARD, "{bits} {c:?} {p:?}");
