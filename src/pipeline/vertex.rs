@@ -115,8 +115,7 @@ impl ScreenMap {
         if !planes.iter().all(keeps) {
             return Known::Nothing;
         }
-        // |x·half_w| and |y·half_h| below 2³¹ − 1, w below 2¹⁹ (w > 0 inside the planes). Cores
-        // without a divide instruction divide by `ShortQuotients`, which needs none of it.
+        // |x·half_w| and |y·half_h| below 2³¹ − 1, w below 2¹⁹ (w > 0 inside the planes).
         let words = i64::from(i32::MAX);
         let bounds = [
             ([-hw, 0, 0, 0], words),
@@ -125,7 +124,7 @@ impl ScreenMap {
             ([0, hh, 0, 0], words),
             ([0, 0, 0, -1], 1 << 19),
         ];
-        if !NARROW_CORE && bounds.iter().all(keeps) {
+        if bounds.iter().all(keeps) {
             Known::InWords
         } else {
             Known::Inside
@@ -193,8 +192,8 @@ pub(crate) enum Known {
     /// Inside every clip plane: no vertex is tested.
     Inside,
     /// Inside every clip plane, with `x·half_w` and `y·half_h` within i32 and `w` below 2¹⁹:
-    /// the projection divides words without testing its operands (on cores with a divide
-    /// instruction).
+    /// the projection multiplies words, and on cores with a divide instruction divides them,
+    /// without testing its operands.
     InWords,
 }
 
@@ -291,7 +290,17 @@ pub(crate) fn outcode_and_project(
     known: Known,
 ) -> (u8, ScreenPoint, i32) {
     let [x, y, z, w] = if fits { c } else { reduce(c) };
-    let (xh, yh) = m.viewport_products(x, y);
+    let (xh, yh) = if known == Known::InWords {
+        // Products within i32 (see `Known::InWords`): one 32-bit multiply each, whose low word
+        // is the product (on Cortex-M0 for two of `mul_short`'s).
+        let (x, y) = (x as i32, y as i32);
+        (
+            x.wrapping_mul(m.half_w as i32) as i64,
+            y.wrapping_mul(m.half_h as i32) as i64,
+        )
+    } else {
+        m.viewport_products(x, y)
+    };
     let code = if known == Known::Nothing {
         outcode_reduced(z, w, xh, yh)
     } else {
