@@ -10,6 +10,8 @@
 //! [`ShortQuotients`] there instead: a 16-bit reciprocal and 15-bit digits in 32-bit words.
 //! Every path returns the same quotients, which the tests check against 128-bit arithmetic.
 
+use core::num::NonZeroU32;
+
 use super::scalar::{leading_zeros32, mul_wide, mul_wide_u32, shl_words, NARROW_CORE};
 
 /// `n / d` rounded to nearest with ties away from zero; `d` must be positive (a non-positive
@@ -195,24 +197,29 @@ const fn fraction_by_short(n: i64, d: i32) -> Option<i64> {
     if (d as u32).wrapping_sub(1) >= (1 << FRACTION_DIVISOR_BITS) - 1 {
         return None;
     }
-    Some(fraction_in_words(n as u32, d as u32))
+    match NonZeroU32::new(d as u32) {
+        Some(d) => Some(fraction_in_words(n as u32, d)),
+        None => None,
+    }
 }
 
-/// [`fraction_by_short`]'s quotient, for `0 < d < 2¹⁹` and `0 ≤ n ≤ d`, which the caller
-/// knows (see there; any other operands give a meaningless quotient, without overflow, but
-/// `d = 0` divides by zero): with 64-bit words one division, else [`fraction_by_digits`].
+/// [`fraction_by_short`]'s quotient, for `d < 2¹⁹` and `0 ≤ n ≤ d`, which the caller knows
+/// (see there; any other operands give a meaningless quotient, without overflow): with 64-bit
+/// words one division, else [`fraction_by_digits`].
 #[inline(always)]
-pub(crate) const fn fraction_in_words(n: u32, d: u32) -> i64 {
+pub(crate) const fn fraction_in_words(n: u32, d: NonZeroU32) -> i64 {
     if cfg!(target_pointer_width = "64") {
         // Below 2⁵⁰.
-        return ((((n as u64) << 30) + (d / 2) as u64) / d as u64) as i64;
+        let d = d.get() as u64;
+        return ((((n as u64) << 30) + d / 2) / d) as i64;
     }
     fraction_by_digits(n, d)
 }
 
 /// [`fraction_in_words`] by three 32-bit divisions (tested on every host).
 #[inline(always)]
-const fn fraction_by_digits(n: u32, d: u32) -> i64 {
+const fn fraction_by_digits(n: u32, d: NonZeroU32) -> i64 {
+    let d = d.get();
     // `div_round_by_short(n << 30, d)` without its sign and saturation, which n ≥ 0 and the
     // bound need not (measured: 0.5% of the M4's frame), and with three divides instead of
     // four: the numerator's low 30 bits are zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂,
@@ -239,11 +246,23 @@ const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
     Some(with_sign_of(n, (a as u32 / d as u32) as u64))
 }
 
-/// [`div_round`] of 32-bit operands (`d > 0`, which the caller knows; `d = 0` divides by zero)
-/// in 32-bit words, exactly: the one quotient beyond i32, 2³¹ (of `i32::MIN / 1`), is negated
-/// after wrapping to the true `−2³¹`.
+/// [`div_round_i32`] by a divisor below 2³¹ known not to be zero (no test of it).
 #[inline(always)]
-pub(crate) const fn div_round_i32(n: i32, d: i32) -> i32 {
+pub(crate) const fn div_round_word(n: i32, d: NonZeroU32) -> i32 {
+    // |n| ≤ 2³¹ and d/2 < 2³⁰: the sum fits u32.
+    let d = d.get();
+    let q = ((n.unsigned_abs() + d / 2) / d) as i32;
+    if n < 0 {
+        q.wrapping_neg()
+    } else {
+        q
+    }
+}
+
+/// [`div_round`] of 32-bit operands (`d > 0`) in 32-bit words, exactly: the one quotient
+/// beyond i32, 2³¹ (of `i32::MIN / 1`), is negated after wrapping to the true `−2³¹`.
+#[inline(always)]
+const fn div_round_i32(n: i32, d: i32) -> i32 {
     // |n| ≤ 2³¹ and d/2 < 2³⁰: the sum fits u32.
     let q = ((n.unsigned_abs() + d as u32 / 2) / d as u32) as i32;
     if n < 0 {
@@ -832,21 +851,22 @@ mod tests {
             };
             let expected = div_round(n << 30, d);
             assert_eq!(fraction_by_short(n, d as i32), Some(expected), "{n} / {d}");
-            assert_eq!(
-                fraction_by_digits(n as u32, d as u32),
-                expected,
-                "{n} / {d}"
-            );
+            let nz = NonZeroU32::new(d as u32).unwrap_or(NonZeroU32::MIN);
+            assert_eq!(fraction_by_digits(n as u32, nz), expected, "{n} / {d}");
         }
         assert_eq!(fraction_by_short(top, top as i32), Some(1 << 30));
-        assert_eq!(fraction_by_digits(top as u32, top as u32), 1 << 30);
+        let nz = NonZeroU32::new(top as u32).unwrap_or(NonZeroU32::MIN);
+        assert_eq!(fraction_by_digits(top as u32, nz), 1 << 30);
         for (n, d) in [(0, 0), (1, 0), (1, top as i32 + 1), (0, -3), (0, i32::MIN)] {
             assert_eq!(fraction_by_short(n, d), None, "{n} / {d}");
         }
         // An n outside [0, d] gives some quotient, and no overflow.
         for (n, d) in [(-1, 5), (6, 5), (i64::MAX, top as i32), (i64::MIN, 1)] {
             assert!(fraction_by_short(n, d).is_some(), "{n} / {d}");
-            fraction_by_digits(n as u32, d as u32);
+            fraction_by_digits(
+                n as u32,
+                NonZeroU32::new(d as u32).unwrap_or(NonZeroU32::MIN),
+            );
         }
     }
 

@@ -27,7 +27,7 @@ pub(crate) use scalar::{
     short_sides_cross, shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 
-pub(crate) use divide::{div_round, div_round_i32, fraction_in_words, DivideBy, ShortQuotients};
+pub(crate) use divide::{div_round, div_round_word, fraction_in_words, DivideBy, ShortQuotients};
 pub(crate) use sqrt::{isqrt_ceil, isqrt_u64, sqrt_above};
 #[cfg(test)]
 pub(crate) use vector::dot_wide;

@@ -6,9 +6,11 @@
 //! ratio that matters and keeps every product below 2⁶². In practice (coordinates below 32768)
 //! nothing is shifted.
 
+use core::num::NonZeroU32;
+
 use super::Precision;
 use crate::math::{
-    below_bits, div_round, div_round_i32, fraction_in_words, magnitude_bits, mul_short, mul_wide,
+    below_bits, div_round, div_round_word, fraction_in_words, magnitude_bits, mul_short, mul_wide,
     shr_round, sqrt_above, DivideBy, Mat4, ShortQuotients, DEPTH_ONE, NARROW_CORE,
 };
 use crate::projection::Viewport;
@@ -332,12 +334,12 @@ pub(crate) fn outcode_and_project(
         }
     } else if known == Known::InWords {
         // x·half_w and y·half_h within i32 and 0 < z ≤ w < 2¹⁹ (see `Known::InWords`): words,
-        // untested.
-        let w = w as i32;
+        // untested (w is never 0 here; as 1 it would divide without meaning, but not by zero).
+        let w = NonZeroU32::new(w as u32).unwrap_or(NonZeroU32::MIN);
         (
-            div_round_i32(xh as i32, w) as i64,
-            div_round_i32(yh as i32, w) as i64,
-            fraction_in_words(z as u32, w as u32),
+            div_round_word(xh as i32, w) as i64,
+            div_round_word(yh as i32, w) as i64,
+            fraction_in_words(z as u32, w),
         )
     } else {
         let by_w = DivideBy::new_positive32(w as i32);
