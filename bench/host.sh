@@ -143,9 +143,9 @@ $stages
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.4% fewer
-  instructions per frame (5.5% with the \`asm\` loops, which then need no count either), the
-  M0 3.0% (1.8% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
+  instructions per frame (5.7% with the \`asm\` loops, which then need no count either), the
+  M0 3.1% (1.9% with its \`asm\` loop), x86-64 3.2% (the counts hold registers in the row
   loop; 1.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
@@ -294,7 +294,13 @@ $stages
   take two multiplies each where the unit normal's took four: 1.7% of the M0's frame, 0.6%
   of the M4's, 0.3% of x86-64's, for 300 to 450 bytes; the colours are the unit normal's
   for every face of the torus). The lights are turned into model space once per object
-  when the model matrix is a rotation times a scale (no normal matrix per face). On the M4
+  when the model matrix is a rotation times a scale (no normal matrix per face). Not kept:
+  that usual face (lit in model space, short edges, Newton's normalisation: one test a
+  triangle of a fact known once per object) in line with the others' paths out of line
+  (the M0's frame 1.6% fewer instructions, x86-64's 1.5%, the M4's 0.3%, but 0.7 to 1.1 KB
+  more flash, and the \`flat\` preset's cube, whose edges are long, 1.6% more on the M4), and
+  the culled triangles counted after each object from the other counts instead of one by one
+  (the M4's and the M0's frames 0.05% fewer, x86-64's 0.2% more). On the M4
   the culling's doubled area and the depth walk's gradient numerators are sums of two
   products with one side negated, a widening multiply and a multiply-accumulate where a
   difference takes two instructions more (0.8% and 0.5% of its frame), and an edge's set-up
@@ -330,8 +336,19 @@ $stages
   word, and x and y take one digit each, the depth two: 6.1% of the frame for 590 bytes,
   against a reciprocal to 32 bits and 64-bit products; the bounds that make a digit exact,
   which every numerator of a vertex inside the planes and the guard band meets, are not
-  tested: 2.4% of the frame). The stage is almost a quarter of
-  the M0's frame, about 590 instructions a vertex, most of them the transform (about 200)
+  tested: 2.4% of the frame). No vertex of an object is tested against the clip planes
+  where its mesh's bounding sphere (\`Mesh::radius\`, about the model's origin) lies inside
+  them all, found once per object and frame for meshes of 128 vertices or more
+  (\`ScreenMap::known\`: a plane's distance is an affine function of the point, least on the
+  sphere at \`a·t − |g|·radius\`, less half of \`Σ|a_i|\` for the coordinates' rounding, |g|
+  bounded above by a root in 32-bit words; smaller meshes cost more to test than their
+  vertices' outcodes: the M4's frame 2.2% fewer instructions, the M0's 2.1%, x86-64's 1.9%,
+  about 800 bytes). Where the sphere also bounds \`x·half_w\` and \`y·half_h\` within words and
+  \`w\` below 2¹⁹ (\`Known::InWords\`), each product is one 32-bit multiply (the M0 0.7%) and,
+  with a divide instruction, the divisions take words untested (the M4 0.8%, x86-64 0.5%,
+  the depth there one 64-bit division; on the M0 a digit from the low word alone measured
+  0.4% more). The stage is about a fifth of the M0's frame, about 520 instructions a vertex
+  with the frame's matrices (about 400 in its loop), most of them the transform (about 165)
   and the divisions (about 155 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
@@ -342,8 +359,8 @@ $stages
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
 - **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
   0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 64% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.43 M, the rest about 0.95 M). The largest excess found is per drawn triangle: on
+  rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.43 M, the rest about 0.91 M). The largest excess found is per drawn triangle: on
   the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
   and the edge set-ups it calls, 0.64 M, about 80 of them the \`asm\` row loop's set-up with
   its test of the columns)
@@ -354,9 +371,9 @@ $stages
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
-  stage (0.69 M, about 590
-  a vertex, of which the transform takes about 200 and the divisions by w about 155) and the depth
-  walk's two divisions (6.6% of its frame) come first. The rest would need less work per
+  stage (0.60 M, about 520
+  a vertex, of which the transform takes about 165 and the divisions by w about 155) and the depth
+  walk's two divisions (6.8% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
   nothing) or a different scene (face normals kept in the mesh instead of computed every
