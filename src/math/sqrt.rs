@@ -3,27 +3,37 @@
 
 use super::scalar::{mul_wide_u32, NARROW_CORE};
 
-/// `floor(sqrt(n))`, bit by bit: 32 iterations of shifts, adds and compares, no division. Out
-/// of line: its callers take roots once per frame or object, not per vertex or triangle, and
+/// `floor(sqrt(n))` of an unsigned integer expression of type `$t`, bit by bit: a pair of
+/// bits a step, shifts, adds and compares, no division (the one body of [`isqrt_u64`] and
+/// [`sqrt_above`]'s 32-bit root).
+macro_rules! root_by_bits {
+    ($n:expr, $t:ty) => {{
+        let n: $t = $n;
+        let mut rem = n;
+        let mut root: $t = 0;
+        let mut bit: $t = 1 << (<$t>::BITS - 2);
+        while bit > n {
+            bit >>= 2;
+        }
+        while bit != 0 {
+            if rem >= root + bit {
+                rem -= root + bit;
+                root = (root >> 1) + bit;
+            } else {
+                root >>= 1;
+            }
+            bit >>= 2;
+        }
+        root
+    }};
+}
+
+/// `floor(sqrt(n))`, bit by bit: 32 steps of shifts, adds and compares, no division. Out of
+/// line: its callers take roots once per frame or object, not per vertex or triangle, and
 /// share one copy.
 #[inline(never)]
 pub(crate) const fn isqrt_u64(n: u64) -> u64 {
-    let mut rem = n;
-    let mut root = 0u64;
-    let mut bit = 1u64 << 62;
-    while bit > n {
-        bit >>= 2;
-    }
-    while bit != 0 {
-        if rem >= root + bit {
-            rem -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    root
+    root_by_bits!(n, u64)
 }
 
 /// `⌈√n⌉` for `n < 2⁶⁴ − 2³³` (three squared i32 magnitudes are below 3·2⁶²), which fits 32
@@ -42,21 +52,7 @@ pub(crate) const fn sqrt_above(n: u64) -> u64 {
     let k = bits.saturating_sub(31).div_ceil(2);
     // At least n / 2^2k, at most 2³¹.
     let top = (n >> (2 * k)) as u32 + 1;
-    let mut rem = top;
-    let mut root = 0u32;
-    let mut bit = 1u32 << 30;
-    while bit > top {
-        bit >>= 2;
-    }
-    while bit != 0 {
-        if rem >= root + bit {
-            rem -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
+    let root = root_by_bits!(top, u32);
     // ⌈√top⌉ · 2^k ≥ √n.
     let root = if root * root < top { root + 1 } else { root };
     (root as u64) << k
