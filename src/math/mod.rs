@@ -23,7 +23,7 @@ pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 
 pub(crate) use scalar::{
-    below_bits, is_short, magnitude_bits, map3, mul_short, mul_wide, narrow_cross,
+    below_bits, is_short, magnitude_bits, map3, mul_short, mul_wide, mul_wide_u32, narrow_cross,
     short_sides_cross, shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 

@@ -11,7 +11,7 @@ use core::num::NonZeroU32;
 use super::Precision;
 use crate::math::{
     below_bits, div_round, div_round_word, fraction_in_words, magnitude_bits, mul_short, mul_wide,
-    shr_round, sqrt_above, DivideBy, Mat4, ShortQuotients, DEPTH_ONE, NARROW_CORE,
+    mul_wide_u32, shr_round, sqrt_above, DivideBy, Mat4, ShortQuotients, DEPTH_ONE, NARROW_CORE,
 };
 use crate::projection::Viewport;
 use crate::raster::{ScreenPoint, PIPELINE_LIMIT};
@@ -178,11 +178,14 @@ fn keeps_sphere(a: &[i32; 4], offset: i64, rows: &[[i32; 4]; 4], radius: u32) ->
         return false;
     }
     let squares = g.iter().fold(0u64, |s, &c| {
-        let c = (c.unsigned_abs() + (1 << SHIFT) - 1) >> SHIFT;
-        s + c * c
+        let c = ((c.unsigned_abs() + (1 << SHIFT) - 1) >> SHIFT) as u32;
+        s + mul_wide_u32(c, c)
     });
-    let spread = sqrt_above(squares).saturating_mul(u64::from(radius));
-    least > 0 && (least as u64) >> SHIFT > spread
+    // At most 2³³: where it fits a word (every g but those near 2⁴⁰), a product of words.
+    let Ok(root) = u32::try_from(sqrt_above(squares)) else {
+        return false;
+    };
+    least > 0 && (least as u64) >> SHIFT > mul_wide_u32(root, radius)
 }
 
 /// What the vertex stage knows of every vertex of an object before it transforms any (from
