@@ -144,9 +144,9 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
-  instructions per frame (5.7% with the \`asm\` loops, which then need no count either), the
-  M0 3.1% (1.9% with its \`asm\` loop), x86-64 3.2% (the counts hold registers in the row
-  loop; 1.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  instructions per frame (5.1% with the \`asm\` loops, which then need no count either), the
+  M0 3.3% (1.8% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
+  loop; 1.9% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -347,7 +347,7 @@ $stages
   \`w\` below 2¹⁹ (\`Known::InWords\`), each product is one 32-bit multiply (the M0 0.7%) and,
   with a divide instruction, the divisions take words untested (the M4 0.8%, x86-64 0.5%,
   the depth there one 64-bit division; on the M0 a digit from the low word alone measured
-  0.4% more). The stage is about a fifth of the M0's frame, about 520 instructions a vertex
+  0.4% more). The stage is about a fifth of the M0's frame, about 510 instructions a vertex
   with the frame's matrices (about 400 in its loop), most of them the transform (about 165)
   and the divisions (about 155 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
@@ -360,7 +360,7 @@ $stages
 - **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
   0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.43 M, the rest about 0.91 M). The largest excess found is per drawn triangle: on
+  about 0.43 M, the rest about 0.90 M). The largest excess found is per drawn triangle: on
   the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
   and the edge set-ups it calls, 0.64 M, about 80 of them the \`asm\` row loop's set-up with
   its test of the columns)
@@ -371,7 +371,7 @@ $stages
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
-  stage (0.60 M, about 520
+  stage (0.59 M, about 510
   a vertex, of which the transform takes about 165 and the divisions by w about 155) and the depth
   walk's two divisions (6.8% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
