@@ -300,7 +300,9 @@ $stages
   (the M0's frame 1.6% fewer instructions, x86-64's 1.5%, the M4's 0.3%, but 0.7 to 1.1 KB
   more flash, and the \`flat\` preset's cube, whose edges are long, 1.6% more on the M4), and
   the culled triangles counted after each object from the other counts instead of one by one
-  (the M4's and the M0's frames 0.05% fewer, x86-64's 0.2% more). On the M4
+  (the M4's and the M0's frames 0.05% fewer, x86-64's 0.2% more), and the walk's three tests
+  of a triangle's indices as one test of the largest, as flat shading reads the model
+  positions (the M4's frame 0.5% more). On the M4
   the culling's doubled area and the depth walk's gradient numerators are sums of two
   products with one side negated, a widening multiply and a multiply-accumulate where a
   difference takes two instructions more (0.8% and 0.5% of its frame), and an edge's set-up
