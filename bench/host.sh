@@ -350,7 +350,7 @@ $stages
   with a divide instruction, the divisions take words untested (the M4 0.8%, x86-64 0.5%,
   the depth there one 64-bit division; on the M0 a digit from the low word alone measured
   0.4% more). The stage is about a fifth of the M0's frame, about 510 instructions a vertex
-  with the frame's matrices (about 400 in its loop), most of them the transform (about 165)
+  with the frame's matrices (about 420 in its loop), most of them the transform (about 165)
   and the divisions (about 155 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
