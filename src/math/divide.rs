@@ -249,22 +249,21 @@ const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
 /// [`div_round_i32`] by a divisor below 2³¹ known not to be zero (no test of it).
 #[inline(always)]
 pub(crate) const fn div_round_word(n: i32, d: NonZeroU32) -> i32 {
-    // |n| ≤ 2³¹ and d/2 < 2³⁰: the sum fits u32.
-    let d = d.get();
-    let q = ((n.unsigned_abs() + d / 2) / d) as i32;
-    if n < 0 {
-        q.wrapping_neg()
-    } else {
-        q
-    }
+    div_round_by(n, d.get())
 }
 
 /// [`div_round`] of 32-bit operands (`d > 0`) in 32-bit words, exactly: the one quotient
 /// beyond i32, 2³¹ (of `i32::MIN / 1`), is negated after wrapping to the true `−2³¹`.
 #[inline(always)]
 const fn div_round_i32(n: i32, d: i32) -> i32 {
+    div_round_by(n, d as u32)
+}
+
+/// [`div_round_i32`]'s and [`div_round_word`]'s one body, for `0 < d < 2³¹`.
+#[inline(always)]
+const fn div_round_by(n: i32, d: u32) -> i32 {
     // |n| ≤ 2³¹ and d/2 < 2³⁰: the sum fits u32.
-    let q = ((n.unsigned_abs() + d as u32 / 2) / d as u32) as i32;
+    let q = ((n.unsigned_abs() + d / 2) / d) as i32;
     if n < 0 {
         q.wrapping_neg()
     } else {
