@@ -284,12 +284,17 @@ $stages
   light gets the ambient colour (on Cortex-M0 that test takes the high halves of the normal
   and the light, three 32-bit products, wherever they decide it: 1.2% of the frame); for
   the others each light's cosine is the direction, shifted to 15 bits, times the light over
-  its length (\`NewtonDirection\`: one multiply by the reciprocal square root, from a seed
-  table and two Newton steps, where the unit normal took a product, a rounding and a clamp
-  per component before its own product with the light; the seeds, within 1.6% of the root,
-  bound each step's 3 − m·y² to a word, and their 64 entries take the top bits masked to
-  six as an index, so that neither needs a clamp or a bounds check: the M0's frame 0.7%,
-  the M4's 1%, x86-64's 0.35%; on 32-bit cores a cosine is taken from its low word, below a
+  its length (\`NewtonDirection\`: one multiply by the reciprocal square root, where the
+  unit normal took a product, a rounding and a clamp per component before its own product
+  with the light: the M0's frame 0.7%, the M4's 1%, x86-64's 0.35%; the root from a seed on
+  the chord between two entries of a 65-entry table, within 3.6·10⁻⁴ of it, and one Newton
+  step with its second-order term, which leaves it at most six units of 2⁻⁴⁵ above the root,
+  never below, where two steps from a table's seed within 1.6% left it up to 389 units below
+  (M9's worst from 1.6·10⁻⁷ to 3.3·10⁻⁹): the M0's frame 1.6% fewer instructions, the M4's
+  0.16% more and x86-64's 0.37% more (2.5% more without \`asm\`, whose compiled pixel
+  loop then keeps the colour on the stack); the entries take the top bits masked to six as
+  an index, and the seed bounds 3 − m·y² to a word, so that neither needs a clamp or a
+  bounds check; on 32-bit cores a cosine is taken from its low word, below a
   clamp it never reaches: the M4 0.7%, the M0 0.5%; on Cortex-M0 the 15-bit products
   take two multiplies each where the unit normal's took four: 1.7% of the M0's frame, 0.6%
   of the M4's, 0.3% of x86-64's, for 300 to 450 bytes; the colours are the unit normal's
@@ -313,7 +318,8 @@ $stages
   read the mode). At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
   products, the normal's largest component, each vertex's tuple: 4% of the M4's frame; the
-  reciprocal square root's two Newton steps: 0.3% of the frame), and a flat triangle hands
+  reciprocal square root's Newton steps, when it took two: 0.3% of the frame), and a flat
+  triangle hands
   \`fill_face\` no vertex colours
   (the shadings that do not interpolate them share one array of zeros: 1% of the M4's
   frame).

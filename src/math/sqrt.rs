@@ -58,40 +58,51 @@ pub(crate) const fn sqrt_above(n: u64) -> u64 {
     (root as u64) << k
 }
 
-/// `RSQRT[i] = 2³³ / sqrt(i + 0.5)`: seeds for `1/sqrt(m)` with `m` in `[2²⁸, 2³⁰)`, indexed by
-/// `m >> 24`, from 16 to 63 (64 entries, so that any index masked to 6 bits is one; the first
-/// 16, which no `m` of the range reaches, repeat the 16th; 256 bytes, built at compile time).
-const RSQRT: [u32; 64] = {
-    let mut t = [0u32; 64];
+/// `RSQRT[i] = 2³³ / sqrt(i)`: `1/sqrt(m)` at `m = i·2²⁴`, the knots of [`rsqrt_q45`]'s
+/// linear seed for `m` in `[2²⁸, 2³⁰)`, from 16 to 64 (65 entries, so that any index masked to
+/// 6 bits and the one after it are entries; the first 16, which no `m` of the range reaches,
+/// repeat the 16th; 260 bytes, built at compile time).
+const RSQRT: [u32; 65] = {
+    let mut t = [0u32; 65];
     let mut i = 0;
-    while i < 64 {
-        // 2³³ / sqrt(m + 0.5) = sqrt(2⁶⁷ / (2m + 1))
-        let m = if i < 16 { 16 } else { i as u128 };
-        t[i] = isqrt_u64(((1u128 << 67) / (2 * m + 1)) as u64) as u32;
+    while i < 65 {
+        // 2³³ / sqrt(k) = sqrt(2⁶⁶ / k)
+        let k = if i < 16 { 16 } else { i as u64 };
+        t[i] = isqrt_u64(((1u128 << 66) / k as u128) as u64) as u32;
         i += 1;
     }
     t
 };
 
-/// `2⁴⁵ / sqrt(m)` for `m` in `[2²⁸, 2³⁰)`: a table seed and two Newton steps, multiplications
-/// only (no division, no loop), relative error below 10⁻⁶.
+/// `2⁴⁵ / sqrt(m)` for `m` in `[2²⁸, 2³⁰)`, rounded up: at or above the root, by less than
+/// six units (checked for every `m` of the range once; the tests check a sample and the worst
+/// ones). A seed interpolated between two knots of a table and one Newton step with its
+/// second-order term, multiplications only (no division, no loop). Never below, a face facing
+/// a light exactly gets its whole colour where the light's direction is exact.
 pub(crate) fn rsqrt_q45(m: u32) -> u32 {
-    // In [16, 64) for m in the range; masked, a table index for any m (no bounds check).
+    // In [16, 64) for m in the range; masked, a table index for any m, and so is the next
+    // (no bounds check).
     let idx = (m >> 24) as usize & 63;
-    // Every factor below fits 32 bits (y stays near 2⁴⁵ / sqrt(m) ≤ 2³¹, m·y² / 2⁶⁰ near 1):
-    // 32x32→64 products, one widening multiply each on Cortex-M3/M4.
-    let wide = mul_wide_u32;
-    // m·y² in Q2.30, then y·(3 − m·y²)/2. Written out twice: at the firmware's opt-level "s"
-    // a loop of two stays a loop. The seeds lie within 1.6% of 2⁴⁵ / sqrt(m) (the worst
-    // bucket's ends: sqrt(16 / 16.5) and sqrt(17 / 16.5)), so m·y² lies within 3.1% of 1, and
-    // a step only comes nearer (u·(3 − u²)/2 ≤ 1 for u ≥ 0, and above 0.999 for u within
-    // 1.6% of 1): 3 − m·y² is a word without a clamp (on the M4 five instructions fewer a
-    // step than the saturating difference of 64-bit words).
-    let newton = |y: u32| {
-        let t = (wide(m, square_shr31(y)) >> 29) as u32;
-        (wide(y, (3u32 << 30).wrapping_sub(t)) >> 31) as u32
-    };
-    newton(newton(RSQRT[idx]))
+    let (above, below) = (RSQRT[idx], RSQRT[idx + 1]);
+    // The chord between the knots, at m's next 12 bits: within 3.6·10⁻⁴ above 2⁴⁵ / sqrt(m)
+    // (the chord of a convex function lies above it, here by at most h²·3/(32·m²) of it, with
+    // h = 2²⁴ and m ≥ 2²⁸). The knots' difference is below 2²⁶ and the table falls: a seventh
+    // of its bits times the fraction's twelve fits a word.
+    let fraction = (m >> 12) & 0xFFF;
+    let y = above.wrapping_sub((above.wrapping_sub(below) >> 7).wrapping_mul(fraction) >> 5);
+    // With e = m·y² − 1 (`d` in Q2.30, below 2²⁰), 1 / sqrt(m) = y·(1 − e/2 + 3e²/8 − …):
+    // the factor in Q1.31 is 3·2³⁰ − m·y² (Newton's step) plus 3d²/2³² (`ds` is d / 2⁵, its
+    // square below 2³⁰), and leaves an error of about e³/3 (below 10⁻¹⁰), where Newton's step
+    // alone leaves 3e²/2 (2·10⁻⁷: it had to start from a seed within 1.6% and take two). Every
+    // factor fits 32 bits (y ≤ 2³¹, m·y² / 2⁶⁰ near 1): 32x32→64 products, one widening
+    // multiply each on Cortex-M3/M4. The floors lose less than two units; 4 more in the factor
+    // (y·4 / 2³¹, two to four units, in the constant: no instruction) leave the result at or
+    // above the root.
+    let t = (mul_wide_u32(m, square_shr31(y)) >> 29) as u32;
+    let ds = (t.wrapping_sub(1 << 30) as i32) >> 5;
+    let second = (ds.wrapping_mul(ds) as u32).wrapping_mul(3) >> 22;
+    let factor = ((3u32 << 30) + 4).wrapping_sub(t).wrapping_add(second);
+    (mul_wide_u32(y, factor) >> 31) as u32
 }
 
 /// `⌊y² / 2³¹⌋` modulo 2³²: on cores without a long multiply from three 32-bit products of
@@ -125,16 +136,20 @@ fn square_shr31_in_words(y: u32) -> u32 {
 mod tests {
     use super::*;
 
+    /// The root rounded up: at or above `2⁴⁵ / sqrt(m)` by less than six units, over a
+    /// sample of the range, every knot and the ends of its buckets, and the two `m` where a
+    /// check of the whole range found the result nearest the root and farthest above it.
     #[test]
-    fn rsqrt_relative_error() {
-        let mut worst = 0f64;
-        let mut m = 1u64 << 28;
-        while m < 1 << 30 {
-            let exact = (1u64 << 45) as f64 / (m as f64).sqrt();
-            worst = worst.max((rsqrt_q45(m as u32) as f64 - exact).abs() / exact);
-            m += 9_973;
+    fn rsqrt_is_the_root_rounded_up_within_six_units() {
+        let knots = (16u32..64).flat_map(|i| [i << 24, (i << 24) + (1 << 23), (i << 24) - 1]);
+        let sample = ((1u32 << 28)..(1 << 30)).step_by(4_099);
+        let worst = [615_050_597, 268_444_031, 1 << 28, (1 << 30) - 1];
+        for m in knots.filter(|&m| m >= 1 << 28).chain(sample).chain(worst) {
+            let y = rsqrt_q45(m) as u128;
+            // y ≥ 2⁴⁵ / sqrt(m) ⇔ y²·m ≥ 2⁹⁰, and y − 6 below it.
+            assert!(y * y * m as u128 >= 1 << 90, "{m}: below");
+            assert!((y - 6) * (y - 6) * (m as u128) < 1 << 90, "{m}: six above");
         }
-        assert!(worst < 1e-6, "{worst}");
     }
 
     /// The 32-bit factors lose nothing: the same steps in 64-bit arithmetic give the same
@@ -142,12 +157,13 @@ mod tests {
     #[test]
     fn rsqrt_32_bit_factors_are_exact() {
         let wide = |m: u64| {
-            let mut y = RSQRT[(m >> 24) as usize] as u64;
-            for _ in 0..2 {
-                let t = (m * ((y * y) >> 31)) >> 29;
-                y = (y * ((3u64 << 30).saturating_sub(t))) >> 31;
-            }
-            y
+            let i = (m >> 24) as usize;
+            let (above, below) = (RSQRT[i] as u64, RSQRT[i + 1] as u64);
+            let y = above - ((((above - below) >> 7) * ((m >> 12) & 0xFFF)) >> 5);
+            let t = (m * ((y * y) >> 31)) >> 29;
+            let d = t as i64 - (1 << 30);
+            let factor = (3i64 << 30) + 4 - t as i64 + ((3 * (d >> 5) * (d >> 5)) >> 22);
+            (y * factor as u64) >> 31
         };
         for m in ((1u32 << 28)..(1 << 30))
             .step_by(997)
