@@ -337,7 +337,10 @@ $stages
   transform takes three 32-bit multiplies a term with 32-bit sums instead
   (\`HalvesTransform\`: the coordinate's high half times the whole entry, the entry's halves
   times its low half, bounded once per object: 4.8% of the frame for 460 bytes; split at
-  bit 15 rather than 16, the low halves' products sum in one word: 1.3% more), and the
+  bit 15 rather than 16, the low halves' products sum in one word: 1.3% more; for an object
+  known inside in words the transform's words go to the projection in line, \`project_words\`,
+  where the general path is a call taking 64-bit coordinates: 1.6% of the frame for about
+  800 bytes, 0.9% with one copy of the transform before both paths), and the
   divisions by \`w\` are short ones in 32-bit words (\`ShortQuotients\`: a 16-bit
   reciprocal of w's top bits, from the seed table and one Newton step, then one multiply
   estimates each 15-bit quotient digit to within 5 below, the remainder is exact in one

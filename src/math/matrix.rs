@@ -51,6 +51,13 @@ impl HalvesTransform {
     /// [`Mat4::transform_within`] of a point within the extent it was made for.
     #[inline(always)]
     pub(crate) fn transform(&self, p: [i32; 3]) -> [i64; 4] {
+        self.transform_words(p).map(i64::from)
+    }
+
+    /// [`transform`](Self::transform)'s coordinates, each a word (`A` below 2³¹ and the
+    /// rounded `L` within ±(3·2¹³ + 1): their sum halved fits one).
+    #[inline(always)]
+    pub(crate) fn transform_words(&self, p: [i32; 3]) -> [i32; 4] {
         let [x0, x1, x2] = [split15(p[0]), split15(p[1]), split15(p[2])];
         // One term of a row's sums (written out: at opt-level "s" a loop over three stays a
         // loop).
@@ -64,7 +71,7 @@ impl HalvesTransform {
         let row = |r: &[(i32, i32, i32); 3], t: i32| {
             let [m0, m1, m2] = *r;
             let (a, l) = term(term(term((t.wrapping_mul(2), 0), m0, x0), m1, x1), m2, x2);
-            (a.wrapping_add(l.wrapping_add(1 << 15) >> 15) >> 1) as i64
+            a.wrapping_add(l.wrapping_add(1 << 15) >> 15) >> 1
         };
         let [r0, r1, r2, r3] = &self.rows;
         let [t0, t1, t2, t3] = self.t;

@@ -325,17 +325,7 @@ pub(crate) fn outcode_and_project(
     // screen position lies within ±(2¹⁴ + GUARD), which is ±PIPELINE_LIMIT: `project`'s clamps
     // would change nothing, and every result fits a 32-bit word.
     let (qx, qy, sz) = if NARROW_CORE {
-        // Without a divide instruction: short quotients by w in words (w below 2²⁹, every
-        // ordinary scene; 6% of the Cortex-M0's frame) instead of a reciprocal to 32 bits,
-        // their numerators within the band and the planes as they require (untested there).
-        match ShortQuotients::new32(w as u32) {
-            Some(by_w) => (
-                by_w.round(xh) as i64,
-                by_w.round(yh) as i64,
-                by_w.round_fraction(z),
-            ),
-            None => (div_round(xh, w), div_round(yh, w), div_round(z << 30, w)),
-        }
+        short_quotients(xh, yh, z, w)
     } else if known == Known::InWords {
         // x·half_w and y·half_h within i32 and 0 < z ≤ w < 2¹⁹ (see `Known::InWords`): words,
         // untested (w is never 0 here; as 1 it would divide without meaning, but not by zero).
@@ -350,9 +340,44 @@ pub(crate) fn outcode_and_project(
         let (qx, qy) = (by_w.round_i32(xh), by_w.round_i32(yh));
         (qx, qy, by_w.round_fraction(z))
     };
+    (code, screen_point(qx, qy, m), sz as i32)
+}
+
+/// [`outcode_and_project`]'s quotients on cores without a divide instruction: short quotients
+/// by w in words (w below 2²⁹, every ordinary scene; 6% of the Cortex-M0's frame) instead of a
+/// reciprocal to 32 bits, their numerators within the band and the planes as they require
+/// (untested there).
+#[inline(always)]
+fn short_quotients(xh: i64, yh: i64, z: i64, w: i64) -> (i64, i64, i64) {
+    match ShortQuotients::new32(w as u32) {
+        Some(by_w) => (
+            by_w.round(xh) as i64,
+            by_w.round(yh) as i64,
+            by_w.round_fraction(z),
+        ),
+        None => (div_round(xh, w), div_round(yh, w), div_round(z << 30, w)),
+    }
+}
+
+/// The screen position of offsets `qx`, `qy` from the centre (y down).
+#[inline(always)]
+fn screen_point(qx: i64, qy: i64, m: &ScreenMap) -> ScreenPoint {
     let sx = (m.half_w as i32).wrapping_add(qx as i32);
     let sy = (m.half_h as i32).wrapping_sub(qy as i32);
-    (code, ScreenPoint::new(sx, sy), sz as i32)
+    ScreenPoint::new(sx, sy)
+}
+
+/// [`outcode_and_project`] of a vertex of a [`Known::InWords`] object on cores without a
+/// divide instruction, from the coordinates of a `HalvesTransform`, which are words: in line
+/// in the vertex loop, where the general path is a call taking 64-bit coordinates.
+#[inline(always)]
+pub(crate) fn project_words(c: [i32; 4], m: &ScreenMap) -> (ScreenPoint, i32) {
+    let [x, y, z, w] = c;
+    // Products within i32 (see `Known::InWords`).
+    let xh = x.wrapping_mul(m.half_w as i32) as i64;
+    let yh = y.wrapping_mul(m.half_h as i32) as i64;
+    let (qx, qy, sz) = short_quotients(xh, yh, z as i64, w as i64);
+    (screen_point(qx, qy, m), sz as i32)
 }
 
 /// [`outcode_and_project`] where the vertex loop does not take its in-line path for coordinates
@@ -510,7 +535,7 @@ mod tests {
     #[test]
     fn t18_sphere_inside_every_plane_means_every_vertex_inside() {
         let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
-        let (mut held, mut in_words, mut failed) = (0, 0, 0);
+        let (mut held, mut in_words, mut failed, mut halves) = (0, 0, 0, 0);
         for _ in 0..4000 {
             let (m, map, radius) = random_view(&mut rng);
             let known = map.known(&m, radius);
@@ -520,6 +545,9 @@ mod tests {
             }
             held += 1;
             in_words += (known == Known::InWords) as u32;
+            // The Cortex-M0's transform in words, where the matrix allows it.
+            let h = m.halves(radius);
+            halves += (h.is_some() && known == Known::InWords) as u32;
             for p in points_in_sphere(&mut rng, radius) {
                 let c = m.transform_short(p);
                 let tested = outcode_and_project(c, &map, true, Known::Nothing);
@@ -529,10 +557,16 @@ mod tests {
                     let (xh, yh) = map.viewport_products(c[0], c[1]);
                     let word = |v: i64| i32::try_from(v).is_ok();
                     assert!(word(xh) && word(yh) && 0 < c[3] && c[3] < 1 << 19, "{c:?}");
+                    // Its path for such vertices: the same point and depth.
+                    if let Some(h) = &h {
+                        let (pt, z) = project_words(h.transform_words(p), &map);
+                        assert_eq!((0, pt, z), tested, "{m:?} {radius} {p:?}");
+                    }
                 }
             }
         }
         assert!(in_words > 50 && held > in_words + 500 && failed > 500);
+        assert!(halves > 50, "{halves}");
         assert!(held > 500 && failed > 500, "{held} {failed}");
         // The reference scene's torus and view (bench/SCENE.md).
         use crate::camera::LookAt;
