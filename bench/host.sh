@@ -334,10 +334,14 @@ $stages
   multiplies (x86-64, Cortex-M4) a mesh whose clip coordinates are known to fit 32 bits goes
   from the transform to the projection in one path, in line (the M4's frame 1.6%, x86-64's
   0.7%). On Cortex-M0, whose products of 32-bit factors are routines of four multiplies, the
-  transform takes three 32-bit multiplies a term with 32-bit sums instead
-  (\`HalvesTransform\`: the coordinate's high half times the whole entry, the entry's halves
-  times its low half, bounded once per object: 4.8% of the frame for 460 bytes; split at
-  bit 15 rather than 16, the low halves' products sum in one word: 1.3% more; for an object
+  transform takes two 32-bit multiplies a term with 32-bit sums instead
+  (\`SplitTransform\`: the entry times the coordinate's high part and times its low \`k\`
+  bits, \`k\` chosen once per object so that both sums stay words, for meshes up to about a
+  thousand units across at unit scale; larger ones take the 64-bit products: first as three
+  multiplies a term, the coordinate's high half times the whole entry and the entry's
+  halves times its low half, which held four times further out, 4.8% of the frame for 460
+  bytes, split at bit 15 rather than 16 1.3% more; the two a term 1.7% fewer instructions
+  again, and a few bytes fewer; for an object
   known inside in words the transform's words go to the projection in line, \`project_words\`,
   where the general path is a call taking 64-bit coordinates: 1.6% of the frame for about
   800 bytes, 0.9% with one copy of the transform before both paths), and the

@@ -25,53 +25,63 @@ pub struct Mat4 {
 
 const ONE: i32 = 1 << 16;
 
-/// `v = h·2¹⁵ + l` with `l` in [−2¹⁴, 2¹⁴) (its low 15 bits, signed) and `h` exact.
+/// `v = h·2^k + l` with `l` in [−2^(k−1), 2^(k−1)) (its low `k` bits, signed) and `h` exact,
+/// for `1 ≤ k ≤ 16`.
 #[inline(always)]
-const fn split15(v: i32) -> (i32, i32) {
-    let l = ((v as u32) << 17) as i32 >> 17;
-    ((v.wrapping_sub(l)) >> 15, l)
+const fn split(v: i32, k: u32) -> (i32, i32) {
+    let l = ((v as u32) << (32 - k)) as i32 >> (32 - k);
+    ((v.wrapping_sub(l)) >> k, l)
 }
 
-/// A matrix prepared for 32-bit vertex transforms (from [`Mat4::halves`]), for cores without
-/// a long multiply, where each of [`Mat4::transform_short`]'s twelve 64-bit products is four
-/// multiplies put back together. With `x = xh·2¹⁵ + xl` and `m = mh·2¹⁵ + ml` (low parts
-/// signed, below 2¹⁴), a row's `Σ m·x + t·2¹⁶ + 2¹⁵` is `2¹⁵·A + L + 2¹⁵` with
-/// `A = 2t + Σ (m·xh + mh·xl)` and `L = Σ ml·xl`: three 32-bit products a term, `A` bounded
-/// below 2³¹ by `Mat4::halves` and `L` within ±3·2²⁸. Its floor over 2¹⁶ is
-/// `(A + ⌊(L + 2¹⁵) / 2¹⁵⌋) >> 1` (the fraction dropped inside cannot carry past the halving),
-/// the rounded row, exactly.
+/// A matrix prepared for 32-bit vertex transforms (from [`Mat4::split_transform`]), for cores
+/// without a long multiply, where each of [`Mat4::transform_short`]'s twelve 64-bit products
+/// is four multiplies put back together. Each coordinate is split as `x = xh·2^k + xl` (`xl`
+/// its low `k` bits, signed), so that a row's `Σ m·x + t·2¹⁶ + 2¹⁵` is
+/// `2^k·A + L + t·2¹⁶ + 2¹⁵` with `A = Σ m·xh` and `L = Σ m·xl`, two 32-bit products a term:
+/// `k` is as large as keeps `L + 2¹⁵` a word for the matrix's entries, and
+/// `Mat4::split_transform` bounds `A + t·2^(16−k)` and the rounded `L` below 2³¹ for the
+/// mesh's extent. The row's floor over 2¹⁶ is `(A + t·2^(16−k) + ⌊(L + 2¹⁵) / 2^k⌋) >> (16 − k)`
+/// (`2^k·A` and `t·2¹⁶` are multiples of 2^k, so the fraction dropped inside cannot carry),
+/// the rounded row, exactly. The two bounds pull `k` apart (the entries' sums down, the
+/// extent up): a unit-scale scene meets both (the reference view at `k` = 13 or 14, by the
+/// model's rotation), a mesh more than about a thousand units across at unit scale does not,
+/// and takes the general 64-bit transform. (The entries split at bit 15 as well, three products a term, held for meshes
+/// about four times larger, but cost the reference torus's frame on the Cortex-M0 1.7% more
+/// instructions; both kinds, each where it serves, 580 bytes more.)
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct HalvesTransform {
-    /// Each entry as `(m, mh, ml)`.
-    rows: [[(i32, i32, i32); 3]; 4],
+pub(crate) struct SplitTransform {
+    rows: [[i32; 3]; 4],
+    /// Each row's translation times 2^(16−k).
     t: [i32; 4],
+    /// Where a coordinate is split, from 1 to 16.
+    k: u32,
 }
 
-impl HalvesTransform {
+impl SplitTransform {
     /// [`Mat4::transform_within`] of a point within the extent it was made for.
     #[inline(always)]
     pub(crate) fn transform(&self, p: [i32; 3]) -> [i64; 4] {
         self.transform_words(p).map(i64::from)
     }
 
-    /// [`transform`](Self::transform)'s coordinates, each a word (`A` below 2³¹ and the
-    /// rounded `L` within ±(3·2¹³ + 1): their sum halved fits one).
+    /// [`transform`](Self::transform)'s coordinates, each a word (their sums are bounded
+    /// below 2³¹, see the type).
     #[inline(always)]
     pub(crate) fn transform_words(&self, p: [i32; 3]) -> [i32; 4] {
-        let [x0, x1, x2] = [split15(p[0]), split15(p[1]), split15(p[2])];
+        let k = self.k;
+        let [x0, x1, x2] = [split(p[0], k), split(p[1], k), split(p[2], k)];
         // One term of a row's sums (written out: at opt-level "s" a loop over three stays a
         // loop).
-        let term = |(a, l): (i32, i32), (m, mh, ml): (i32, i32, i32), (xh, xl): (i32, i32)| {
+        let term = |(a, l): (i32, i32), m: i32, (xh, xl): (i32, i32)| {
             (
-                a.wrapping_add(m.wrapping_mul(xh))
-                    .wrapping_add(mh.wrapping_mul(xl)),
-                l.wrapping_add(ml.wrapping_mul(xl)),
+                a.wrapping_add(m.wrapping_mul(xh)),
+                l.wrapping_add(m.wrapping_mul(xl)),
             )
         };
-        let row = |r: &[(i32, i32, i32); 3], t: i32| {
+        let row = |r: &[i32; 3], t: i32| {
             let [m0, m1, m2] = *r;
-            let (a, l) = term(term(term((t.wrapping_mul(2), 0), m0, x0), m1, x1), m2, x2);
-            a.wrapping_add(l.wrapping_add(1 << 15) >> 15) >> 1
+            let (a, l) = term(term(term((t, 0), m0, x0), m1, x1), m2, x2);
+            a.wrapping_add(l.wrapping_add(1 << 15) >> k) >> (16 - k)
         };
         let [r0, r1, r2, r3] = &self.rows;
         let [t0, t1, t2, t3] = self.t;
@@ -244,8 +254,8 @@ impl Mat4 {
     /// [`transform_wide`](Self::transform_wide) of a point whose coordinates lie within ±2²⁹:
     /// each product is then below 2⁶⁰ and the sum needs no halving, so it is rounded once
     /// (half up), exactly. On cores without a long multiply the vertex stage takes a
-    /// [`HalvesTransform`] instead: there this serves clipping, and matrices too large for the
-    /// halves.
+    /// [`SplitTransform`] instead: there this serves clipping, and matrices and meshes too
+    /// large for the split.
     #[inline]
     pub(crate) fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
         let [x, y, z] = p;
@@ -264,34 +274,42 @@ impl Mat4 {
         [row(r0), row(r1), row(r2), row(r3)]
     }
 
-    /// The matrix prepared for [`HalvesTransform::transform`], which equals
-    /// [`transform_within`](Self::transform_within) for points within ±`extent`; `None` where
-    /// its 32-bit sums could overflow (entries or meshes too large) or the mesh takes
-    /// [`transform_wide`](Self::transform_wide).
-    pub(crate) fn halves(&self, extent: u32) -> Option<HalvesTransform> {
-        if extent >= 1 << 29 {
+    /// The [`SplitTransform`] of this matrix for points within ±`extent`, or `None` where no
+    /// split keeps every sum a word (see the type).
+    pub(crate) fn split_transform(&self, extent: u32) -> Option<SplitTransform> {
+        // Each row's Σ|m|, below 2³¹ (else no split serves), and the largest.
+        let mut sums = [0u32; 4];
+        for (sum, r) in sums.iter_mut().zip(&self.m) {
+            let [a, b, c, _] = r.map(i32::unsigned_abs);
+            *sum = a.checked_add(b)?.checked_add(c).filter(|&s| s < 1 << 31)?;
+        }
+        let largest = sums.iter().copied().max().unwrap_or(0);
+        // The split whose low parts' sum, |L| ≤ Σ|m|·2^(k−1), lies below 2³⁰ (L + 2¹⁵ a
+        // word): at most 16, at least 1.
+        let k = (31 - (32 - largest.leading_zeros())).clamp(1, 16);
+        if extent >= 1 << 29 || (largest as u64) << (k - 1) >= 1 << 30 {
             return None;
         }
-        // A coordinate's high part is at most (extent + 2¹⁴) / 2¹⁵ in magnitude.
-        let xh = ((extent as u64) + (1 << 14)) >> 15;
-        let mut rows = [[(0, 0, 0); 3]; 4];
-        for (out, r) in rows.iter_mut().zip(&self.m) {
-            // Twice the translation starts the sum, and ⌊(L + 2¹⁵) / 2¹⁵⌋ (at most 3·2¹³ + 1
-            // in magnitude) ends it.
-            let mut sum = 2 * r[3].unsigned_abs() as u64 + 3 * (1 << 13) + 1;
-            for (o, &m) in out.iter_mut().zip(r) {
-                let (mh, ml) = split15(m);
-                *o = (m, mh, ml);
-                // |m·xh| + |mh·xl| with |xl| ≤ 2¹⁴.
-                sum += m.unsigned_abs() as u64 * xh + mh.unsigned_abs() as u64 * (1 << 14);
-            }
-            if sum >= 1 << 31 {
+        // A coordinate's high part is at most (extent + 2^(k−1)) / 2^k in magnitude.
+        let high = ((extent + (1 << (k - 1))) >> k) + 1;
+        let s = 16 - k;
+        let mut t = [0; 4];
+        for ((t, r), sum) in t.iter_mut().zip(&self.m).zip(sums) {
+            // |A| + |t|·2^s + |⌊(L + 2¹⁵) / 2^k⌋| (at most 2^(30−k) + 1), below 2³¹: the
+            // row's word.
+            let bound = sum as u64 * high as u64
+                + ((r[3].unsigned_abs() as u64) << s)
+                + (1 << (30 - k))
+                + 1;
+            if bound >= 1 << 31 {
                 return None;
             }
+            *t = r[3] << s;
         }
-        Some(HalvesTransform {
-            rows,
-            t: [self.m[0][3], self.m[1][3], self.m[2][3], self.m[3][3]],
+        Some(SplitTransform {
+            rows: self.m.map(|r| [r[0], r[1], r[2]]),
+            t,
+            k,
         })
     }
 
@@ -491,27 +509,36 @@ mod tests {
         assert!(!Mat4::scaling(Vec3::from_int(30000, 1, 1)).fits_32_bits(30000 << 16));
     }
 
-    /// The 32-bit transform of the halves (Cortex-M0's, so not run on the host otherwise) is
-    /// `transform_within`, bit for bit, for every matrix `halves` accepts and every point
-    /// within the extent (its corners included); `halves` accepts the matrices of ordinary
-    /// scenes and turns away those whose 32-bit sums could overflow.
-    #[test]
-    fn halves_transform_equals_transform_within() {
+    /// How many random matrices `transform` (one made for a matrix and an extent, where it
+    /// is) takes and turns away; where it takes one, it equals `transform_within` bit for bit
+    /// at every point within the extent (its corners included).
+    fn held_and_refused<T>(
+        make: impl Fn(&Mat4, u32) -> Option<T>,
+        transform: impl Fn(&T, [i32; 3]) -> [i64; 4],
+    ) -> (u32, u32) {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let (mut held, mut refused) = (0, 0);
         for _ in 0..40_000 {
             let (m, extent) = random_matrix(&mut rng);
-            let Some(h) = m.halves(extent) else {
+            let Some(h) = make(&m, extent) else {
                 refused += 1;
                 continue;
             };
             held += 1;
             for p in points_within(&mut rng, extent) {
-                assert_eq!(h.transform(p), m.transform_within(p, extent), "{m:?} {p:?}");
+                assert_eq!(
+                    transform(&h, p),
+                    m.transform_within(p, extent),
+                    "{m:?} {p:?}"
+                );
             }
         }
-        assert!(held > 5000 && refused > 5000, "{held} {refused}");
-        // The reference scene's (bench/SCENE.md: its camera, the torus's extent of 1.4).
+        (held, refused)
+    }
+
+    /// The reference scene's clip-from-model matrix (bench/SCENE.md: its camera, the torus's
+    /// extent of 1.4), its extent and three points within it.
+    fn reference_clip_from_model() -> (Mat4, u32, [[i32; 3]; 3]) {
         let viewport = crate::projection::Viewport::new(320, 240).unwrap();
         let eye = Vec3::from_f32(0.0, 0.0, 2.6).unwrap();
         let view = crate::camera::LookAt::new(eye, Vec3::ZERO, Vec3::Y)
@@ -528,22 +555,41 @@ mod tests {
         let extent = 92_000;
         let frame = crate::pipeline::Frame::new(&view, &projection, viewport);
         let m = frame.clip_from_model_within(&Mat4::IDENTITY, extent);
+        let e = extent as i32;
+        (
+            m,
+            extent,
+            [[e, -e, 5], [-1, 0, 1], [60_000, 30_000, -91_999]],
+        )
+    }
+
+    /// `SplitTransform` (Cortex-M0's, so not run on the host otherwise) is `transform_within`,
+    /// bit for bit, for every matrix `split_transform` accepts and every point within the
+    /// extent; it accepts the matrices of ordinary scenes and turns away those whose 32-bit
+    /// sums could overflow. The reference scene splits at bit 14.
+    #[test]
+    fn split_transform_equals_transform_within() {
+        let words = |h: &SplitTransform, p| h.transform(p);
+        let (held, refused) = held_and_refused(|m, e| m.split_transform(e), words);
+        assert!(held > 2000 && refused > 5000, "{held} {refused}");
+        let (m, extent, points) = reference_clip_from_model();
         let h = m
-            .halves(extent)
-            .expect("the reference scene takes the halves");
-        for p in [
-            [extent as i32, -(extent as i32), 5],
-            [-1, 0, 1],
-            [60_000, 30_000, -91_999],
-        ] {
-            assert_eq!(h.transform(p), m.transform_within(p, extent), "{p:?}");
+            .split_transform(extent)
+            .expect("the reference scene takes the split");
+        assert_eq!(h.k, 14);
+        for p in points {
+            assert_eq!(words(&h, p), m.transform_within(p, extent), "{p:?}");
         }
         let big = Mat4::scaling(Vec3::from_int(30000, 1, 1));
-        assert!(big.halves(30000 << 16).is_none());
-        assert!(Mat4::IDENTITY.halves(1 << 29).is_none());
+        assert!(big.split_transform(30000 << 16).is_none());
+        assert!(Mat4::IDENTITY.split_transform(1 << 29).is_none());
         let unit =
             Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::scaling(Vec3::from_int(3, 3, 3));
-        assert!(unit.halves(2 << 16).is_some());
+        assert!(unit.split_transform(2 << 16).is_some());
+        // At twice the scale, 4,096 units across: beyond the split's bounds.
+        let far = Mat4::scaling(Vec3::from_int(2, 2, 2));
+        assert!(far.split_transform(4096 << 16).is_none());
+        assert!(far.split_transform(1024 << 16).is_some());
     }
 
     #[test]

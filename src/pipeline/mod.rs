@@ -246,8 +246,8 @@ impl Frame {
                 Known::Nothing
             };
             // Without a long multiply, the transform in 32-bit products where they suffice.
-            let halves = if NARROW_CORE {
-                clip_from_model.halves(extent)
+            let split = if NARROW_CORE {
+                clip_from_model.split_transform(extent)
             } else {
                 None
             };
@@ -260,7 +260,7 @@ impl Frame {
                     // frame; on the M4 with the projection in line, see `outcode_and_project`).
                     let c = clip_from_model.transform_short(p.to_bits());
                     outcode_and_project(c, &map, true, known)
-                } else if let (Some(h), Known::InWords) = (&halves, known) {
+                } else if let (Some(h), Known::InWords) = (&split, known) {
                     // Known inside in words (the reference torus) on cores without a long
                     // multiply: the transform's words projected in line, without the general
                     // path's call and its 64-bit coordinates (the Cortex-M0's frame 1.6%
@@ -269,7 +269,7 @@ impl Frame {
                     let (pt, z) = project_words(h.transform_words(p.to_bits()), &map);
                     (0, pt, z)
                 } else {
-                    let c = match &halves {
+                    let c = match &split {
                         Some(h) => h.transform(p.to_bits()),
                         None => clip_from_model.transform_within(p.to_bits(), extent),
                     };

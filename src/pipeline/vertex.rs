@@ -368,7 +368,7 @@ fn screen_point(qx: i64, qy: i64, m: &ScreenMap) -> ScreenPoint {
 }
 
 /// [`outcode_and_project`] of a vertex of a [`Known::InWords`] object on cores without a
-/// divide instruction, from the coordinates of a `HalvesTransform`, which are words: in line
+/// divide instruction, from the coordinates of a `SplitTransform`, which are words: in line
 /// in the vertex loop, where the general path is a call taking 64-bit coordinates.
 #[inline(always)]
 pub(crate) fn project_words(c: [i32; 4], m: &ScreenMap) -> (ScreenPoint, i32) {
@@ -546,7 +546,7 @@ mod tests {
             held += 1;
             in_words += (known == Known::InWords) as u32;
             // The Cortex-M0's transform in words, where the matrix allows it.
-            let h = m.halves(radius);
+            let h = m.split_transform(radius);
             halves += (h.is_some() && known == Known::InWords) as u32;
             for p in points_in_sphere(&mut rng, radius) {
                 let c = m.transform_short(p);
