@@ -179,6 +179,21 @@ const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     ((q as u64) << s) + ((r << s) + d / 2) as u64 / d as u64
 }
 
+/// [`div_round`]`(n · 2^s, d)` as a word, for `0 < d < 2¹⁷` and `s ≤ 14`: [`shifted_by_short`]
+/// of `|n|` where it is below 2³² and its first quotient below 2^(30 − s), so that the
+/// magnitude, at most `(q + 1)·2^s ≤ 2³⁰` (the second quotient is at most 2^s), takes its sign
+/// in a word; `None` otherwise.
+#[inline(always)]
+fn shifted_i32_in_words(n: i64, s: u32, d: u32) -> Option<i32> {
+    let m = u32::try_from(n.unsigned_abs()).ok()?;
+    let q = m / d;
+    if q >= 1 << (30 - s) {
+        return None;
+    }
+    let magnitude = ((q << s) + (((m % d) << s) + d / 2) / d) as i32;
+    Some(if n < 0 { -magnitude } else { magnitude })
+}
+
 /// [`fraction_by_short`]'s divisors lie below `2^FRACTION_DIVISOR_BITS`: a numerator of at most
 /// the divisor, shifted by a 13-bit digit, still fits a 32-bit word.
 const FRACTION_DIVISOR_BITS: u32 = 19;
@@ -368,6 +383,24 @@ impl DivideBy {
             }
         }
         self.round_by_short(n << shift)
+    }
+
+    /// [`round_shifted`](Self::round_shifted) where it fits an i32, else `None`; on 32-bit
+    /// cores by [`shifted_i32_in_words`] where it applies (the Cortex-M4's depth gradients:
+    /// its frame 0.5% fewer instructions than the 64-bit quotient's sign and check; on
+    /// x86-64, whose words are 64 bits, 0.19% more).
+    #[inline(always)]
+    pub(crate) fn round_shifted_i32(&self, n: i64, shift: u32) -> Option<i32> {
+        if cfg!(target_pointer_width = "32")
+            && self.d32 > 0
+            && self.d32 < 1 << SHIFTED_DIVISOR_BITS
+            && shift <= MAX_SHIFT
+        {
+            if let Some(q) = shifted_i32_in_words(n, shift, self.d32 as u32) {
+                return Some(q);
+            }
+        }
+        i32::try_from(self.round_shifted(n, shift)).ok()
     }
 
     /// [`div_round`]`(n, d)`.
@@ -740,6 +773,46 @@ mod tests {
                 div_round(-((m as i64) << s), d as i64)
             );
         }
+    }
+
+    /// The quotient in words is `div_round`'s wherever it answers, and it answers for every
+    /// numerator below 2³² whose quotient is below 2^(30 − s).
+    #[test]
+    fn shifted_i32_in_words_equals_div_round() {
+        let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
+        let top = (1u32 << SHIFTED_DIVISOR_BITS) - 1;
+        let (mut answered, mut declined) = (0, 0);
+        for i in 0..300_000u32 {
+            let x = rng.next_u64();
+            let n = match i % 3 {
+                0 => (x as i64) >> (x % 64),
+                _ => (x as i32 >> ((x >> 32) % 32)) as i64,
+            };
+            let d = match i % 5 {
+                0 => top - ((x >> 40) as u32 & 0xF),
+                1 => 1 + ((x >> 40) as u32 & 0x7),
+                _ => 1 + ((x >> 40) as u32 % top),
+            };
+            let s = (x >> 59) as u32 % (MAX_SHIFT + 1);
+            match shifted_i32_in_words(n, s, d) {
+                Some(q) => {
+                    assert_eq!(q as i64, div_round(n << s, d as i64), "{n} {s} {d}");
+                    answered += 1;
+                }
+                None => {
+                    let short = n.unsigned_abs() < 1 << 32;
+                    assert!(
+                        !short || n.unsigned_abs() / d as u64 >= 1 << (30 - s),
+                        "{n} {s} {d}"
+                    );
+                    declined += 1;
+                }
+            }
+        }
+        assert!(
+            answered > 100_000 && declined > 50_000,
+            "{answered} {declined}"
+        );
     }
 
     /// `DivideBy::round_shifted` is `round` of the shifted numerator on every core (on this

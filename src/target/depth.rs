@@ -402,8 +402,8 @@ impl<W: LoopWord> RoundedRows<W> {
             steps
         } else {
             let by_area = DivideBy::new(den);
-            let sx = i32::try_from(by_area.round_shifted(nx, 5)).ok()?;
-            let sy = i32::try_from(by_area.round_shifted(ny, 5)).ok()?;
+            let sx = by_area.round_shifted_i32(nx, 5)?;
+            let sy = by_area.round_shifted_i32(ny, 5)?;
             (sx, sy)
         };
         // The reference pixel: the first vertex's column, the first row at or below it; its
