@@ -144,15 +144,17 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
-  instructions per frame (5.1% with the \`asm\` loops, which then need no count either), the
-  M0 3.3% (1.8% with its \`asm\` loop), x86-64 3.1% (the counts hold registers in the row
-  loop; 1.9% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  instructions per frame (4.7% with the \`asm\` loops, which then need no count either), the
+  M0 3.4% (1.9% with its \`asm\` loop), x86-64 0.7% (the counts hold registers in the row
+  loop, and since the reciprocal square root took one Newton step the uncounted compiled
+  pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
+  2.4% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); with the \`asm\` loop in line the pixels take about 0.26 M there.
+  frame); with the \`asm\` loop in line the pixels take about 0.28 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target (on
   the M4 only for a triangle that crosses its left or right side), and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
@@ -307,7 +309,15 @@ $stages
   the culled triangles counted after each object from the other counts instead of one by one
   (the M4's and the M0's frames 0.05% fewer, x86-64's 0.2% more), and the walk's three tests
   of a triangle's indices as one test of the largest, as flat shading reads the model
-  positions (the M4's frame 0.5% more). On the M4
+  positions (the M4's frame 0.5% more), and the walk of an object inside every plane in two
+  passes a batch of 32 triangles, culling with no call in its loop, then filling those it
+  kept (the M4's frame 2.3% more, the M0's 0.8%, x86-64's 1.6%: the second pass's fetches
+  and bookkeeping cost more than the first's registers saved), and \`fill_face\` taking
+  references to the cached vertices instead of a copy of their points and depths (the M4
+  0.55% more, the M0 0.2%, x86-64 1%), or in line in the walk (the M4 3.5% more), and
+  Lambert forming its colour once, from three intensities, after its paths meet (the M4
+  0.9% more, the M0 0.6%, x86-64 0.6%: the channels, packed on each path and taken apart
+  by the conversion, cost less than the three registers). On the M4
   the culling's doubled area and the depth walk's gradient numerators are sums of two
   products with one side negated, a widening multiply and a multiply-accumulate where a
   difference takes two instructions more (0.8% and 0.5% of its frame), and an edge's set-up
@@ -362,9 +372,9 @@ $stages
   \`w\` below 2¹⁹ (\`Known::InWords\`), each product is one 32-bit multiply (the M0 0.7%) and,
   with a divide instruction, the divisions take words untested (the M4 0.8%, x86-64 0.5%,
   the depth there one 64-bit division; on the M0 a digit from the low word alone measured
-  0.4% more). The stage is about a fifth of the M0's frame, about 510 instructions a vertex
-  with the frame's matrices (about 420 in its loop), most of them the transform (about 165)
-  and the divisions (about 155 with the reciprocal). Not kept: Lambert's rounded dot product in
+  0.4% more). The stage is about a sixth of the M0's frame, about 410 instructions a vertex
+  with the frame's matrices (about 350 in its loop), most of them the transform (about 135)
+  and the divisions (about 135 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
   a light first faces and no test before (1.7% there, 224 bytes less, the M4 unchanged),
@@ -372,8 +382,8 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.26 M on the M4), 1.0 M leaves
-  0.74 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+- **The goals**: with the pixels at what they take now (0.28 M on the M4), 1.0 M leaves
+  0.72 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
   about 0.43 M, the rest about 0.90 M). The largest excess found is per drawn triangle: on
   the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
@@ -386,9 +396,9 @@ $stages
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
-  stage (0.59 M, about 510
-  a vertex, of which the transform takes about 165 and the divisions by w about 155) and the depth
-  walk's two divisions (6.8% of its frame) come first. The rest would need less work per
+  stage (0.47 M, about 410
+  a vertex, of which the transform takes about 135 and the divisions by w about 135) and the depth
+  walk's two divisions (6.5% of its frame) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
   nothing) or a different scene (face normals kept in the mesh instead of computed every
