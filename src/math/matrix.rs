@@ -45,9 +45,10 @@ const fn split(v: i32, k: u32) -> (i32, i32) {
 /// the rounded row, exactly. The two bounds pull `k` apart (the entries' sums down, the
 /// extent up): a unit-scale scene meets both (the reference view at `k` = 13 or 14, by the
 /// model's rotation), a mesh more than about a thousand units across at unit scale does not,
-/// and takes the general 64-bit transform. (The entries split at bit 15 as well, three products a term, held for meshes
-/// about four times larger, but cost the reference torus's frame on the Cortex-M0 1.7% more
-/// instructions; both kinds, each where it serves, 580 bytes more.)
+/// and takes the general 64-bit transform. (The entries split at bit 15 as well, three
+/// products a term, held for meshes about four times larger, but cost the reference torus's
+/// frame on the Cortex-M0 1.7% more instructions; both kinds, each where it serves, 580
+/// bytes more.)
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SplitTransform {
     rows: [[i32; 3]; 4],
