@@ -413,11 +413,11 @@ impl<W: LoopWord> RoundedRows<W> {
         let dx = x_r.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.x;
         let dy = y_r.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.y;
         // Within ±2³⁶: the offset in sixteenths of the unit, rounded to the unit.
-        let offset = mul_short(sx, dx).wrapping_add(mul_short(sy, dy));
+        let offset = rounded_offset(sx, dx, sy, dy);
         let at_ref = z[0]
             .wrapping_mul(2)
             .wrapping_add(LOOP_HALF_STEP)
-            .wrapping_add((offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32);
+            .wrapping_add(offset);
         // `s₀ + sx·(x − x_r) = (s₀ − sx·x_r) + sx·x` modulo 2³²: no column for the row loop to
         // hold.
         let row = at_ref
@@ -430,6 +430,33 @@ impl<W: LoopWord> RoundedRows<W> {
         };
         Some((rows, sx))
     }
+}
+
+/// `⌊(sx·dx + sy·dy + 8) / 16⌋` modulo 2³² for steps `sx`, `sy` and offsets `dx`, `dy` within
+/// ±2⁴ (sub-pixels within a pixel), whose sum lies within ±2³⁶: by the widening products, or
+/// without a long multiply (Cortex-M0) by [`rounded_offset_in_words`].
+#[inline(always)]
+fn rounded_offset(sx: i32, dx: i32, sy: i32, dy: i32) -> i32 {
+    if NARROW_CORE {
+        rounded_offset_in_words(sx, dx, sy, dy)
+    } else {
+        let offset = mul_short(sx, dx).wrapping_add(mul_short(sy, dy));
+        (offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32
+    }
+}
+
+/// [`rounded_offset`] in words: with `s = 16·(s >> 4) + (s & 15)`, the multiples of 16 leave
+/// the division whole, `(sx >> 4)·dx + (sy >> 4)·dy` (modulo 2³², as the quotient is taken),
+/// and the low parts' products, below 2⁸ each, are rounded apart: four 32-bit multiplies where
+/// the widening products take four on Cortex-M0 and their 64-bit sum and shift more.
+#[inline(always)]
+fn rounded_offset_in_words(sx: i32, dx: i32, sy: i32, dy: i32) -> i32 {
+    let low_bits = SUBPIXEL_SCALE - 1;
+    let whole = (sx >> SUBPIXEL_BITS)
+        .wrapping_mul(dx)
+        .wrapping_add((sy >> SUBPIXEL_BITS).wrapping_mul(dy));
+    let low = (sx & low_bits).wrapping_mul(dx) + (sy & low_bits).wrapping_mul(dy);
+    whole.wrapping_add((low + SUBPIXEL_SCALE / 2) >> SUBPIXEL_BITS)
 }
 
 impl<W: LoopWord> RowStarts for RoundedRows<W> {
@@ -583,6 +610,42 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
 mod tests {
     use super::*;
     use crate::raster::{doubled_area, triangle_spans, PixelRect, PIPELINE_LIMIT};
+
+    /// The Cortex-M0's offset of the reference pixel in words is the widening products' for
+    /// steps of every size and every offset within a pixel.
+    #[test]
+    fn rounded_offset_in_words_is_the_wide_one() {
+        let wide = |sx: i32, dx: i32, sy: i32, dy: i32| {
+            let offset = sx as i64 * dx as i64 + sy as i64 * dy as i64;
+            ((offset + 8) >> 4) as i32
+        };
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let ends = [
+            i32::MIN,
+            i32::MIN + 1,
+            -1,
+            0,
+            1,
+            15,
+            16,
+            i32::MAX - 1,
+            i32::MAX,
+        ];
+        for i in 0..200_000u32 {
+            let x = rng.next_u64();
+            let step = |v: u64| match i % 4 {
+                0 => ends[(v % ends.len() as u64) as usize],
+                _ => (v as i32) >> ((v >> 32) % 32),
+            };
+            let (sx, sy) = (step(x), step(x.rotate_left(17)));
+            let (dx, dy) = (rng.within(8), rng.within(15));
+            assert_eq!(
+                rounded_offset_in_words(sx, dx, sy, dy),
+                wide(sx, dx, sy, dy),
+                "{sx} {dx} {sy} {dy}"
+            );
+        }
+    }
 
     /// `RoundedRows` in 32-bit words (Cortex-M's) and in 64-bit ones (the host's) give the
     /// same value at every pixel of every span; each lies within its bound,
