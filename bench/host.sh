@@ -145,7 +145,7 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
   instructions per frame (4.7% with the \`asm\` loops, which then need no count either), the
-  M0 3.4% (1.9% with its \`asm\` loop), x86-64 0.7% (the counts hold registers in the row
+  M0 3.2% (2.3% with its \`asm\` loop), x86-64 0.7% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
   2.4% with its \`asm\` loop, which adds each span's length in memory). The depth test
