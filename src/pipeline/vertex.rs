@@ -535,7 +535,7 @@ mod tests {
     #[test]
     fn t18_sphere_inside_every_plane_means_every_vertex_inside() {
         let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
-        let (mut held, mut in_words, mut failed, mut halves) = (0, 0, 0, 0);
+        let (mut held, mut in_words, mut failed, mut split) = (0, 0, 0, 0);
         for _ in 0..4000 {
             let (m, map, radius) = random_view(&mut rng);
             let known = map.known(&m, radius);
@@ -547,7 +547,7 @@ mod tests {
             in_words += (known == Known::InWords) as u32;
             // The Cortex-M0's transform in words, where the matrix allows it.
             let h = m.split_transform(radius);
-            halves += (h.is_some() && known == Known::InWords) as u32;
+            split += (h.is_some() && known == Known::InWords) as u32;
             for p in points_in_sphere(&mut rng, radius) {
                 let c = m.transform_short(p);
                 let tested = outcode_and_project(c, &map, true, Known::Nothing);
@@ -566,7 +566,7 @@ mod tests {
             }
         }
         assert!(in_words > 50 && held > in_words + 500 && failed > 500);
-        assert!(halves > 50, "{halves}");
+        assert!(split > 50, "{split}");
         assert!(held > 500 && failed > 500, "{held} {failed}");
         // The reference scene's torus and view (bench/SCENE.md).
         use crate::camera::LookAt;
