@@ -145,10 +145,10 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
   instructions per frame (4.7% with the \`asm\` loops, which then need no count either), the
-  M0 3.2% (2.3% with its \`asm\` loop), x86-64 0.7% (the counts hold registers in the row
+  M0 3.2% (2.3% with its \`asm\` loop), x86-64 1.5% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
-  2.4% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  2.6% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
