@@ -186,11 +186,10 @@ const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
 #[inline(always)]
 fn shifted_i32_in_words(n: i64, s: u32, d: u32) -> Option<i32> {
     let m = u32::try_from(n.unsigned_abs()).ok()?;
-    let q = m / d;
-    if q >= 1 << (30 - s) {
+    if m / d >= 1 << (30 - s) {
         return None;
     }
-    let magnitude = ((q << s) + (((m % d) << s) + d / 2) / d) as i32;
+    let magnitude = shifted_by_short(m, s, d) as i32;
     Some(if n < 0 { -magnitude } else { magnitude })
 }
 

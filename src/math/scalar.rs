@@ -252,7 +252,7 @@ pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
 
 /// [`mul_wide`] from 16-bit halves: every partial product fits 32 bits. Out of line: in line
 /// at every product the M0's frame measured 0.5% slower and 2 KB larger (its vertex transform
-/// takes `HalvesTransform` instead, 32-bit sums of the halves' products).
+/// takes `SplitTransform` instead, two 32-bit products a term).
 #[inline(never)]
 const fn mul_halves(a: i32, b: i32) -> i64 {
     let (ah, al) = (a >> 16, (a & 0xFFFF) as u32);

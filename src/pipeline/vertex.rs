@@ -142,6 +142,17 @@ impl ScreenMap {
             mul_short(y as i32, self.half_h as i32),
         )
     }
+
+    /// [`viewport_products`](Self::viewport_products) where they are known to fit i32 (see
+    /// [`Known::InWords`]): one 32-bit multiply each, whose low word is the product (on
+    /// Cortex-M0 for two of `mul_short`'s).
+    #[inline(always)]
+    fn viewport_products_in_words(&self, x: i32, y: i32) -> (i64, i64) {
+        (
+            x.wrapping_mul(self.half_w as i32) as i64,
+            y.wrapping_mul(self.half_h as i32) as i64,
+        )
+    }
 }
 
 /// True when `a·c + offset > 0` for the clip coordinates `c` (x, y, z, w; coefficients `a`
@@ -296,13 +307,7 @@ pub(crate) fn outcode_and_project(
 ) -> (u8, ScreenPoint, i32) {
     let [x, y, z, w] = if fits { c } else { reduce(c) };
     let (xh, yh) = if known == Known::InWords {
-        // Products within i32 (see `Known::InWords`): one 32-bit multiply each, whose low word
-        // is the product (on Cortex-M0 for two of `mul_short`'s).
-        let (x, y) = (x as i32, y as i32);
-        (
-            x.wrapping_mul(m.half_w as i32) as i64,
-            y.wrapping_mul(m.half_h as i32) as i64,
-        )
+        m.viewport_products_in_words(x as i32, y as i32)
     } else {
         m.viewport_products(x, y)
     };
@@ -373,9 +378,7 @@ fn screen_point(qx: i64, qy: i64, m: &ScreenMap) -> ScreenPoint {
 #[inline(always)]
 pub(crate) fn project_words(c: [i32; 4], m: &ScreenMap) -> (ScreenPoint, i32) {
     let [x, y, z, w] = c;
-    // Products within i32 (see `Known::InWords`).
-    let xh = x.wrapping_mul(m.half_w as i32) as i64;
-    let yh = y.wrapping_mul(m.half_h as i32) as i64;
+    let (xh, yh) = m.viewport_products_in_words(x, y);
     let (qx, qy, sz) = short_quotients(xh, yh, z as i64, w as i64);
     (screen_point(qx, qy, m), sz as i32)
 }
