@@ -144,7 +144,7 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
-  instructions per frame (4.7% with the \`asm\` loops, which then need no count either), the
+  instructions per frame (5.2% with the \`asm\` loops, which then need no count either), the
   M0 3.2% (2.3% with its \`asm\` loop), x86-64 1.5% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
@@ -154,7 +154,7 @@ $stages
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); with the \`asm\` loop in line the pixels take about 0.28 M there.
+  frame); with the \`asm\` loop in line the pixels take about 0.27 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target (on
   the M4 only for a triangle that crosses its left or right side), and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
@@ -382,8 +382,8 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
-- **The goals**: with the pixels at what they take now (0.28 M on the M4), 1.0 M leaves
-  0.72 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+- **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
+  0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
   about 0.43 M, the rest about 0.90 M). The largest excess found is per drawn triangle: on
   the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
