@@ -145,7 +145,7 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
   instructions per frame (5.2% with the \`asm\` loops, which then need no count either), the
-  M0 3.2% (2.3% with its \`asm\` loop), x86-64 1.5% (the counts hold registers in the row
+  M0 3.0% (2.4% with its \`asm\` loop), x86-64 1.5% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
   2.6% with its \`asm\` loop, which adds each span's length in memory). The depth test
@@ -258,9 +258,9 @@ $stages
   doubled area, with 32-bit quotients: on Cortex-M0 by two 15-bit digits from a 16-bit
   reciprocal, as a vertex's below (\`ShortQuotients::round_below_2_30\`, for doubled areas
   below 2²⁹ and steps below 2³⁰: 99% of the torus' triangles, the magnitude rounded without
-  the saturation that only magnitudes past 2⁶³ reach: 0.35%), about 150 instructions a
-  triangle, where one reciprocal to 32 bits and its 64-bit products, which the rest take,
-  cost about 250 (the frame 2.4% more; an earlier form of the digits, not in line, had
+  the saturation that only magnitudes past 2⁶³ reach: 0.35%), about 200 instructions a
+  triangle with the divisor's 16-bit reciprocal, where one reciprocal to 32 bits and its
+  64-bit products, which the rest take, cost about 250 (the frame 2.4% more; an earlier form of the digits, not in line, had
   measured 0.8% more than the reciprocal); on the M4 by 32-bit divides where
   the numerator allows; the exact Q1.44 plane, two divisions with 64-bit quotients, only for
   the triangles the walk does not take: a vertex at the far plane, a step beyond 32 bits)
@@ -305,7 +305,9 @@ $stages
   that usual face (lit in model space, short edges, Newton's normalisation: one test a
   triangle of a fact known once per object) in line with the others' paths out of line
   (the M0's frame 1.6% fewer instructions, x86-64's 1.5%, the M4's 0.3%, but 0.7 to 1.1 KB
-  more flash, and the \`flat\` preset's cube, whose edges are long, 1.6% more on the M4), and
+  more flash, and the \`flat\` preset's cube, whose edges are long, 1.6% more on the M4;
+  measured again on x86-64 and the M0 alone, after the M0's quotient digits were written
+  out: the M0's frame 1% more, 800 bytes, x86-64's 0.1% fewer), and
   the culled triangles counted after each object from the other counts instead of one by one
   (the M4's and the M0's frames 0.05% fewer, x86-64's 0.2% more), and the walk's three tests
   of a triangle's indices as one test of the largest, as flat shading reads the model
@@ -356,9 +358,14 @@ $stages
   where the general path is a call taking 64-bit coordinates: 1.6% of the frame for about
   800 bytes, 0.9% with one copy of the transform before both paths), and the
   divisions by \`w\` are short ones in 32-bit words (\`ShortQuotients\`: a 16-bit
-  reciprocal of w's top bits, from the seed table and one Newton step, then one multiply
-  estimates each 15-bit quotient digit to within 5 below, the remainder is exact in one
-  word, and x and y take one digit each, the depth two: 6.1% of the frame for 590 bytes,
+  reciprocal of w's top bits, from the seed table and one Newton step, which leaves it exact
+  or one below, and one test of its remainder (a loop of up to four steps either way cost
+  0.8% of the frame), then one multiply estimates each 15-bit quotient digit to within 5
+  below, the remainder is exact in one word, and up to three subtractions written out
+  finish the digit (as a loop of up to five, its count in a register, 2.1% of the frame
+  more; five written out 0.2% fewer again for 240 bytes; a digit further below than three,
+  which none of the torus' is, goes to the exact division), and x and y take one digit each,
+  the depth two: 6.1% of the frame for 590 bytes,
   against a reciprocal to 32 bits and 64-bit products; the bounds that make a digit exact,
   which every numerator of a vertex inside the planes and the guard band meets, are not
   tested: 2.4% of the frame). No vertex of an object is tested against the clip planes
@@ -372,8 +379,8 @@ $stages
   \`w\` below 2¹⁹ (\`Known::InWords\`), each product is one 32-bit multiply (the M0 0.7%) and,
   with a divide instruction, the divisions take words untested (the M4 0.8%, x86-64 0.5%,
   the depth there one 64-bit division; on the M0 a digit from the low word alone measured
-  0.4% more). The stage is about a sixth of the M0's frame, about 410 instructions a vertex
-  with the frame's matrices (about 350 in its loop), most of them the transform (about 135)
+  0.4% more). The stage is about a sixth of the M0's frame, about 380 instructions a vertex
+  with the frame's matrices (about 345 in its loop), most of them the transform (about 135)
   and the divisions (about 135 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
@@ -382,6 +389,11 @@ $stages
   could then differ between the host and the firmware (rule R10); on every core, that form
   cost the M4 1.7% more (its per-light closure left the loop, its state on the stack), and
   1% more with each cosine found in one loop for both the grey and the per-channel sums.
+  Nor, on the M0, measured after its quotient digits were written out: an edge's
+  subtractions with their first three turns written out (0.2% more, 360 bytes) or as a
+  loop that counts the quotient alone (0.15% more), the edge set-up in line (0.8% more,
+  1.5 KB), flat shading out of line (1.7% more), and the reciprocal square root's products
+  of halves in line (0.2% more, 240 bytes).
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
@@ -396,9 +408,9 @@ $stages
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
-  stage (0.47 M, about 410
+  stage (0.44 M, about 380
   a vertex, of which the transform takes about 135 and the divisions by w about 135) and the depth
-  walk's two divisions (6.5% of its frame) come first. The rest would need less work per
+  walk's two divisions (7.5% of its frame, their reciprocal included) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
   nothing) or a different scene (face normals kept in the mesh instead of computed every
