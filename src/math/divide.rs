@@ -489,10 +489,11 @@ impl Divisor {
 /// whose bits from `b` up form `m < 2¹⁶` has the estimate `⌊m·r / 2¹⁶⌋` (one 32-bit product),
 /// which is at most `N / d` and at most 5 below its floor. The remainder `N − q·d` is then below
 /// `6d < 2³²`: the difference of the low words, exact in one word, and up to three
-/// subtractions finish the quotient (one that needs more is declined: none of those tried). Each method states the bound its numerators must meet: the vertex's
-/// are known to meet theirs and are not tested (another numerator gives a meaningless
-/// quotient, but nothing overflows); [`round_below_2_30`](Self::round_below_2_30) tests its
-/// own and declines a longer quotient.
+/// subtractions finish the quotient (one that needs more is declined: none of those tried).
+/// Each method states the bound its numerators must meet: the vertex's are known to meet
+/// theirs and are not tested (another numerator gives a meaningless quotient, but nothing
+/// overflows); [`round_below_2_30`](Self::round_below_2_30) tests its own and declines a
+/// longer quotient.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ShortQuotients {
     d: u32,
