@@ -360,11 +360,11 @@ $stages
   divisions by \`w\` are short ones in 32-bit words (\`ShortQuotients\`: a 16-bit
   reciprocal of w's top bits, from the seed table and one Newton step, which leaves it exact
   or one below, and one test of its remainder (a loop of up to four steps either way cost
-  0.8% of the frame), then one multiply estimates each 15-bit quotient digit to within 5
-  below, the remainder is exact in one word, and up to three subtractions written out
-  finish the digit (as a loop of up to five, its count in a register, 2.1% of the frame
-  more; five written out 0.2% fewer again for 240 bytes; a digit further below than three,
-  which none of the torus' is, goes to the exact division), and x and y take one digit each,
+  0.8% of the frame), then one multiply estimates each 15-bit quotient digit to within 3
+  below (for quotients up to 2¹⁵, every caller's, as \`ShortQuotients\`' note proves), the
+  remainder is exact in one word, and up to three subtractions written out finish the digit
+  (as a loop of up to five, its count in a register, 2.1% of the frame more; five written
+  out 0.2% fewer again for 240 bytes), and x and y take one digit each,
   the depth two: 6.1% of the frame for 590 bytes,
   against a reciprocal to 32 bits and 64-bit products; the bounds that make a digit exact,
   which every numerator of a vertex inside the planes and the guard band meets, are not

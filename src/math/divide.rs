@@ -487,13 +487,18 @@ impl Divisor {
 /// With `b` the position of d's top bit and `t` d's top 16 bits (`d = t·2^(b−15) + less`),
 /// `r = ⌊2³¹ / (t + 1)⌋` is below `2^(b+16) / d` and within `2⁻¹⁴` of it. A numerator `N`
 /// whose bits from `b` up form `m < 2¹⁶` has the estimate `⌊m·r / 2¹⁶⌋` (one 32-bit product),
-/// which is at most `N / d` and at most 5 below its floor. The remainder `N − q·d` is then below
-/// `6d < 2³²`: the difference of the low words, exact in one word, and up to three
-/// subtractions finish the quotient (one that needs more is declined: none of those tried).
-/// Each method states the bound its numerators must meet: the vertex's are known to meet
-/// theirs and are not tested (another numerator gives a meaningless quotient, but nothing
-/// overflows); [`round_below_2_30`](Self::round_below_2_30) tests its own and declines a
-/// longer quotient.
+/// which is at most `N / d` and at most 5 below its floor: with `N = m·2^b + f` (`f < 2^b`),
+/// `N / d < (m + 1)·2¹⁵ / t` and `m·r / 2¹⁶ > m·2¹⁵ / (t + 1) − m / 2¹⁶`, so the floor lies
+/// above the estimate by less than `m·2¹⁵ / (t·(t + 1)) + 2¹⁵ / t + m / 2¹⁶ + 1`. For a
+/// quotient `q ≤ 2¹⁵`, as every caller's is (`m < (q + 1)·(t + 1) / 2¹⁵`), that is below
+/// `(2¹⁶ + 1) / t + (2¹⁵ + 1)·(t + 1) / 2³¹ + 1`, which over `t` in `[2¹⁵, 2¹⁶)` is largest
+/// at `t = 2¹⁵`, a little over 3.5: the estimate is at most 3 below. The remainder `N − q·d`
+/// is then below `4d < 2³²`: the difference of the low words, exact in one word, and up to
+/// three subtractions finish the quotient (a numerator whose estimate lies further below,
+/// with a quotient beyond 2¹⁵, is declined). Each method states the bound its numerators
+/// must meet: the vertex's are known to meet theirs and are not tested (another numerator
+/// gives a meaningless quotient, but nothing overflows);
+/// [`round_below_2_30`](Self::round_below_2_30) tests its own and declines a longer quotient.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ShortQuotients {
     d: u32,
@@ -546,12 +551,12 @@ impl ShortQuotients {
         (v << self.up) >> self.down
     }
 
-    /// `(⌊N / d⌋, N mod d)` from N's bits from `b` up (`m`) and its low word, for `m < 2¹⁶`,
-    /// which every caller's numerator meets (the bound is written where it calls): then the
-    /// estimate is at most five below (see the type's documentation), and three steps
-    /// correct it where it is at most three below, which every numerator the tests and the
-    /// torus try is; `None` for one further below (the caller's exact division then
-    /// answers). The steps are written out: as a loop of up to five, its count in a register,
+    /// `(⌊N / d⌋, N mod d)` from N's bits from `b` up (`m`) and its low word, for `m < 2¹⁶`
+    /// and a quotient of at most 2¹⁵, which every caller's numerator meets (the bound is
+    /// written where it calls): then the estimate is at most three below (see the type's
+    /// documentation), and three steps correct it. `None` for an estimate further below
+    /// (only a larger quotient's can be: the caller's exact division would answer). The
+    /// steps are written out: as a loop of up to five, its count in a register,
     /// they cost the Cortex-M0's frame 2.1% more; five written out took 0.2% fewer again,
     /// for 240 bytes more. Not testing `m` saved the Cortex-M0's frame 1.1% of its
     /// instructions; another `m` gives a meaningless digit, but nothing overflows.
@@ -590,7 +595,7 @@ impl ShortQuotients {
     }
 
     /// [`round`](Self::round)'s quotient in words, `None` where its digit declines (see
-    /// [`digit`](Self::digit); for `|n| < 2¹⁴·d` only an estimate more than three below).
+    /// [`digit`](Self::digit); never for `|n| < 2¹⁴·d`, whose quotient is below 2¹⁵).
     #[inline(always)]
     fn round_in_words(&self, n: i64) -> Option<i32> {
         let a = n.unsigned_abs() + (self.d / 2) as u64;
@@ -639,9 +644,9 @@ impl ShortQuotients {
     }
 
     /// [`round_fraction`](Self::round_fraction)'s quotient in words, `None` where a digit
-    /// declines (see [`digit`](Self::digit); for `0 ≤ z ≤ d` only an estimate more than three
-    /// below). `z` is not checked against `d`: the
-    /// caller knows it (the Cortex-M0's frame 0.9% fewer instructions than with the check).
+    /// declines (see [`digit`](Self::digit); never for `0 ≤ z ≤ d`, whose digits are at most
+    /// 2¹⁵). `z` is not checked against `d`: the caller knows it (the Cortex-M0's frame 0.9%
+    /// fewer instructions than with the check).
     #[inline(always)]
     fn fraction_in_words(&self, z: i64) -> Option<i64> {
         let (d, z) = (self.d, z as u32);
@@ -1180,8 +1185,9 @@ mod tests {
         ends.chain(random)
     }
 
-    /// One digit is exact for every numerator whose estimate bits are below 2¹⁶, and never
-    /// needs more correcting steps than the type's bound gives (`digit` returns `None` then).
+    /// One digit is exact for every numerator whose estimate bits are below 2¹⁶ and whose
+    /// quotient is at most 2¹⁵ (the callers'), the worst of them included; beyond that
+    /// quotient it is exact or declined, never wrong.
     #[test]
     fn short_quotient_digit_is_exact() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
@@ -1193,23 +1199,28 @@ mod tests {
             };
             let b = by.below;
             let top = (1u64 << (b + 16)) - 1;
+            // The callers' numerators: quotients up to 2¹⁵.
+            let callers = (((1u64 << 15) + 1) * d as u64 - 1).min(top);
             let x = rng.next_u64();
             for n in [
                 0,
                 1,
                 d as u64,
+                callers,
+                callers - d as u64,
+                x % (callers + 1),
+                x >> (x % 64),
                 top,
                 top - d as u64,
                 x % (top + 1),
-                x >> (x % 64),
             ] {
                 let n = n.min(top);
                 let m = (n >> b) as u32;
-                assert_eq!(
-                    by.digit(m, n as u32),
-                    Some(((n / d as u64) as u32, (n % d as u64) as u32)),
-                    "{n} / {d}"
-                );
+                let exact = ((n / d as u64) as u32, (n % d as u64) as u32);
+                match by.digit(m, n as u32) {
+                    Some(qr) => assert_eq!(qr, exact, "{n} / {d}"),
+                    None => assert!(n > callers, "{n} / {d}: declined"),
+                }
             }
         }
     }
