@@ -494,10 +494,10 @@ impl Divisor {
 /// `(2¹⁶ + 1) / t + (2¹⁵ + 1)·(t + 1) / 2³¹ + 1`, which over `t` in `[2¹⁵, 2¹⁶)` is largest
 /// at `t = 2¹⁵`, a little over 3.5: the estimate is at most 3 below. The remainder `N − q·d`
 /// is then below `4d < 2³²`: the difference of the low words, exact in one word, and up to
-/// three subtractions finish the quotient (a numerator whose estimate lies further below,
-/// with a quotient beyond 2¹⁵, is declined). Each method states the bound its numerators
-/// must meet: the vertex's are known to meet theirs and are not tested (another numerator
-/// gives a meaningless quotient, but nothing overflows);
+/// three subtractions finish the quotient (a numerator with a quotient beyond 2¹⁵, whose
+/// estimate may lie further below, gets a meaningless digit). Each method states the bound
+/// its numerators must meet: the vertex's are known to meet theirs and are not tested
+/// (another numerator gives a meaningless quotient, but nothing overflows);
 /// [`round_below_2_30`](Self::round_below_2_30) tests its own and declines a longer quotient.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ShortQuotients {
@@ -554,14 +554,14 @@ impl ShortQuotients {
     /// `(⌊N / d⌋, N mod d)` from N's bits from `b` up (`m`) and its low word, for `m < 2¹⁶`
     /// and a quotient of at most 2¹⁵, which every caller's numerator meets (the bound is
     /// written where it calls): then the estimate is at most three below (see the type's
-    /// documentation), and three steps correct it. `None` for an estimate further below
-    /// (only a larger quotient's can be: the caller's exact division would answer). The
-    /// steps are written out: as a loop of up to five, its count in a register,
-    /// they cost the Cortex-M0's frame 2.1% more; five written out took 0.2% fewer again,
-    /// for 240 bytes more. Not testing `m` saved the Cortex-M0's frame 1.1% of its
-    /// instructions; another `m` gives a meaningless digit, but nothing overflows.
+    /// documentation), and three steps correct it. The steps are written out: as a loop of
+    /// up to five, its count in a register, they cost the Cortex-M0's frame 2.1% more. Not
+    /// testing `m` saved the Cortex-M0's frame 1.1% of its instructions, and taking no
+    /// fallback to the exact division (for an estimate the steps would leave short, which no
+    /// caller's is) 0.3% and 220 bytes; another numerator gives a meaningless digit, but
+    /// nothing overflows.
     #[inline(always)]
-    fn digit(&self, m: u32, low: u32) -> Option<(u32, u32)> {
+    fn digit(&self, m: u32, low: u32) -> (u32, u32) {
         let d = self.d;
         let mut q = m.wrapping_mul(self.r) >> 16;
         let mut rem = low.wrapping_sub(q.wrapping_mul(d));
@@ -573,10 +573,8 @@ impl ShortQuotients {
             rem = rem.wrapping_sub(d);
             None
         };
-        step()
-            .or_else(&mut step)
-            .or_else(&mut step)
-            .or_else(&mut step)
+        let found = step().or_else(&mut step).or_else(&mut step);
+        found.unwrap_or((q, rem))
     }
 
     /// [`div_round`]`(n, d)` for `|n| < 2¹⁴·d`, which the caller knows (a vertex's screen
@@ -588,25 +586,15 @@ impl ShortQuotients {
     /// overflows.
     #[inline(always)]
     pub(crate) fn round(&self, n: i64) -> i32 {
-        match self.round_in_words(n) {
-            Some(q) => q,
-            None => div_round(n, self.d as i64) as i32,
-        }
-    }
-
-    /// [`round`](Self::round)'s quotient in words, `None` where its digit declines (see
-    /// [`digit`](Self::digit); never for `|n| < 2¹⁴·d`, whose quotient is below 2¹⁵).
-    #[inline(always)]
-    fn round_in_words(&self, n: i64) -> Option<i32> {
         let a = n.unsigned_abs() + (self.d / 2) as u64;
         let (hi, lo) = ((a >> 32) as u32, a as u32);
         let m = (hi << 1 << (31 - self.below)) | (lo >> self.below);
-        let (q, _) = self.digit(m, lo)?;
-        Some(if n < 0 {
+        let (q, _) = self.digit(m, lo);
+        if n < 0 {
             (q as i32).wrapping_neg()
         } else {
             q as i32
-        })
+        }
     }
 
     /// [`div_round`]`(n, d)` for a quotient below 2³⁰ (a triangle's usual depth gradient),
@@ -625,8 +613,8 @@ impl ShortQuotients {
         // and c's sum to less than one), below 2¹⁶; its low word wraps, and `digit` leaves the
         // remainder below d.
         let step = |r: u32, c: u32| self.digit(self.top(r) + (c >> self.below), (r << 15) | c);
-        let (q1, r) = step((a >> 30) as u32, (a >> 15) as u32 & 0x7FFF)?;
-        let (q0, _) = step(r, a as u32 & 0x7FFF)?;
+        let (q1, r) = step((a >> 30) as u32, (a >> 15) as u32 & 0x7FFF);
+        let (q0, _) = step(r, a as u32 & 0x7FFF);
         // Below 2³⁰: the signed quotient fits.
         Some(with_sign_of(n, ((q1 << 15) | q0) as u64) as i32)
     }
@@ -635,32 +623,19 @@ impl ShortQuotients {
     /// `z / w` in Q1.30, inside the near and far planes; any other `z` gives a meaningless
     /// quotient), as a long division of two 15-bit digits. In line: called from the vertex
     /// loop's path in words, it cost the Cortex-M0 1% of the frame.
+    /// `z` is not checked against `d`: the caller knows it (the Cortex-M0's frame 0.9% fewer
+    /// instructions than with the check).
     #[inline(always)]
     pub(crate) fn round_fraction(&self, z: i64) -> i64 {
-        match self.fraction_in_words(z) {
-            Some(q) => q,
-            None => div_round(z << 30, self.d as i64),
-        }
-    }
-
-    /// [`round_fraction`](Self::round_fraction)'s quotient in words, `None` where a digit
-    /// declines (see [`digit`](Self::digit); never for `0 ≤ z ≤ d`, whose digits are at most
-    /// 2¹⁵). `z` is not checked against `d`: the caller knows it (the Cortex-M0's frame 0.9%
-    /// fewer instructions than with the check).
-    #[inline(always)]
-    fn fraction_in_words(&self, z: i64) -> Option<i64> {
         let (d, z) = (self.d, z as u32);
-        // z·2¹⁵ = q1·d + r1 and r1·2¹⁵ = q2·d + r2 (z and r1 at most d: estimates below 2¹⁶;
-        // the low words wrap, the remainders below 2³² are exact). The sums wrap, without
-        // meaning, only for a z beyond d.
-        if let Some((q1, r1)) = self.digit(self.top(z), z << 15) {
-            if let Some((q2, r2)) = self.digit(self.top(r1), r1 << 15) {
-                // r2 + d/2 < 2d: the rounding adds one when it reaches d.
-                let up = (r2 + d / 2 >= d) as u32;
-                return Some((q1 << 15).wrapping_add(q2).wrapping_add(up) as i64);
-            }
-        }
-        None
+        // z·2¹⁵ = q1·d + r1 and r1·2¹⁵ = q2·d + r2 (z and r1 at most d: estimates below 2¹⁶,
+        // quotients at most 2¹⁵; the low words wrap, the remainders below 2³² are exact). The
+        // sums wrap, without meaning, only for a z beyond d.
+        let (q1, r1) = self.digit(self.top(z), z << 15);
+        let (q2, r2) = self.digit(self.top(r1), r1 << 15);
+        // r2 + d/2 < 2d: the rounding adds one when it reaches d.
+        let up = (r2 + d / 2 >= d) as u32;
+        (q1 << 15).wrapping_add(q2).wrapping_add(up) as i64
     }
 }
 
@@ -1187,7 +1162,7 @@ mod tests {
 
     /// One digit is exact for every numerator whose estimate bits are below 2¹⁶ and whose
     /// quotient is at most 2¹⁵ (the callers'), the worst of them included; beyond that
-    /// quotient it is exact or declined, never wrong.
+    /// quotient it is at most two below, and nothing overflows.
     #[test]
     fn short_quotient_digit_is_exact() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
@@ -1217,9 +1192,12 @@ mod tests {
                 let n = n.min(top);
                 let m = (n >> b) as u32;
                 let exact = ((n / d as u64) as u32, (n % d as u64) as u32);
-                match by.digit(m, n as u32) {
-                    Some(qr) => assert_eq!(qr, exact, "{n} / {d}"),
-                    None => assert!(n > callers, "{n} / {d}: declined"),
+                let (q, rem) = by.digit(m, n as u32);
+                if n <= callers {
+                    assert_eq!((q, rem), exact, "{n} / {d}");
+                } else {
+                    // Beyond: three steps from an estimate at most five below.
+                    assert!(q <= exact.0 && exact.0 - q <= 2, "{n} / {d}: {q}");
                 }
             }
         }
@@ -1251,7 +1229,6 @@ mod tests {
             let end = (d64 << 14) - 1;
             for n in [within, -within, d64 / 2, -(d64 / 2), end, -end] {
                 let exact = div_round(n, d64) as i32;
-                assert_eq!(by.round_in_words(n), Some(exact), "{n} / {d}");
                 assert_eq!(by.round(n), exact, "{n} / {d}");
             }
             for n in [(x as i64) >> (x % 64), i64::MIN, i64::MAX] {
@@ -1259,10 +1236,6 @@ mod tests {
             }
             let z = (x >> 32) as i64 % (d64 + 1);
             for z in [z, 0, d64, d64 - 1, d64 / 2] {
-                let words = by.fraction_in_words(z);
-                assert_eq!(words, Some(div_round(z << 30, d64)), "{z} / {d}");
-            }
-            for z in [z, 0, d64] {
                 assert_eq!(by.round_fraction(z), div_round(z << 30, d64), "{z} / {d}");
             }
             // Outside [0, d] (never passed) some quotient, and no overflow.
@@ -1272,10 +1245,10 @@ mod tests {
         }
     }
 
-    /// A digit whose estimate lies up to three below its quotient is corrected; one four below
-    /// is declined (a numerator outside the callers' bounds makes one).
+    /// A digit whose estimate lies up to three below its quotient is corrected; one further
+    /// below (a numerator outside the callers' bounds makes one) takes three steps and no more.
     #[test]
-    fn digit_corrects_three_steps_and_declines_a_fourth() {
+    fn digit_corrects_three_steps_and_no_more() {
         for d in short_divisors(&mut crate::testing::XorShift(0x5DEE_CE66_D1CE_4E5B)) {
             let Some(by) = ShortQuotients::new(d as i64) else {
                 panic!("{d}")
@@ -1284,7 +1257,11 @@ mod tests {
             let estimate = (m * by.r) >> 16;
             for (below, rem) in [(0, 0), (1, d - 1), (3, d / 2), (3, d - 1), (4, 0), (5, 7)] {
                 let low = (estimate + below).wrapping_mul(d).wrapping_add(rem % d);
-                let expected = (below <= 3).then_some((estimate + below, rem % d));
+                let expected = if below <= 3 {
+                    (estimate + below, rem % d)
+                } else {
+                    (estimate + 3, (below - 3) * d + rem % d)
+                };
                 assert_eq!(by.digit(m, low), expected, "{d}: {below} below");
             }
         }
