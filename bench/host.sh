@@ -145,7 +145,7 @@ $stages
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
   instructions per frame (5.2% with the \`asm\` loops, which then need no count either), the
-  M0 3.0% (2.4% with its \`asm\` loop), x86-64 1.5% (the counts hold registers in the row
+  M0 3.6% (3.0% with its \`asm\` loop), x86-64 1.5% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
   2.6% with its \`asm\` loop, which adds each span's length in memory). The depth test
@@ -392,8 +392,13 @@ $stages
   Nor, on the M0, measured after its quotient digits were written out: an edge's
   subtractions with their first three turns written out (0.2% more, 360 bytes) or as a
   loop that counts the quotient alone (0.15% more), the edge set-up in line (0.8% more,
-  1.5 KB), flat shading out of line (1.7% more), and the reciprocal square root's products
-  of halves in line (0.2% more, 240 bytes).
+  1.5 KB), flat shading out of line (1.7% more), the reciprocal square root's products
+  of halves in line (0.2% more, 240 bytes), and a vertex's divisor prepared without its
+  range test where \`Known::InWords\` bounds it (0.4% more). On every core, not kept: the
+  usual face's direction (lit in model space, short edges) in line and every other one
+  through a call (the M0 0.3% more, the M4 0.4%), and the first row's edges set up where
+  they go, their vertices chosen first, instead of swapped after (the M0 0.5% more, the M4
+  0.9%).
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
@@ -410,7 +415,7 @@ $stages
   pixel against 10). On the M0 the vertex
   stage (0.44 M, about 380
   a vertex, of which the transform takes about 135 and the divisions by w about 135) and the depth
-  walk's two divisions (7.5% of its frame, their reciprocal included) come first. The rest would need less work per
+  walk's two divisions (7.7% of its frame, their reciprocal included) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
   nothing) or a different scene (face normals kept in the mesh instead of computed every

@@ -520,7 +520,7 @@ impl DepthTest for LessOrEqual {
 /// A type, chosen when the target is built
 /// ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)): a frame that does not need the
 /// counts does not pay for them (on the reference torus, 5.5% of the Cortex-M4's instructions
-/// (5.2% with the `asm` feature), 3.0% of the Cortex-M0's (2.4% with it), 1.5% of
+/// (5.2% with the `asm` feature), 3.6% of the Cortex-M0's (3.0% with it), 1.5% of
 /// x86-64's (2.6% with it): a count per span and one per failed fragment, and the registers
 /// they hold in the row loop).
 pub trait FragmentCount: sealed::Sealed + Copy + Default + core::fmt::Debug {
