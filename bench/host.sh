@@ -311,7 +311,7 @@ $stages
   the culled triangles counted after each object from the other counts instead of one by one
   (the M4's and the M0's frames 0.05% fewer, x86-64's 0.2% more), and the walk's three tests
   of a triangle's indices as one test of the largest, as flat shading reads the model
-  positions (the M4's frame 0.5% more), and the walk of an object inside every plane in two
+  positions (the M4's frame 0.5% more, x86-64's 0.5%), and the walk of an object inside every plane in two
   passes a batch of 32 triangles, culling with no call in its loop, then filling those it
   kept (the M4's frame 2.3% more, the M0's 0.8%, x86-64's 1.6%: the second pass's fetches
   and bookkeeping cost more than the first's registers saved), and \`fill_face\` taking
