@@ -403,12 +403,12 @@ $stages
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
   about 0.43 M, the rest about 0.90 M). The largest excess found is per drawn triangle: on
-  the M4 about 670 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.64 M, about 80 of them the \`asm\` row loop's set-up with
+  the M4 about 650 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.62 M, about 75 of them the \`asm\` row loop's set-up with
   its test of the columns)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
   cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
-  dozens of pieces of 5 to 25 instructions: about 0.34 M. The M4's rows and pixels are already hand-written (the \`asm\`
+  dozens of pieces of 5 to 25 instructions: about 0.32 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a

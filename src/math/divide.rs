@@ -622,9 +622,9 @@ impl ShortQuotients {
     /// [`div_round`]`(z · 2³⁰, d)` for `0 ≤ z ≤ d`, which the caller knows (a vertex's depth
     /// `z / w` in Q1.30, inside the near and far planes; any other `z` gives a meaningless
     /// quotient), as a long division of two 15-bit digits. In line: called from the vertex
-    /// loop's path in words, it cost the Cortex-M0 1% of the frame.
-    /// `z` is not checked against `d`: the caller knows it (the Cortex-M0's frame 0.9% fewer
-    /// instructions than with the check).
+    /// loop's path in words, it cost the Cortex-M0 1% of the frame. `z` is not checked
+    /// against `d`: the caller knows it (the Cortex-M0's frame 0.9% fewer instructions than
+    /// with the check).
     #[inline(always)]
     pub(crate) fn round_fraction(&self, z: i64) -> i64 {
         let (d, z) = (self.d, z as u32);
