@@ -69,6 +69,96 @@ fn uncounted_target_draws_the_same_frame() {
     );
 }
 
+/// `FlatKept`, lighting faces from the normals the mesh keeps (`Mesh::with_face_normals`),
+/// draws the very frames that `Flat` draws from the positions, and so does `FlatKept` for a
+/// mesh that keeps none: the torus turned many ways, under the scene's light and under three
+/// coloured ones; a stretched model (lit in world space) and the exact normalisation, which do
+/// not read them, too. Storage of the wrong length is refused.
+#[test]
+fn kept_face_normals_draw_the_same_frames() {
+    use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Vec3};
+    use fixed3d::mesh::{FaceNormal, MeshError};
+    use fixed3d::pipeline::Precision;
+    use fixed3d::scene::{DirectionalLight, LightColor, Lighting};
+    use fixed3d::shade::{FlatKept, Shading};
+    let data = torus_f64();
+    let plain = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let mut faces = vec![FaceNormal::ZERO; data.triangles.len()];
+    let kept = plain.with_face_normals(&mut faces).unwrap();
+    assert_eq!(kept.face_normals().map(<[_]>::len), Some(2304));
+    let mut coloured = Lighting::<3>::new(LightColor::gray(Scalar::from_num(0.1)));
+    for (d, c) in [
+        ((1, 2, 3), (0.9, 0.2, 0.1)),
+        ((-3, 0, 1), (0.1, 0.8, 0.3)),
+        ((0, -1, 0), (0.3, 0.3, 1.5)),
+    ] {
+        let color = LightColor::new(
+            Scalar::from_num(c.0),
+            Scalar::from_num(c.1),
+            Scalar::from_num(c.2),
+        );
+        coloured
+            .push(DirectionalLight::new(Vec3::from_int(d.0, d.1, d.2), color))
+            .unwrap();
+    }
+    fn draw<S: Shading>(
+        shading: S,
+        mesh: &Mesh<'_>,
+        model: Mat4,
+        lighting: &Lighting<3>,
+        normalize: Normalize,
+    ) -> Vec<Rgb565> {
+        let objects = [Object::new(mesh, model, BASE)];
+        let scene = Scene::new(&objects, lighting.clone());
+        let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
+        let frame = frame().with_precision(Precision::DEFAULT.with_normalize(normalize));
+        let prepared = frame.prepare(&scene, &mut cache, shading).unwrap();
+        let mut c = vec![Rgb565::BLACK; 320 * 240];
+        let mut d = vec![0u16; 320 * 240];
+        let mut color = FrameBuffer::new(&mut c, 320, 240).unwrap();
+        let mut depth = DepthBuffer::new(&mut d, 320, 240).unwrap();
+        depth.clear();
+        prepared
+            .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
+            .unwrap();
+        c
+    }
+    let mut scene_light = Lighting::<3>::new(LightColor::gray(Scalar::from_num(0.2)));
+    scene_light
+        .push(DirectionalLight::new(
+            Vec3::from_int(-1, 1, 1),
+            LightColor::gray(Scalar::from_num(0.8)),
+        ))
+        .unwrap();
+    let stretched = Mat4::scaling(Vec3::new(Scalar::ONE, Scalar::from_num(1.3), Scalar::ONE));
+    let mut frames = 0;
+    for (k, degrees) in (0..360).step_by(20).enumerate() {
+        let turn = Mat4::rotation_y(Angle::from_degrees(degrees))
+            * Mat4::rotation_x(Angle::from_degrees(degrees * 3 / 2));
+        let model = if k % 6 == 5 { turn * stretched } else { turn };
+        let normalize = if k % 4 == 3 {
+            Normalize::Exact
+        } else {
+            Normalize::Newton
+        };
+        for lighting in [&scene_light, &coloured] {
+            let frame = draw(FlatKept, &kept, model, lighting, normalize);
+            assert!(frame.iter().filter(|&&p| p != Rgb565::BLACK).count() > 10_000);
+            let per_frame = draw(Flat, &plain, model, lighting, normalize);
+            let none_kept = draw(FlatKept, &plain, model, lighting, normalize);
+            assert!(frame == per_frame, "{degrees} degrees");
+            assert!(none_kept == per_frame, "{degrees} degrees");
+            frames += 1;
+        }
+    }
+    assert_eq!(frames, 36);
+    let mut short = vec![FaceNormal::ZERO; 2303];
+    assert_eq!(
+        plain.with_face_normals(&mut short),
+        Err(MeshError::FaceNormalCountMismatch)
+    );
+}
+
 #[test]
 fn torus_golden_image() {
     let (c, _) = render_flat(&torus_f64());

@@ -156,15 +156,22 @@ impl Normalize {
 /// component (each rounded and clamped) before the product, and on cores without a long
 /// multiply the products of 15-bit components take two 32-bit multiplies each where the unit
 /// vector's take four. Within 3 units of 2⁻³⁰ of the unit vector's cosine.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub(crate) struct NewtonDirection {
-    c: [i32; 3],
+    c: [i16; 3],
     /// `2⁴⁵ / sqrt(m)`, where `m` is the sum of the squares, quartered from 2³⁰ on.
     y: u32,
     quartered: bool,
 }
 
 impl NewtonDirection {
+    /// The zero vector's (no direction: every product with it is zero).
+    pub(crate) const ZERO: NewtonDirection = NewtonDirection {
+        c: [0; 3],
+        y: 0,
+        quartered: false,
+    };
+
     /// The direction of a vector whose components fit 32 bits; `None` for zero.
     #[inline(always)]
     pub(crate) fn new(v: [i32; 3]) -> Option<NewtonDirection> {
@@ -174,18 +181,26 @@ impl NewtonDirection {
         let s = s0.wrapping_add(s1).wrapping_add(s2);
         let quartered = s >= 1 << 30;
         let y = rsqrt_q45(if quartered { s >> 2 } else { s });
+        let c = map3(c, |x| x as i16);
         Some(NewtonDirection { c, y, quartered })
+    }
+
+    /// The product of the shifted direction with a unit vector `l` (Q2.30): within ±2⁴⁶, of
+    /// the sign of the direction's own product with `l` wherever it lies beyond ±2³¹.
+    #[inline(always)]
+    pub(crate) fn dot(&self, l: [i32; 3]) -> i64 {
+        let ([c0, c1, c2], [l0, l1, l2]) = (self.c, l);
+        mul_short(l0, c0 as i32)
+            .wrapping_add(mul_short(l1, c1 as i32))
+            .wrapping_add(mul_short(l2, c2 as i32))
     }
 
     /// `max(0, u·l)` (Q2.30, below 2³¹) for the unit vector `u` of this direction and a unit
     /// vector `l` (Q2.30), rounded to nearest.
     #[inline(always)]
     pub(crate) fn cosine(&self, l: [i32; 3]) -> i32 {
-        let ([c0, c1, c2], [l0, l1, l2]) = (self.c, l);
         // Components below 2¹⁵ times a unit's: the sum t lies within ±|c|·2³⁰ (below 2⁴⁶).
-        let t = mul_short(l0, c0)
-            .wrapping_add(mul_short(l1, c1))
-            .wrapping_add(mul_short(l2, c2));
+        let t = self.dot(l);
         if t <= 0 {
             return 0;
         }

@@ -1,9 +1,11 @@
 //! Meshes and objects: what a scene is made of.
 //!
 //! A [`Mesh`] borrows its arrays, so it can live in flash as `static` data: positions, triangle
-//! indices, optional per-vertex normals and an optional edge list for wireframes. Its
-//! constructors check every index once (they are `const fn`, so a mesh in a `static` is checked
-//! at compile time) and the pipeline reads indices with checked access all the same.
+//! indices, optional per-vertex normals and an optional edge list for wireframes. Face normals
+//! for flat shading can be kept too, found once at start-up into RAM
+//! ([`Mesh::with_face_normals`]). Its constructors check every index once (they are
+//! `const fn`, so a mesh in a `static` is checked at compile time) and the pipeline reads
+//! indices with checked access all the same.
 //! An [`Object`] places a mesh in the world with a model matrix and gives it a colour.
 
 mod normals;
@@ -15,7 +17,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 
 use crate::math::{isqrt_ceil, Angle, Mat4, Trig, Vec3};
 
-pub use normals::vertex_normals;
+pub use normals::{vertex_normals, FaceNormal};
 pub use shapes::{
     torus, torus_counts, uv_sphere, uv_sphere_counts, ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON,
 };
@@ -42,6 +44,8 @@ pub enum MeshError {
     },
     /// The normals array is not as long as the positions array.
     NormalCountMismatch,
+    /// The face normals' storage is not as long as the triangles array.
+    FaceNormalCountMismatch,
 }
 
 impl fmt::Display for MeshError {
@@ -57,6 +61,9 @@ impl fmt::Display for MeshError {
                 write!(f, "edge {edge} refers to a vertex that does not exist")
             }
             MeshError::NormalCountMismatch => f.write_str("there must be one normal per vertex"),
+            MeshError::FaceNormalCountMismatch => {
+                f.write_str("there must be one face normal per triangle")
+            }
         }
     }
 }
@@ -87,6 +94,7 @@ pub struct Mesh<'a> {
     positions: &'a [Vec3],
     triangles: &'a [Triangle],
     normals: Option<&'a [Vec3]>,
+    face_normals: Option<&'a [FaceNormal]>,
     edges: Option<&'a [Edge]>,
     /// The largest coordinate magnitude of any position (raw Q16.16).
     extent: u32,
@@ -103,6 +111,7 @@ impl<'a> Mesh<'a> {
         positions: &[],
         triangles: &[],
         normals: None,
+        face_normals: None,
         edges: None,
         extent: 0,
         edge_extent: 0,
@@ -162,6 +171,7 @@ impl<'a> Mesh<'a> {
             positions,
             triangles,
             normals: None,
+            face_normals: None,
             edges: None,
             extent,
             edge_extent,
@@ -177,6 +187,22 @@ impl<'a> Mesh<'a> {
         }
         Ok(Mesh {
             normals: Some(normals),
+            ..self
+        })
+    }
+
+    /// Keeps each triangle's face normal for flat shading, found here once into `out`, which
+    /// must hold exactly one per triangle: frames then light each face from it instead of
+    /// finding it from the positions every time, with the same colours (see [`FaceNormal`]).
+    pub fn with_face_normals(self, out: &'a mut [FaceNormal]) -> Result<Self, MeshError> {
+        if out.len() != self.triangles.len() {
+            return Err(MeshError::FaceNormalCountMismatch);
+        }
+        for (n, t) in out.iter_mut().zip(self.triangles) {
+            *n = FaceNormal::of(self.positions, t, (self.extent, self.edge_extent));
+        }
+        Ok(Mesh {
+            face_normals: Some(out),
             ..self
         })
     }
@@ -246,6 +272,12 @@ impl<'a> Mesh<'a> {
     #[must_use]
     pub const fn normals(&self) -> Option<&'a [Vec3]> {
         self.normals
+    }
+
+    /// The face normals kept by [`with_face_normals`](Self::with_face_normals), if any.
+    #[must_use]
+    pub const fn face_normals(&self) -> Option<&'a [FaceNormal]> {
+        self.face_normals
     }
 
     /// The edge list, if any.

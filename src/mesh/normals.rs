@@ -1,7 +1,55 @@
-//! Vertex normals for meshes that come without them.
+//! Vertex normals for meshes that come without them, and the face normals flat shading keeps.
 
 use super::{MeshError, Triangle};
-use crate::math::{normalize, shr_round, Vec3};
+use crate::math::{normalize, shr_round, NewtonDirection, Vec3};
+use crate::shade::face_newton;
+
+/// A triangle's face normal as flat shading uses it, kept in a mesh by
+/// [`Mesh::with_face_normals`](super::Mesh::with_face_normals): the cross product of its edges
+/// scaled so that the largest component has 15 bits, and the reciprocal of its length, 12
+/// bytes. A mesh's positions do not change from frame to frame, and neither does this:
+/// found once, it spares every frame each drawn face's cross product and square root.
+///
+/// [`FlatKept`](crate::shade::FlatKept) reads it, with the same colours as
+/// [`Flat`](crate::shade::Flat) finds from the positions. A face turned almost edge-on to every
+/// light, where the 15 bits cannot tell whether the face turns to it, is lit from its positions
+/// instead (a product of the kept direction and a light within ±2³¹ of zero, where the
+/// direction's rounding could move its sign). It is read where flat shading lights a face in
+/// model space (the model matrix a rotation times a uniform scale) with
+/// [`Normalize::Newton`](crate::math::Normalize) (the default); otherwise faces are lit from
+/// their positions.
+///
+/// ```
+/// use fixed3d::mesh::{FaceNormal, MeshError, CUBE};
+/// let mut faces = [FaceNormal::ZERO; 12]; // one per triangle: in RAM, 12 bytes each
+/// let cube = CUBE.with_face_normals(&mut faces).unwrap();
+/// assert_eq!(cube.face_normals().map(<[_]>::len), Some(12));
+/// assert_eq!(core::mem::size_of::<FaceNormal>(), 12);
+/// // Drawn with `prepare(&scene, &mut cache, FlatKept)`: the colours `Flat` draws.
+/// let mut short = [FaceNormal::ZERO; 11];
+/// assert_eq!(CUBE.with_face_normals(&mut short), Err(MeshError::FaceNormalCountMismatch));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FaceNormal(pub(crate) NewtonDirection);
+
+impl FaceNormal {
+    /// A zero-area triangle's, and a starting value for storage.
+    pub const ZERO: FaceNormal = FaceNormal(NewtonDirection::ZERO);
+
+    /// The face normal of triangle `t` of `positions` (raw Q16.16 bounds `extents`: the
+    /// mesh's extent and edge extent).
+    pub(crate) fn of(positions: &[Vec3], t: &Triangle, extents: (u32, u32)) -> FaceNormal {
+        let p = |i: u16| {
+            positions
+                .get(i as usize)
+                .copied()
+                .unwrap_or_default()
+                .to_bits()
+        };
+        let direction = face_newton([p(t[0]), p(t[1]), p(t[2])], extents);
+        FaceNormal(direction.unwrap_or(NewtonDirection::ZERO))
+    }
+}
 
 /// Headroom bits of an accumulated normal: the largest face's cross product is scaled to 2²⁴
 /// (256 in Q16.16), so 128 of the largest faces can meet at a vertex before the sum saturates.

@@ -9,8 +9,8 @@ use embedded_graphics::Pixel;
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
 use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
-use crate::math::{map3, Mat4, NARROW_CORE};
-use crate::mesh::{Object, Triangle};
+use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
+use crate::mesh::{FaceNormal, Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
@@ -90,6 +90,9 @@ struct ObjectSetup<'o, const N: usize> {
     /// For flat shading, the lights seen from model space when the model matrix is a rotation
     /// times a scale: face normals then need no normal matrix.
     model_lighting: Option<Lighting<N>>,
+    /// The mesh's kept face normals, where flat shading reads them: lit in model space, by
+    /// [`Normalize::Newton`] (what they keep).
+    face_normals: Option<&'o [FaceNormal]>,
     /// Every vertex lies inside every clip plane: no triangle needs its outcodes read.
     inside: bool,
     /// The target holds a band of the frame's rows, not all of them (see `fill_face`).
@@ -172,6 +175,11 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             } else {
                 None
             };
+            let newton = self.frame.precision.normalize() == Normalize::Newton;
+            let face_normals = match model_lighting {
+                Some(_) if newton && S::KEPT_FACE_NORMALS => object.mesh.face_normals(),
+                _ => None,
+            };
             ObjectSetup {
                 object,
                 vertices,
@@ -179,6 +187,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 clip_from_model: Cell::new(None),
                 normal_matrix,
                 model_lighting,
+                face_normals,
                 // Bit k of `inside` (none from the 65th object on).
                 inside: k < 64 && self.inside & 1 << k != 0,
                 band,
@@ -224,7 +233,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             // Counted once per object (an error returns no statistics at all).
             add_count(&mut stats.primitives, triangles.len());
             let inside = setup.inside;
-            for tri in triangles {
+            for (k, tri) in triangles.iter().enumerate() {
                 let (Some(a), Some(b), Some(c)) = (
                     setup.vertices.get(tri[0] as usize),
                     setup.vertices.get(tri[1] as usize),
@@ -263,7 +272,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     self.fill_face(
                         target,
                         &setup,
-                        tri,
+                        (Self::face_normal(&setup, k), tri),
                         &v,
                         colors,
                         area,
@@ -277,10 +286,19 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     continue;
                 }
                 let planes = a.outcode | b.outcode | c.outcode;
-                self.fill_clipped(target, &setup, tri, planes, &map, &mut stats)?;
+                self.fill_clipped(target, &setup, (k, tri), planes, &map, &mut stats)?;
             }
         }
         Ok(stats)
+    }
+
+    /// Triangle `k`'s kept face normal where the shading reads it (none otherwise: a constant
+    /// for the others, whose code then holds nothing of it).
+    fn face_normal<'o>(setup: &ObjectSetup<'o, N>, k: usize) -> Option<&'o FaceNormal> {
+        match setup.face_normals {
+            Some(n) if S::KEPT_FACE_NORMALS => n.get(k),
+            _ => None,
+        }
     }
 
     /// Clips a triangle that crosses a clip plane (`planes`: those its vertices are outside
@@ -296,7 +314,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         &self,
         target: &mut T,
         setup: &ObjectSetup<'_, N>,
-        tri: &Triangle,
+        (k, tri): (usize, &Triangle),
         planes: u8,
         map: &ScreenMap,
         stats: &mut Stats,
@@ -324,7 +342,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 let area = area2(&[v[0].0, v[1].0, v[2].0]);
                 if kept(facing, area, stats) {
                     let colors = [first.2, v1.2, v2.2];
-                    self.fill_face(target, setup, tri, &v, &colors, area, false, stats)?;
+                    let face = (Self::face_normal(setup, k), tri);
+                    self.fill_face(target, setup, face, &v, &colors, area, false, stats)?;
                 }
             }
         }
@@ -345,7 +364,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         &self,
         target: &mut T,
         setup: &ObjectSetup<'_, N>,
-        tri: &Triangle,
+        (kept, tri): (Option<&FaceNormal>, &Triangle),
         v: &[(ScreenPoint, i32); 3],
         colors: &[[i32; 3]; 3],
         area: i64,
@@ -368,6 +387,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             base: setup.object.color,
             positions: setup.object.mesh.positions(),
             indices: tri,
+            face_normal: if S::KEPT_FACE_NORMALS { kept } else { None },
             extents: (setup.object.mesh.extent(), setup.object.mesh.edge_extent()),
             normal_matrix,
             normalize: self.frame.precision.normalize(),

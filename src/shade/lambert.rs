@@ -208,6 +208,44 @@ pub(crate) fn flat_color<const N: usize>(
     )
 }
 
+/// The [`NewtonDirection`] of a model-space triangle's face normal (see [`face_direction`]);
+/// `None` for a zero-area triangle.
+pub(crate) fn face_newton(
+    p: [[i32; 3]; 3],
+    (extent, edge_extent): (u32, u32),
+) -> Option<NewtonDirection> {
+    NewtonDirection::new(face_direction(p, None, extent, edge_extent))
+}
+
+/// [`flat_color`] in model space with [`Normalize::Newton`], from the face's kept
+/// direction `d`: the same colour, or `None` where `d` cannot tell whether the face turns to a
+/// light (each product within ±2³¹, where the direction's rounding to 15 bits could move the
+/// sign of its product: the remainders of the shift, each below one unit of the shifted
+/// direction, move it by less than the light's components' sum of magnitudes, √3·2³⁰).
+#[inline(always)]
+pub(crate) fn kept_face_color<const N: usize>(
+    base: Rgb888,
+    d: &NewtonDirection,
+    lighting: &Lighting<N>,
+) -> Option<Rgb888> {
+    const SURE: i64 = 1 << 31;
+    let mut undecided = false;
+    for light in lighting.lights() {
+        let t = d.dot(light.direction);
+        if t >= SURE {
+            return Some(lambert_by(base, lighting, |light| {
+                d.cosine(light.direction)
+            }));
+        }
+        undecided |= t > -SURE;
+    }
+    if undecided {
+        None
+    } else {
+        Some(lambert(base, None, lighting))
+    }
+}
+
 /// Lambert of a face whose direction is `n` (any i32 components but `i32::MIN`, as
 /// [`face_direction`] gives). A face that turns from every light gets the ambient colour without
 /// being normalised: its direction's products with the lights are all ≤ 0, so Lambert adds nothing.
@@ -707,6 +745,86 @@ mod tests {
         }
         assert!(worst <= 3 && worst_exact < 5e-9, "{worst} {worst_exact}");
         assert!(NewtonDirection::new([0; 3]).is_none());
+    }
+
+    /// A kept face normal decides which lights a face turns to only where its 15-bit
+    /// direction's product with a light lies beyond ±2³¹, and there as the exact product
+    /// does; where it decides, the colour is [`flat_color`]'s. Random triangles of every scale
+    /// (the long edges' path too), lit by a random light or by one in the face's plane tilted
+    /// by its rounding, with and without a second light: the second kind needs the margin
+    /// (some of its 15-bit products take the other sign than the exact one).
+    #[test]
+    fn kept_face_normals_light_as_the_positions() {
+        let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
+        let base = Rgb888::new(255, 160, 64);
+        let (mut decided, mut undecided, mut flipped) = (0, 0, 0);
+        for k in 0..60_000 {
+            let scale = rng.pick(&[1 << 10, 1 << 16, 1 << 22, 1 << 28, 1 << 30]);
+            let p = [(); 3].map(|_| [(); 3].map(|_| rng.within(scale)));
+            let extent = p
+                .iter()
+                .flatten()
+                .map(|c| c.unsigned_abs())
+                .max()
+                .unwrap_or(0);
+            let edge = |q: [i32; 3]| map3([0, 1, 2], |j| (q[j] as i64 - p[0][j] as i64).abs());
+            let edges = [edge(p[1]), edge(p[2])];
+            let edge_extent = edges.iter().flatten().copied().max().unwrap_or(0) as u32;
+            let extents = (extent, edge_extent);
+            let n = face_direction(p, None, extent, edge_extent);
+            let d = face_newton(p, extents).unwrap_or(NewtonDirection::ZERO);
+            let r = [(); 3].map(|_| rng.within(1000) as f64);
+            let nf = n.map(|c| c as f64);
+            let light = if k % 2 == 0 {
+                r
+            } else {
+                // r × n: in the face's plane.
+                [
+                    r[1] * nf[2] - r[2] * nf[1],
+                    r[2] * nf[0] - r[0] * nf[2],
+                    r[0] * nf[1] - r[1] * nf[0],
+                ]
+            };
+            let big = light.iter().map(|c| c.abs()).fold(0.0, f64::max);
+            if big == 0.0 {
+                continue;
+            }
+            let l = light.map(|c| (c / big * (1 << 20) as f64) as i32);
+            let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(0.2)));
+            let gray = LightColor::gray(Scalar::from_num(0.8));
+            let _ = lighting.push(DirectionalLight::new(
+                Vec3::from_bits(l[0], l[1], l[2]),
+                gray,
+            ));
+            if k % 3 == 0 {
+                let r = [(); 3].map(|_| rng.within(1 << 16));
+                let tint = LightColor::new(Scalar::ONE, Scalar::from_num(0.5), Scalar::ZERO);
+                let _ = lighting.push(DirectionalLight::new(
+                    Vec3::from_bits(r[0], r[1], r[2]),
+                    tint,
+                ));
+            }
+            for light in lighting.lights() {
+                let (t, exact) = (d.dot(light.direction), dot_wide(n, light.direction));
+                if t.abs() >= 1 << 31 {
+                    assert_eq!(t > 0, exact > 0, "{p:?} {light:?}");
+                }
+                flipped += ((t > 0) != (exact > 0)) as u32;
+            }
+            match kept_face_color(base, &d, &lighting) {
+                Some(color) => {
+                    let from_positions =
+                        flat_color(base, p, None, Normalize::Newton, extents, &lighting);
+                    assert_eq!(color, from_positions, "{p:?} {lighting:?}");
+                    decided += 1;
+                }
+                None => undecided += 1,
+            }
+        }
+        assert!(
+            decided > 30_000 && undecided > 10_000 && flipped > 1_000,
+            "{decided} {undecided} {flipped}"
+        );
     }
 
     /// Grey lights over an ambient of 0.2 (a zero direction is left out).
