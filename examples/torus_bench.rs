@@ -7,6 +7,9 @@
 //!
 //! One frame is `clear_buffers` (colour and depth) then `draw_scene` (vertex stage, culling,
 //! shading, rasterising); both are `#[inline(never)]` so that a profiler can count them apart.
+//! The mesh keeps its face normals (`Mesh::with_face_normals`, found once before the frames)
+//! and `FlatKept` lights each face from them, unless the example is built with
+//! `TORUS_BENCH_PER_FRAME_NORMALS` set (see [`PER_FRAME_NORMALS`]).
 //! The target counts no fragments (the scene needs no counts) unless the example is built with
 //! `TORUS_BENCH_COUNTED` set (see [`COUNTED`]). `bench/host.sh` builds it with the crate's `asm`
 //! feature, as the firmware presets are (`--features asm`: the row loop in x86-64 assembly),
@@ -21,11 +24,11 @@ use std::time::Instant;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
-use fixed3d::mesh::{torus, torus_counts, Mesh, Object};
+use fixed3d::mesh::{torus, torus_counts, FaceNormal, Mesh, Object};
 use fixed3d::pipeline::{Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
-use fixed3d::shade::Flat;
+use fixed3d::shade::{Flat, FlatKept, Shading};
 use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
 const W: u32 = 320;
@@ -43,6 +46,11 @@ fn clear_buffers(color: &mut [Rgb565], depth: &mut [u16]) {
 /// with both targets' code would inline differently.
 const COUNTED: bool = option_env!("TORUS_BENCH_COUNTED").is_some();
 
+/// Built with `TORUS_BENCH_PER_FRAME_NORMALS` set, the mesh keeps no face normals and `Flat`
+/// finds each face's normal from its positions every frame (`bench/host.sh` measures the
+/// difference); otherwise `FlatKept` reads the normals the mesh keeps. The same colours.
+const PER_FRAME_NORMALS: bool = option_env!("TORUS_BENCH_PER_FRAME_NORMALS").is_some();
+
 /// One frame's drawing: what bench/SCENE.md times.
 #[inline(never)]
 fn draw_scene(
@@ -52,8 +60,25 @@ fn draw_scene(
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> Stats {
+    if PER_FRAME_NORMALS {
+        draw_by(Flat, frame, scene, cache, color, depth)
+    } else {
+        draw_by(FlatKept, frame, scene, cache, color, depth)
+    }
+}
+
+/// [`draw_scene`] by one shading type.
+#[inline(always)]
+fn draw_by<S: Shading>(
+    shading: S,
+    frame: &Frame,
+    scene: &Scene<'_, 1>,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Stats {
     let (Ok(prepared), Ok(mut c), Ok(mut d)) = (
-        frame.prepare(scene, cache, Flat),
+        frame.prepare(scene, cache, shading),
         FrameBuffer::new(color, W, H),
         DepthBuffer::new(depth, W, H),
     ) else {
@@ -85,6 +110,12 @@ fn main() {
     );
     let mesh: Mesh<'_> =
         torus(Scalar::ONE, s(0.4), 48, 24, &mut p, &mut nrm, &mut t).expect("torus");
+    let mut faces = vec![FaceNormal::ZERO; nt];
+    let mesh = if PER_FRAME_NORMALS {
+        mesh
+    } else {
+        mesh.with_face_normals(&mut faces).expect("face normals")
+    };
     let model =
         Mat4::rotation_y(Angle::from_degrees(30)) * Mat4::rotation_x(Angle::from_degrees(20));
     let objects = [Object::new(&mesh, model, Rgb888::new(255, 160, 64))];

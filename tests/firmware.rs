@@ -11,6 +11,7 @@ mod scenes;
 use embedded_graphics::geometry::Size;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
 use fixed3d::math::Vec3;
+use fixed3d::mesh::FaceNormal;
 use fixed3d::pipeline::ScreenVertex;
 use scenes::*;
 
@@ -42,8 +43,18 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         })
     };
     let full_hash = framed(&mut |f, c, fb, d| {
+        full_per_frame(&mesh, f, c, fb, d);
+    });
+    // The firmware's `full` keeps the face normals: the same frames (and without them).
+    let mut faces = vec![FaceNormal::ZERO; TORUS_TRIANGLES];
+    let kept = mesh.with_face_normals(&mut faces).unwrap();
+    let kept_hash = framed(&mut |f, c, fb, d| {
+        full(&kept, f, c, fb, d);
+    });
+    let plain_hash = framed(&mut |f, c, fb, d| {
         full(&mesh, f, c, fb, d);
     });
+    assert_eq!((kept_hash, plain_hash), (full_hash, full_hash));
     let gouraud_hash = framed(&mut |f, c, fb, d| {
         gouraud(&mesh, f, c, fb, d);
     });

@@ -7,6 +7,7 @@
 #   PRESETS="full wire" TARGETS=thumbv6m-none-eabi bench/mcu/run.sh
 #   BOARD=microbit bench/mcu/run.sh   # `wire` on the micro:bit model: a real Cortex-M0, 16 KiB RAM
 #   PRESETS=knobs bench/mcu/run.sh    # the torus in every configuration of docs/accuracy.md
+#   NORMALS=per-frame bench/mcu/run.sh  # `full` without its kept face normals
 #   CHECK=1 bench/mcu/run.sh     # fail if a hash differs from bench/mcu/hashes.txt (the host's)
 #                                # or a library's flash exceeds its budget in docs/footprint.md
 #
@@ -42,6 +43,8 @@ else
     # ASM=0: without the library's `asm` feature (the Thumb-2 pixel loop), which the presets
     # have by default.
     [[ ${ASM:-1} == 0 ]] && features=(--no-default-features --features board-mps2)
+    # NORMALS=per-frame: `full` finds each face's normal every frame instead of keeping them.
+    [[ ${NORMALS:-kept} == per-frame ]] && features+=(--features per-frame-normals)
 fi
 # `knobs` (every configuration of docs/accuracy.md) needs micromath; ask for it alone, as the
 # other presets would then be built with it too.

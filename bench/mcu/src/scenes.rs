@@ -12,7 +12,7 @@ use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
 use fixed3d::pipeline::{Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
-use fixed3d::shade::{Flat, Gouraud, Unlit};
+use fixed3d::shade::{Flat, FlatKept, Gouraud, Unlit};
 use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 
 /// Frames per preset (the hash chains over them).
@@ -218,7 +218,9 @@ pub fn depth_frame<const N: usize, S: fixed3d::shade::Shading, D: DepthFormat>(
     .map(|_| ())
 }
 
-/// `full`: the torus, flat Lambert, u16 depth, into a 320x240 framebuffer.
+/// `full`: the torus, flat Lambert, u16 depth, into a 320x240 framebuffer, each face lit from
+/// the normal the mesh keeps ([`FlatKept`]; a mesh that keeps none is lit as [`Flat`] lights
+/// it).
 pub fn full(
     mesh: &Mesh<'_>,
     f: u32,
@@ -227,14 +229,22 @@ pub fn full(
     depth: &mut [u16],
 ) -> Option<()> {
     let objects = [Object::new(mesh, torus_model(f), ORANGE)];
-    depth_frame(
-        frame(W, H)?,
-        &Scene::new(&objects, sun()),
-        Flat,
-        cache,
-        color,
-        depth,
-    )
+    let scene = Scene::new(&objects, sun());
+    depth_frame(frame(W, H)?, &scene, FlatKept, cache, color, depth)
+}
+
+/// [`full`] by [`Flat`]: each face's normal found from its positions every frame (the `full`
+/// firmware built with its feature `per-frame-normals`).
+pub fn full_per_frame(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let objects = [Object::new(mesh, torus_model(f), ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    depth_frame(frame(W, H)?, &scene, Flat, cache, color, depth)
 }
 
 /// The `variants` preset's configurations: the depth tests and counts of `ColorDepth`, then
