@@ -21,15 +21,22 @@ fi
 # First the same frame into a target that counts fragments and writes (the example's
 # TORUS_BENCH_COUNTED, a constant: see examples/torus_bench.rs), for what the counts cost.
 # Every build has the `asm` feature, as the firmware presets do (on x86-64 the row loop in
-# assembly, src/target/x86_64.rs); the headline's build is measured without it too.
+# assembly, src/target/x86_64.rs); the headline's build is measured without it too. The mesh
+# keeps its face normals (`FlatKept`), as the `full` firmware preset's does; the headline's
+# build is measured with each face's normal found every frame too (`Flat`, the example's
+# TORUS_BENCH_PER_FRAME_NORMALS).
 cargo build --profile bench-lto --example torus_bench
 cp target/bench-lto/examples/torus_bench target/bench-lto/examples/torus_bench_no_asm
+TORUS_BENCH_PER_FRAME_NORMALS=1 cargo build --profile bench-lto --features asm --example torus_bench
+cp target/bench-lto/examples/torus_bench target/bench-lto/examples/torus_bench_per_frame
 TORUS_BENCH_COUNTED=1 cargo build --profile bench-lto --features asm --example torus_bench
 cp target/bench-lto/examples/torus_bench target/bench-lto/examples/torus_bench_counted
 cargo build --release --features asm --example torus_bench
 cargo build --profile bench-lto --features asm --example torus_bench
 no_asm_out=target/callgrind.torus-no-asm
 NO_REFERENCE=1 valgrind --tool=callgrind --callgrind-out-file="$no_asm_out" target/bench-lto/examples/torus_bench_no_asm "$frames" >/dev/null 2>&1
+per_frame_out=target/callgrind.torus-per-frame
+NO_REFERENCE=1 valgrind --tool=callgrind --callgrind-out-file="$per_frame_out" target/bench-lto/examples/torus_bench_per_frame "$frames" >/dev/null 2>&1
 counted_out=target/callgrind.torus-counted
 counted_line=$(NO_REFERENCE=1 valgrind --tool=callgrind --callgrind-out-file="$counted_out" target/bench-lto/examples/torus_bench_counted "$frames" 2>/dev/null)
 lto_out=target/callgrind.torus-lto
@@ -44,22 +51,24 @@ ir() { # inclusive instructions of the first function whose name ends with $2, i
 headline=$(ir "$lto_out" "torus_bench::draw_scene"); clear=$(ir "$lto_out" "torus_bench::clear_buffers")
 counted=$(ir "$counted_out" "torus_bench::draw_scene")
 no_asm=$(ir "$no_asm_out" "torus_bench::draw_scene")
+per_frame=$(ir "$per_frame_out" "torus_bench::draw_scene")
 draw=$(ir "$out" "torus_bench::draw_scene")
 prepare=$(ir "$out" "pipeline::Frame::prepare"); walk=$(ir "$out" "Prepared<_,S>>::draw"); face=$(ir "$out" "Prepared<_,S>>::fill_face")
 rows=$(ir "$out" "raster::triangle::rows_in_range"); runs=$(ir "$out" "raster::triangle::TriangleRows::runs")
 shading=$(ir "$out" "Shading>::paint")
 timing=$(target/bench-lto/examples/torus_bench 200)
 report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$covered" -v pr="${prepare:-0}" -v wk="${walk:-0}" \
-    -v fc="${face:-0}" -v sp="$(( ${rows:-0} + ${runs:-0} ))" -v sh="${shading:-0}" -v ct="$counted" -v na="$no_asm" 'BEGIN {
+    -v fc="${face:-0}" -v sp="$(( ${rows:-0} + ${runs:-0} ))" -v sh="${shading:-0}" -v ct="$counted" -v na="$no_asm" -v pf="$per_frame" 'BEGIN {
     f = 1 / n;
     printf "draw_scene: %.3f M instructions per frame, %.1f per covered pixel (clear_buffers: %.3f M)\n\n", h*f/1e6, h*f/px, c*f/1e6;
     printf "Without the \x60asm\x60 feature (the row loop compiled from Rust): %.3f M (%+.1f%%)\n\n", na*f/1e6, 100*(na-h)/h;
+    printf "With each face\x27s normal found from its positions every frame (\x60Flat\x60, the mesh keeping\nnone, instead of \x60FlatKept\x60): %.3f M (%+.1f%%)\n\n", pf*f/1e6, 100*(pf-h)/h;
     printf "Into a target that counts fragments and writes (without \x60.uncounted()\x60): %.3f M (%+.1f%%)\n\n", ct*f/1e6, 100*(ct-h)/h;
     printf "Where they go, in the default release build (%.3f M per frame: several codegen units, no\nLTO, the stages\x27 functions kept apart):\n\n", d*f/1e6;
     printf "| stage | instructions per frame | share |\n|---|---:|---:|\n";
     row("vertex stage (transform, outcodes, projection), once per vertex", pr);
     row("triangle walk (fetch, trivial reject, culling, clipping)", wk - fc);
-    row("flat shading per triangle (face normal, Lambert)", sh);
+    row("flat shading per triangle (Lambert from the kept face normal)", sh);
     row("span set-up (sorting, edge steppers)", sp);
     row("depth walk set-up, rows and pixels (edge stepping, depth test, writes), and the rest of each triangle\x27s work (its inputs, its colour\x27s conversion)", fc - sh - sp);
     row("rest of draw_scene", d - pr - wk);
@@ -90,7 +99,11 @@ about 1% when code moves between modules (what is inlined depends on the split).
 bench/SCENE.md's tilted torus at 320x240: flat Lambert, u16 depth, back faces culled; one frame
 is the drawing, clears excluded, into a target that counts no fragments (\`ColorDepth::uncounted\`:
 the scene needs no counts, and the firmware presets draw the same way; what counting them
-costs is given below the headline).
+costs is given below the headline). The mesh keeps its face normals, found once before the
+frames (\`Mesh::with_face_normals\`, 12 bytes a triangle), and \`FlatKept\` lights each face
+from them, as the \`full\` firmware preset does: the torus does not change shape, so its
+normals need not be found again every frame; the colours are \`Flat\`'s, which finds each
+face's normal from its positions every frame (its count follows the headline).
 
 ## x86-64
 
@@ -143,18 +156,18 @@ $stages
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
-  instructions per frame (5.2% with the \`asm\` loops, which then need no count either), the
-  M0 3.6% (3.0% with its \`asm\` loop), x86-64 1.5% (the counts hold registers in the row
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.8% fewer
+  instructions per frame (5.1% with the \`asm\` loops, which then need no count either), the
+  M0 4.1% (2.9% with its \`asm\` loop), x86-64 1.8% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
-  2.6% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  2.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
   took 12 per pixel (predicated, every register its own), but the call and its arguments
   cost each span more than that saved (measured before the failure count: 2% more per
-  frame); with the \`asm\` loop in line the pixels take about 0.27 M there.
+  frame); with the \`asm\` loop in line the pixels take about 0.28 M there.
 - **Rows and span entries**: every row steps two edges, clips the span to the target (on
   the M4 only for a triangle that crosses its left or right side), and
   moves the depth start and the row's place in both buffers; a row with pixels also checks
@@ -272,7 +285,18 @@ $stages
   for both signs (a negative numerator counts the subtractions of ⌈−n / d⌉): 0.4% against
   quotients to 8, and the loop 1% against one that told the signs apart at 9 instructions a
   turn; the flatter lines of a wireframe try 2: 16 cost the \`wire\` preset 3.6%), then
-  flat shading: the face normal (a cross
+  flat shading. By \`FlatKept\`, as here, from the face's normal kept in the mesh
+  (\`Mesh::with_face_normals\`, once: its direction at 15 bits and the reciprocal of its
+  length, 12 bytes a triangle): a product with each light, which decides whether the face
+  turns to it wherever it lies beyond ±2³¹ (within that band, where rounding the direction
+  could change its sign, the face is lit from its positions as \`Flat\` lights it; no face
+  of the torus is), and the cosine from it and the reciprocal; the same colours as
+  \`Flat\`, the M4's frame 5.0% fewer instructions, the M0's 7.0%, x86-64's 7.1%. (As
+  a path inside \`Flat\`, read where a mesh keeps normals, it cost meshes that keep none 2%
+  on the M4 and 0.5% on the M0, its registers moving around the whole triangle set-up: a
+  type of its own costs them nothing. The colour found in the walk and handed to the fill
+  instead measured 0.5% fewer on the M0 and 0.6% more on the M4, and 3% more for \`Flat\`.)
+  By \`Flat\`, the face normal (a cross
   product of 32-bit edges; on 32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4
   since its edges divide, 0.7% of its frame; on x86-64 1% more; taken as it is, within
   ±2³¹, where it was halved from 2³⁰ on: the M4 1.3%, the M0 0.2%; untested where every
@@ -399,27 +423,27 @@ $stages
   through a call (the M0 0.3% more, the M4 0.4%), and the first row's edges set up where
   they go, their vertices chosen first, instead of swapped after (the M0 0.5% more, the M4
   0.9%).
-- **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
-  0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 66% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.43 M, the rest about 0.90 M). The largest excess found is per drawn triangle: on
-  the M4 about 650 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.62 M, about 75 of them the \`asm\` row loop's set-up with
+- **The goals**: with the pixels at what they take now (0.28 M on the M4), 1.0 M leaves
+  0.72 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  rows, 71% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.42 M, the rest about 0.81 M). The largest excess found is per drawn triangle: on
+  the M4 about 550 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
+  and the edge set-ups it calls, 0.53 M, about 80 of them the \`asm\` row loop's set-up with
   its test of the columns)
   where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
-  cross product, a reciprocal square root, a dot product) needs about 320, spread thin over
-  dozens of pieces of 5 to 25 instructions: about 0.32 M. The M4's rows and pixels are already hand-written (the \`asm\`
+  product with the light and its cosine from the kept normal) needs about 250, spread thin over
+  dozens of pieces of 5 to 25 instructions: about 0.24 M. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
-  stage (0.44 M, about 380
+  stage (0.43 M, about 375
   a vertex, of which the transform takes about 135 and the divisions by w about 135) and the depth
-  walk's two divisions (7.7% of its frame, their reciprocal included) come first. The rest would need less work per
+  walk's two divisions (8.3% of its frame, their reciprocal included) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
-  nothing) or a different scene (face normals kept in the mesh instead of computed every
-  frame). Two larger changes of the work itself were sized and left: skipping the
+  nothing), or more of what a rigid mesh keeps from frame to frame, as its face normals now
+  are. Two larger changes of the work itself were sized and left: skipping the
   projection of vertices that only back faces use, found by a test in model space before
   the vertex stage, needs a margin that snapping cannot cross; bounded once per frame
   (the nearest and farthest w, the longest edge on screen) it spares 441 of the torus'

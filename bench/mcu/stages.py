@@ -93,7 +93,7 @@ CUTS = [
         f"            }}\n            {BB}(paint);\n            return Ok(());\n        }}\n"
         "        match paint.solid() {\n            Some(rgb) if Q::UNIFORM => {",
     )]),
-    ("flat shading (face normal, Lambert)", "no spans or depth walk", [(
+    ("flat shading (Lambert from the kept face normal)", "no spans or depth walk", [(
         "src/pipeline/draw.rs",
         "    bump(&mut stats.drawn);\n",
         f"    bump(&mut stats.drawn);\n    if {BB}(true) {{ {BB}((&p, &z, area, paint)); "
