@@ -72,8 +72,9 @@ fn uncounted_target_draws_the_same_frame() {
 /// `FlatKept`, lighting faces from the normals the mesh keeps (`Mesh::with_face_normals`),
 /// draws the very frames that `Flat` draws from the positions, and so does `FlatKept` for a
 /// mesh that keeps none: the torus turned many ways, under the scene's light and under three
-/// coloured ones; a stretched model (lit in world space) and the exact normalisation, which do
-/// not read them, too. Storage of the wrong length is refused.
+/// coloured ones, some so near that the near plane cuts it; a stretched model (lit in world
+/// space) and the exact normalisation, which do not read them, too. Storage of the wrong
+/// length is refused.
 #[test]
 fn kept_face_normals_draw_the_same_frames() {
     use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Vec3};
@@ -107,7 +108,7 @@ fn kept_face_normals_draw_the_same_frames() {
         model: Mat4,
         lighting: &Lighting<3>,
         normalize: Normalize,
-    ) -> Vec<Rgb565> {
+    ) -> (Vec<Rgb565>, u32) {
         let objects = [Object::new(mesh, model, BASE)];
         let scene = Scene::new(&objects, lighting.clone());
         let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
@@ -118,10 +119,10 @@ fn kept_face_normals_draw_the_same_frames() {
         let mut color = FrameBuffer::new(&mut c, 320, 240).unwrap();
         let mut depth = DepthBuffer::new(&mut d, 320, 240).unwrap();
         depth.clear();
-        prepared
+        let stats = prepared
             .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
             .unwrap();
-        c
+        (c, stats.clipped)
     }
     let mut scene_light = Lighting::<3>::new(LightColor::gray(Scalar::from_num(0.2)));
     scene_light
@@ -131,27 +132,36 @@ fn kept_face_normals_draw_the_same_frames() {
         ))
         .unwrap();
     let stretched = Mat4::scaling(Vec3::new(Scalar::ONE, Scalar::from_num(1.3), Scalar::ONE));
-    let mut frames = 0;
+    let (mut frames, mut clipped_frames) = (0, 0);
     for (k, degrees) in (0..360).step_by(20).enumerate() {
         let turn = Mat4::rotation_y(Angle::from_degrees(degrees))
             * Mat4::rotation_x(Angle::from_degrees(degrees * 3 / 2));
-        let model = if k % 6 == 5 { turn * stretched } else { turn };
+        // Every third turn moved 1.2 towards the eye: the near plane cuts the torus, whose
+        // clipped pieces are lit from their triangles' kept normals too.
+        let nearer =
+            Mat4::translation(Vec3::new(Scalar::ZERO, Scalar::ZERO, Scalar::from_num(1.2)));
+        let model = match k % 6 {
+            5 => turn * stretched,
+            1 | 3 => nearer * turn,
+            _ => turn,
+        };
         let normalize = if k % 4 == 3 {
             Normalize::Exact
         } else {
             Normalize::Newton
         };
         for lighting in [&scene_light, &coloured] {
-            let frame = draw(FlatKept, &kept, model, lighting, normalize);
+            let (frame, clipped) = draw(FlatKept, &kept, model, lighting, normalize);
             assert!(frame.iter().filter(|&&p| p != Rgb565::BLACK).count() > 10_000);
-            let per_frame = draw(Flat, &plain, model, lighting, normalize);
-            let none_kept = draw(FlatKept, &plain, model, lighting, normalize);
+            clipped_frames += (clipped > 0) as u32;
+            let per_frame = draw(Flat, &plain, model, lighting, normalize).0;
+            let none_kept = draw(FlatKept, &plain, model, lighting, normalize).0;
             assert!(frame == per_frame, "{degrees} degrees");
             assert!(none_kept == per_frame, "{degrees} degrees");
             frames += 1;
         }
     }
-    assert_eq!(frames, 36);
+    assert_eq!((frames, clipped_frames), (36, 12));
     let mut short = vec![FaceNormal::ZERO; 2303];
     assert_eq!(
         plain.with_face_normals(&mut short),
