@@ -11,11 +11,11 @@ use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use embedded_graphics::Pixel;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Vec3};
-use fixed3d::mesh::{Mesh, MeshError, Object, CUBE};
+use fixed3d::mesh::{FaceNormal, Mesh, MeshError, Object, CUBE};
 use fixed3d::pipeline::{Cull, Frame, MatrixFormat, Precision, PrepareError, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{LightColor, Lighting, Scene};
-use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Unlit};
+use fixed3d::shade::{Flat, FlatKept, Gouraud, PerspectiveGouraud, Unlit};
 use fixed3d::target::{BufferError, ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use proptest::prelude::*;
 
@@ -201,7 +201,8 @@ proptest! {
 
     /// R6/R11/M12: random meshes with extreme coordinates, random cameras (some inside the
     /// geometry), every shading and culling mode, full frames and bands: no panic, nothing
-    /// written outside the buffers (canaries on both sides), the same image twice.
+    /// written outside the buffers (canaries on both sides), the same image twice, and by
+    /// `FlatKept` from the mesh's kept face normals the image `Flat` draws.
     #[test]
     fn random_scenes_never_panic_or_write_outside(
         positions in prop::collection::vec(vec3(), 3..24),
@@ -217,7 +218,9 @@ proptest! {
         let n = positions.len() as u16;
         let tris: Vec<[u16; 3]> = raw_tris.iter().map(|&(a, b, c)| [a % n, b % n, c % n]).collect();
         let normals: Vec<Vec3> = positions.iter().map(|p| *p - Vec3::from_int(0, 1, 0)).collect();
+        let mut faces = vec![FaceNormal::ZERO; tris.len()];
         let mesh = Mesh::new(&positions, &tris).unwrap().with_normals(&normals).unwrap();
+        let mesh = mesh.with_face_normals(&mut faces).unwrap();
         let scale = Scalar::from_bits(scale_bits);
         let model = Mat4::scaling(Vec3::new(scale, scale, scale));
         let objects = [Object::new(&mesh, model, Rgb888::new(200, 120, 40))];
@@ -252,6 +255,7 @@ proptest! {
                 match gouraud {
                     0 => frame.prepare(&scene, cache, Flat).unwrap().draw(&mut t).unwrap(),
                     1 => frame.prepare(&scene, cache, Gouraud).unwrap().draw(&mut t).unwrap(),
+                    3 => frame.prepare(&scene, cache, FlatKept).unwrap().draw(&mut t).unwrap(),
                     _ => frame.prepare(&scene, cache, PerspectiveGouraud).unwrap().draw(&mut t).unwrap(),
                 };
             }
@@ -259,6 +263,8 @@ proptest! {
             assert!(d[..16].iter().chain(&d[16 + len..]).all(|&p| p == 0));
             c[16..16 + len].to_vec()
         };
+        // The kept face normals light the faces as their positions do.
+        prop_assert_eq!(render_full(&mut cache, 3), render_full(&mut cache, 0));
         for gouraud in [0u8, 1, 2] {
             let full = render_full(&mut cache, gouraud);
             prop_assert_eq!(&full, &render_full(&mut cache, gouraud));
