@@ -2,7 +2,7 @@
 
 use super::{MeshError, Triangle};
 use crate::math::{normalize, shr_round, NewtonDirection, Vec3};
-use crate::shade::face_newton;
+use crate::shade::face_newton_direction;
 
 /// A triangle's face normal as flat shading uses it, kept in a mesh by
 /// [`Mesh::with_face_normals`](super::Mesh::with_face_normals): the cross product of its edges
@@ -27,7 +27,9 @@ use crate::shade::face_newton;
 /// assert_eq!(core::mem::size_of::<FaceNormal>(), 12);
 /// // Drawn with `prepare(&scene, &mut cache, FlatKept)`: the colours `Flat` draws.
 /// let mut short = [FaceNormal::ZERO; 11];
-/// assert_eq!(CUBE.with_face_normals(&mut short), Err(MeshError::FaceNormalCountMismatch));
+/// let refused = CUBE.with_face_normals(&mut short);
+/// assert_eq!(refused, Err(MeshError::FaceNormalCountMismatch));
+/// assert_eq!(refused.unwrap_err().to_string(), "there must be one face normal per triangle");
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct FaceNormal(pub(crate) NewtonDirection);
@@ -37,7 +39,9 @@ impl FaceNormal {
     pub const ZERO: FaceNormal = FaceNormal(NewtonDirection::ZERO);
 
     /// The face normal of triangle `t` of `positions` (raw Q16.16 bounds `extents`: the
-    /// mesh's extent and edge extent).
+    /// mesh's extent and edge extent), found by flat shading's own code
+    /// ([`face_newton_direction`]), so that a kept normal and one found every frame cannot
+    /// differ.
     pub(crate) fn of(positions: &[Vec3], t: &Triangle, extents: (u32, u32)) -> FaceNormal {
         let p = |i: u16| {
             positions
@@ -46,7 +50,7 @@ impl FaceNormal {
                 .unwrap_or_default()
                 .to_bits()
         };
-        let direction = face_newton([p(t[0]), p(t[1]), p(t[2])], extents);
+        let direction = face_newton_direction([p(t[0]), p(t[1]), p(t[2])], extents);
         FaceNormal(direction.unwrap_or(NewtonDirection::ZERO))
     }
 }

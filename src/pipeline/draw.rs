@@ -90,8 +90,10 @@ struct ObjectSetup<'o, const N: usize> {
     /// For flat shading, the lights seen from model space when the model matrix is a rotation
     /// times a scale: face normals then need no normal matrix.
     model_lighting: Option<Lighting<N>>,
-    /// The mesh's kept face normals, where flat shading reads them: lit in model space, by
-    /// [`Normalize::Newton`] (what they keep).
+    /// The mesh's kept face normals, where the shading reads them ([`FlatKept`]): lit in model
+    /// space, by [`Normalize::Newton`] (what they keep).
+    ///
+    /// [`FlatKept`]: crate::shade::FlatKept
     face_normals: Option<&'o [FaceNormal]>,
     /// Every vertex lies inside every clip plane: no triangle needs its outcodes read.
     inside: bool,

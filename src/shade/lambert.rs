@@ -210,7 +210,7 @@ pub(crate) fn flat_color<const N: usize>(
 
 /// The [`NewtonDirection`] of a model-space triangle's face normal (see [`face_direction`]);
 /// `None` for a zero-area triangle.
-pub(crate) fn face_newton(
+pub(crate) fn face_newton_direction(
     p: [[i32; 3]; 3],
     (extent, edge_extent): (u32, u32),
 ) -> Option<NewtonDirection> {
@@ -780,7 +780,7 @@ mod tests {
             let edge_extent = edges.iter().flatten().copied().max().unwrap_or(0) as u32;
             let extents = (extent, edge_extent);
             let n = face_direction(p, None, extent, edge_extent);
-            let d = face_newton(p, extents).unwrap_or(NewtonDirection::ZERO);
+            let d = face_newton_direction(p, extents).unwrap_or(NewtonDirection::ZERO);
             let r = [(); 3].map(|_| rng.within(1000) as f64);
             let nf = n.map(|c| c as f64);
             let light = if k % 2 == 0 {

@@ -11,7 +11,9 @@
 mod lambert;
 mod paint;
 
-pub(crate) use lambert::{face_newton, flat_color, kept_face_color, lambert, vertex_normal};
+pub(crate) use lambert::{
+    face_newton_direction, flat_color, kept_face_color, lambert, vertex_normal,
+};
 pub use paint::{
     Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
 };
@@ -36,8 +38,8 @@ pub struct FaceInputs<'a> {
     /// The mesh's model-space positions, and the triangle's indices into them.
     pub(crate) positions: &'a [Vec3],
     pub(crate) indices: &'a Triangle,
-    /// The triangle's kept face normal, where its mesh keeps them and flat shading reads them:
-    /// no normal matrix (the lighting in model space) and [`Normalize::Newton`].
+    /// The triangle's kept face normal, where its mesh keeps them and the shading reads them
+    /// ([`FlatKept`]), lit in model space (no normal matrix) by [`Normalize::Newton`].
     pub(crate) face_normal: Option<&'a FaceNormal>,
     /// The mesh's largest coordinate magnitude and largest edge component (raw Q16.16, see
     /// [`Mesh::edge_extent`](crate::mesh::Mesh)).

@@ -234,7 +234,9 @@ pub fn full(
 }
 
 /// [`full`] by [`Flat`]: each face's normal found from its positions every frame (the `full`
-/// firmware built with its feature `per-frame-normals`).
+/// firmware built with its feature `per-frame-normals`). Two plain functions rather than one
+/// taking the shading: generic over it, `full` measured 0.8% more instructions on the M4 (its
+/// code laid out in the firmware's crate); these two measure as the one before them.
 pub fn full_per_frame(
     mesh: &Mesh<'_>,
     f: u32,
