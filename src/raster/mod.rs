@@ -27,8 +27,12 @@ mod triangle;
 
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+pub(crate) use triangle::within_columns;
+#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
+pub(crate) use triangle::TriangleRows;
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-pub(crate) use triangle::{columns_bound, EdgeWalk, Runs, TriangleRows};
+pub(crate) use triangle::{columns_bound, EdgeWalk, Runs};
 pub(crate) use triangle::{rows_in_range, spans_in_range};
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
@@ -54,6 +58,8 @@ pub(crate) const PIPELINE_LIMIT: i32 = (1 << 15) - 16;
 /// assert_eq!(ScreenPoint::pixel_center(2, 3), ScreenPoint::new(40, 56));
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+// Two words, x then y: the `asm` feature's triangle set-up on Cortex-M3/M4 reads them so.
+#[repr(C)]
 pub struct ScreenPoint {
     /// Sub-pixels to the right of the screen's left edge.
     pub x: i32,

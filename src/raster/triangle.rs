@@ -97,7 +97,8 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
-/// A triangle's rows for a target's own row loop ([`TriangleRows::runs`]): from its first row
+/// A triangle's rows for a target's own row loop (`TriangleRows::runs`, or on Cortex-M3/M4
+/// `thumb2::triangle_runs` in assembly): from its first row
 /// with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's span
 /// `max(left, x0)..min(right, x1)` for the clip rectangle's columns `x0..x1`, both edges stepped
 /// after each row; after the first `upper` rows (at least one; `rows` when no edge changes),
@@ -111,6 +112,17 @@ pub(crate) struct Runs {
     pub(crate) upper: u32,
     pub(crate) rows: u32,
     pub(crate) lower_is_left: bool,
+}
+
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+impl Runs {
+    /// No rows, and zero edges: where the Cortex-M3/M4's set-up in assembly writes runs.
+    pub(crate) const ZERO: Runs = Runs {
+        edges: [EdgeWalk::ZERO; 3],
+        upper: 0,
+        rows: 0,
+        lower_is_left: false,
+    };
 }
 
 /// The pixels a triangle covers, as spans clipped to `clip`, by the top-left rule (see the
@@ -177,7 +189,7 @@ pub(crate) fn spans_in_range(
 /// A triangle's rows in a clip rectangle before any edge is set up ([`rows_in_range`]): its
 /// vertices sorted by y, its first row and the row past its last, the middle vertex's row
 /// clamped to them, and the side of the long edge. Its spans come from
-/// [`spans`](Self::spans); for a target's own row loop its runs from [`runs`](Self::runs),
+/// [`spans`](Self::spans); for a target's own row loop its runs from `runs`,
 /// each edge set up where the loop reads it. (Where the spans were set up first and their
 /// edges then copied into the loop's block, the frame took 1.9% more instructions on x86-64,
 /// 0.8% on the Cortex-M0, 0.3% on the M4; on x86-64 the rows and the runs are set up out of
@@ -281,12 +293,10 @@ impl TriangleRows {
     /// ends are `ceil((x − 8) / 16)` of points on its edges (the exact values every edge walk
     /// steps through), whose x lie between their edge's vertices', and the ceiling is
     /// monotonic: from `ceil(−15 / 16) = 0` to `ceil(16·width / 16) = width`.
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))))]
     #[inline(always)]
     pub(crate) fn within_columns(&self, bound: u32) -> bool {
-        let [a, b, c] = self.v;
-        let at = |x: i32| x.wrapping_add(7) as u32;
-        at(a.x).max(at(b.x)).max(at(c.x)) <= bound
+        within_columns(&self.v, bound)
     }
 
     /// These rows for a target's own row loop, of a triangle within the pipeline's range
@@ -297,7 +307,7 @@ impl TriangleRows {
     /// sub-pixels: none of the pipeline's). Without a split the lower edge is only a
     /// placeholder: a copy of the left edge on Cortex-M0, where clearing it is a library call
     /// a triangle (0.9% of the frame), zero elsewhere (a copy cost x86-64 0.6%).
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))))]
     #[cfg_attr(
         all(target_pointer_width = "32", target_has_atomic = "32"),
         inline(always)
@@ -351,7 +361,16 @@ impl TriangleRows {
     }
 }
 
-/// The bound of [`TriangleRows::within_columns`] for `width` columns: one unsigned comparison a
+/// `TriangleRows::within_columns` of the triangle `v`, in any order.
+#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
+#[inline(always)]
+pub(crate) fn within_columns(v: &[ScreenPoint; 3], bound: u32) -> bool {
+    let [a, b, c] = *v;
+    let at = |x: i32| x.wrapping_add(7) as u32;
+    at(a.x).max(at(b.x)).max(at(c.x)) <= bound
+}
+
+/// The bound of [`within_columns`] for `width` columns: one unsigned comparison a
 /// vertex, `x + 7 ≤ 16·width + 15` (a wrapped negative fails it). Widths from 2²⁷ on are taken
 /// as 2²⁷ − 1, which only tests more strictly, so that the bound stays below 2³¹.
 #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
@@ -385,7 +404,7 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
 /// 0.9% fewer instructions than through its call, for 160 bytes of flash; in line for the
 /// lower edge too, 0.7% more than that).
 #[cfg(all(
-    any(test, all(feature = "asm", fixed3d_asm_rows)),
+    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))),
     all(target_pointer_width = "32", target_has_atomic = "32")
 ))]
 #[inline(always)]
@@ -395,7 +414,7 @@ fn edge_to_end(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
 
 /// [`edge_to_end`] on the other cores: `edge` itself.
 #[cfg(all(
-    any(test, all(feature = "asm", fixed3d_asm_rows)),
+    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))),
     not(all(target_pointer_width = "32", target_has_atomic = "32"))
 ))]
 #[inline(always)]

@@ -14,7 +14,11 @@ use super::thumb2 as core_rows;
 #[cfg(target_arch = "x86_64")]
 use super::x86_64 as core_rows;
 use crate::pipeline::Stats;
-use crate::raster::{columns_bound, EdgeWalk, Runs, TriangleRows};
+#[cfg(not(fixed3d_thumb2))]
+use crate::raster::TriangleRows;
+use crate::raster::{columns_bound, EdgeWalk, Runs};
+#[cfg(fixed3d_thumb2)]
+use crate::raster::{within_columns, ScreenPoint};
 
 /// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
 /// steps; on ARMv7-M its numerator, step, denominator and base; on x86-64 its walk and step).
@@ -26,7 +30,7 @@ pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 /// called pairs below are read together by the Cortex-M loops (`ldrd`, `ldm`).
 ///
 /// Contract of the loops (`thumb1::rows`, `thumb2::rows`, `x86_64::rows`), which
-/// [`solid_rows`] establishes and checks before it calls them:
+/// `solid_rows` (on Cortex-M3/M4 `solid_triangle`) establishes and checks before it calls them:
 /// - `row` is the address of the first of `rows · width` cells of a colour buffer (2 bytes a
 ///   cell, aligned to 2) and `row + delta` that of the same cells of a u16 depth buffer, both
 ///   borrowed mutably for the call, with `runs.rows ≥ 1` and `width > 0`;
@@ -36,7 +40,7 @@ pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 ///   size (right);
 /// - `bits` holds the two bytes of a valid colour of the buffer's type;
 /// - called without the clamps (`clamp` false), every row's span ends lie in `0..=width`
-///   before any clamp ([`TriangleRows::within_columns`]).
+///   before any clamp (`within_columns`).
 #[repr(C)]
 pub(super) struct RowBlock {
     /// Left, right and the lower short edge (`runs.edges`), and the rows.
@@ -90,6 +94,7 @@ const _: () = {
 /// buffers do not hold the triangle's rows (never, for rows clipped to the target).
 #[inline(always)]
 #[allow(unsafe_code, clippy::too_many_arguments)]
+#[cfg(not(fixed3d_thumb2))]
 pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     triangle: &TriangleRows,
     depth: &RoundedRows<W>,
@@ -100,10 +105,8 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     bits: u32,
     stats: &mut Stats,
 ) -> bool {
-    // Rows of fewer than 2¹⁶ pixels (every display's).
-    let w = match u16::try_from(width) {
-        Ok(w) if w > 0 => i32::from(w),
-        _ => return false,
+    let Some(w) = block_width(width) else {
+        return false;
     };
     let Some(runs) = triangle.runs() else {
         return false;
@@ -130,15 +133,98 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
         fragments: 0,
         failed: 0,
     };
-    let Runs { upper, rows, .. } = runs;
+    run_block::<C, T, K>(&mut block, clamp, colors, depths, first, width, stats);
+    true
+}
+
+/// `solid_rows` of the triangle `p` (a [`ScreenTriangle`](super::ScreenTriangle)'s points,
+/// `area` its doubled signed area) in the rows `y0..y1`, the buffers' first: its runs set up
+/// by `triangle_runs` in assembly, its depth walk by `depth` from its first row. False, with
+/// nothing drawn, where `solid_rows` declines the triangle or `depth` gives no walk; true
+/// where it covers none of the rows.
+#[cfg(fixed3d_thumb2)]
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
+    p: &[ScreenPoint; 3],
+    area: i64,
+    (y0, y1): (i32, i32),
+    depth: impl FnOnce(i32) -> Option<(RoundedRows<W>, i32)>,
+    colors: &mut [C],
+    depths: &mut [u16],
+    width: u32,
+    bits: u32,
+    stats: &mut Stats,
+) -> bool {
+    let Some(w) = block_width(width) else {
+        return false;
+    };
+    let mut block = RowBlock {
+        runs: Runs::ZERO,
+        step_x: 0,
+        delta: 0,
+        step_y: 0,
+        stride: 0,
+        width: w,
+        end: 0,
+        last: 0,
+        slot: 0,
+        bits,
+        row_z: 0,
+        row: 0,
+        fragments: 0,
+        failed: 0,
+    };
+    let y = core_rows::triangle_runs(p, area > 0, (y0, y1), &mut block.runs);
+    if block.runs.rows == 0 {
+        return true;
+    }
+    let Some((walk, _)) = depth(y) else {
+        return false;
+    };
+    block.step_x = walk.step_x.to_i32();
+    block.step_y = walk.step_y.to_i32();
+    block.row_z = walk.row.to_i32();
+    block.slot = if block.runs.lower_is_left { 0 } else { EDGE };
+    let clamp = !(core_rows::WITHOUT_CLAMPS && within_columns(p, columns_bound(w)));
+    let first = y.wrapping_sub(y0) as u32;
+    run_block::<C, T, K>(&mut block, clamp, colors, depths, first, width, stats);
+    true
+}
+
+/// The block's width for buffers of `width` columns: rows of fewer than 2¹⁶ pixels (every
+/// display's), and at least one.
+#[inline(always)]
+fn block_width(width: u32) -> Option<i32> {
+    match u16::try_from(width) {
+        Ok(w) if w > 0 => Some(i32::from(w)),
+        _ => None,
+    }
+}
+
+/// The row loop of a triangle's `block`, filled in but for the buffers' addresses, on the
+/// rows from `first` of buffers of `width` columns: what `solid_rows` does once it has the
+/// runs. Nothing is drawn where the buffers do not hold the rows.
+#[inline(always)]
+#[allow(unsafe_code)]
+fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
+    block: &mut RowBlock,
+    clamp: bool,
+    colors: &mut [C],
+    depths: &mut [u16],
+    first: u32,
+    width: u32,
+    stats: &mut Stats,
+) {
+    let Runs { upper, rows, .. } = block.runs;
     // The rows' cells in both buffers, and the rest of the contract, checked here (constants,
     // or known to the caller: compiled away).
     let width = width as usize;
     let Some((colors, depths)) = run_cells(colors, depths, first, rows, width) else {
-        return true;
+        return;
     };
     if !(1..=rows).contains(&upper) || size_of::<C>() != 2 || align_of::<C>() != 2 {
-        return true;
+        return;
     }
     let row = colors.as_mut_ptr();
     // Below the buffer's length in bytes, so no overflow; the last one past the end of
@@ -153,8 +239,10 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     // and alignment 2 (checked); `rows ≥ upper ≥ 1` and `width > 0` (checked); `row`,
     // `delta`, `stride`, `end` and `last` are set from them just above; `slot` is 0 or an
     // edge's size; `bits` came from `color_bits` of a valid `C` (the caller's); without the
-    // clamps, `within_columns` holds for `width` and the rows the edges in `runs` walk.
-    unsafe { core_rows::rows::<T, K>(&mut block, clamp) };
+    // clamps, `within_columns` holds for `width` and the triangle whose rows the edges in
+    // `runs` walk (set up by `TriangleRows::runs`, or on Cortex-M3/M4 by
+    // `thumb2::triangle_runs`, which computes the same words: see its documentation).
+    unsafe { core_rows::rows::<T, K>(block, clamp) };
     if K::COUNTED {
         stats.fragments = stats.fragments.saturating_add(block.fragments);
         // Each failed fragment was counted among the fragments: no wrap.
@@ -162,7 +250,6 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
             .written
             .saturating_add(block.fragments.wrapping_sub(block.failed));
     }
-    true
 }
 
 /// The two bytes of a colour of 2 bytes and alignment 2, as a word for the loops in assembly;

@@ -9,7 +9,7 @@ use embedded_graphics::Pixel;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
-use fixed3d::pipeline::{Frame, Prepared, ScreenVertex, Stats};
+use fixed3d::pipeline::{Cull, Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, FlatKept, Gouraud, Unlit};
@@ -253,13 +253,78 @@ pub fn full_per_frame(
 /// `clipped`, the strict counted target with the eye so close that the tori cross the near
 /// plane and every side of the screen (spans clamped to the target's columns, polygons cut by
 /// the near plane).
-pub const VARIANTS: [&str; 5] = [
+pub const VARIANTS: [&str; 6] = [
     "less",
     "less-counted",
     "less-or-equal",
     "less-or-equal-counted",
     "clipped",
+    "triangles",
 ];
+
+/// Triangles of the `triangles` variant's mesh ([`random_mesh`]), three vertices each.
+pub const RANDOM_TRIANGLES: usize = 600;
+
+/// The `triangles` variant's mesh: `RANDOM_TRIANGLES` triangles from a fixed xorshift seed,
+/// of four kinds in turn: large ones with corners on a coarse grid (many share a row, or lie
+/// behind the near plane, or beyond the screen's sides), small ones (the usual triangle of a
+/// mesh), slivers (two corners a grid step apart), and triangles with a flat top or bottom
+/// (two corners at one height and depth, so at one screen row). Every triangle's set-up case
+/// comes up: corners tied in y in every order, the middle corner on the first row, on the
+/// last or strictly between, both windings.
+pub fn random_mesh<'a>(p: &'a mut [Vec3], t: &'a mut [Triangle]) -> Mesh<'a> {
+    let mut x = 0x2545_F491u32;
+    let mut next = move || {
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        x
+    };
+    // A random multiple of `step` (Q16.16 bits) within ±`steps` steps.
+    let mut on_grid = |steps: u32, step: i32| {
+        let k = (next() % (2 * steps + 1)) as i32 - steps as i32;
+        Scalar::from_bits(k * step)
+    };
+    let quarter = 1 << 14;
+    for (k, (tri, corners)) in t.iter_mut().zip(p.chunks_exact_mut(3)).enumerate() {
+        let big = |g: &mut dyn FnMut(u32, i32) -> Scalar| {
+            Vec3::new(g(12, quarter), g(12, quarter), g(8, quarter))
+        };
+        match k % 4 {
+            0 => {
+                for c in corners.iter_mut() {
+                    *c = big(&mut on_grid);
+                }
+            }
+            1 | 2 => {
+                let centre = big(&mut on_grid);
+                // Small: offsets to 0.15 on a grid of 1/64; slivers: the first two corners
+                // one grid step apart, the third further.
+                let spread = if k % 4 == 1 { 10 } else { 40 };
+                for c in corners.iter_mut() {
+                    let d = Vec3::new(
+                        on_grid(spread, 1 << 10),
+                        on_grid(spread, 1 << 10),
+                        on_grid(spread, 1 << 10),
+                    );
+                    *c = centre + d;
+                }
+                if k % 4 == 2 {
+                    let d = Vec3::new(on_grid(1, 1 << 10), on_grid(1, 1 << 10), Scalar::ZERO);
+                    corners[1] = corners[0] + d;
+                }
+            }
+            _ => {
+                let (a, c) = (big(&mut on_grid), big(&mut on_grid));
+                let b = Vec3::new(on_grid(12, quarter), a.y, a.z);
+                corners.copy_from_slice(&[a, b, c]);
+            }
+        }
+        let v = (3 * k) as u16;
+        *tri = [v, v + 1, v + 2];
+    }
+    Mesh::new(p, t).unwrap_or(Mesh::EMPTY)
+}
 
 /// The `clipped` variant's frame: the eye at (0, 1.2, 1.2), looking down at the ring from
 /// 1.7 instead of 2.6, nearer than the torus's outer edge plus the near plane's distance.
@@ -274,11 +339,15 @@ pub fn clipped_frame(w: u32, h: u32) -> Option<Frame> {
 pub fn variant(
     name: &str,
     mesh: &Mesh<'_>,
+    random: &Mesh<'_>,
     f: u32,
     cache: &mut [ScreenVertex],
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> Option<u32> {
+    if name == "triangles" {
+        return random_triangles(random, f, cache, color, depth);
+    }
     let objects = [
         Object::new(mesh, torus_model(f), ORANGE),
         Object::new(mesh, torus_model(f), Rgb888::new(40, 90, 255)),
@@ -310,6 +379,32 @@ pub fn variant(
             }
         },
     )?;
+    Some(stats.fragments.rotate_left(16) ^ stats.written)
+}
+
+/// The `triangles` variant: [`random_mesh`] turned by frame `f` about x, both windings drawn
+/// (no culling), into a band of the frame from row 37 (its rows 37 to 276, the buffers'
+/// 240), fragments counted. Returns the counts' word, as [`variant`] does.
+fn random_triangles(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<u32> {
+    // About x, so that corners apart only in x stay at one height and depth.
+    let turn = Mat4::rotation_x(Angle::from_degrees(7 * f as i32));
+    let objects = [Object::new(mesh, turn, ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    let frame = frame(W, H)?.with_cull(Cull::None);
+    let p = frame.prepare(&scene, cache, Flat).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    let stats = p
+        .draw(&mut ColorDepth::band(&mut c, &mut d, 37).ok()?)
+        .ok()?;
     Some(stats.fragments.rotate_left(16) ^ stats.written)
 }
 

@@ -11,6 +11,7 @@ use core::cell::Cell;
 
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use fixed3d::math::Vec3;
 use fixed3d::pipeline::ScreenVertex;
 use mcu_bench::scenes::*;
 use mcu_bench::{storage, torus_storage, Op};
@@ -19,13 +20,16 @@ use panic_semihosting as _;
 #[entry]
 fn main() -> ! {
     let (_, pos, nor, tri) = torus_storage!();
-    let (cache, fb, depth) = storage!(
+    let (cache, fb, depth, random_pos, random_tri) = storage!(
         // The torus twice.
         CACHE2: [ScreenVertex; 2 * TORUS_VERTICES] = [ScreenVertex::DEFAULT; 2 * TORUS_VERTICES],
         FB: [Rgb565; (W * H) as usize] = [Rgb565::BLACK; (W * H) as usize],
         DEPTH: [u16; (W * H) as usize] = [0; (W * H) as usize],
+        RANDOM_POS: [Vec3; 3 * RANDOM_TRIANGLES] = [Vec3::ZERO; 3 * RANDOM_TRIANGLES],
+        RANDOM_TRI: [[u16; 3]; RANDOM_TRIANGLES] = [[0; 3]; RANDOM_TRIANGLES],
     );
     let mesh = torus_mesh(pos, nor, tri);
+    let random = random_mesh(random_pos, random_tri);
     let counts = Cell::new(0);
     mcu_bench::run_each(&VARIANTS, |name, op| match op {
         Op::Clear => {
@@ -34,7 +38,7 @@ fn main() -> ! {
             0
         }
         Op::Draw(f) => {
-            let word = variant(name, &mesh, f, cache, fb, depth);
+            let word = variant(name, &mesh, &random, f, cache, fb, depth);
             counts.set(word.unwrap_or(0));
             word.is_some() as u32
         }
