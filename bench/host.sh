@@ -156,8 +156,8 @@ $stages
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.8% fewer
-  instructions per frame (5.1% with the \`asm\` loops, which then need no count either), the
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.9% fewer
+  instructions per frame (5.8% with the \`asm\` loops, which then need no count either), the
   M0 4.1% (2.9% with its \`asm\` loop), x86-64 1.8% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
@@ -284,14 +284,19 @@ $stages
   by subtraction before a library division, one loop of a test, a subtraction and a count
   for both signs (a negative numerator counts the subtractions of ⌈−n / d⌉): 0.4% against
   quotients to 8, and the loop 1% against one that told the signs apart at 9 instructions a
-  turn; the flatter lines of a wireframe try 2: 16 cost the \`wire\` preset 3.6%), then
-  flat shading. By \`FlatKept\`, as here, from the face's normal kept in the mesh
+  turn; the flatter lines of a wireframe try 2: 16 cost the \`wire\` preset 3.6%; with the
+  \`asm\` feature Cortex-M3/M4 sort the corners, find the rows and set up the three edges in one
+  block of Thumb-2, \`thumb2::triangle_runs\`, about 150 instructions, and the depth walk in
+  line right after it: the M4's frame 1.9% fewer instructions, about 1.1 KB, and no fewer
+  with the depth walk's set-up out of line; checked on random triangles of every case by the
+  \`variants\` preset), then flat shading. By \`FlatKept\`, as here, from the face's normal
+  kept in the mesh
   (\`Mesh::with_face_normals\`, once: its direction at 15 bits and the reciprocal of its
   length, 12 bytes a triangle): a product with each light, which decides whether the face
   turns to it wherever it lies beyond ±2³¹ (within that band, where rounding the direction
   could change its sign, the face is lit from its positions as \`Flat\` lights it; no face
   of the torus is), and the cosine from it and the reciprocal; the same colours as
-  \`Flat\`, the M4's frame 5.0% fewer instructions, the M0's 7.0%, x86-64's 7.1%. (As
+  \`Flat\`, the M4's frame 6.0% fewer instructions, the M0's 7.0%, x86-64's 7.1%. (As
   a path inside \`Flat\`, read where a mesh keeps normals, it cost meshes that keep none 2%
   on the M4 and 0.5% on the M0, its registers moving around the whole triangle set-up: a
   type of its own costs them nothing. The colour found in the walk and handed to the fill
@@ -302,7 +307,9 @@ $stages
   M0; the walk's count of culled faces, which its two more loop variables moved to memory,
   kept in a local for each object, 1.1% more on the M4 and 0.5% on the M0; two walks, one
   with the kept normals beside the triangles and one without, 0.2% fewer on the M4 for 330
-  bytes and 0.6% more on the M0.)
+  bytes and 0.6% more on the M0; the object's colour under the ambient light alone found
+  once per object for the faces turned from every light, a fifth of those drawn, instead of
+  for each, 0.4% fewer on the M0 and 0.4% more on the M4.)
   By \`Flat\`, the face normal (a cross
   product of 32-bit edges; on 32-bit cores, of edges within ±2¹⁵, in 32-bit words: on the M4
   since its edges divide, 0.7% of its frame; on x86-64 1% more; taken as it is, within
@@ -430,16 +437,20 @@ $stages
   through a call (the M0 0.3% more, the M4 0.4%), and the first row's edges set up where
   they go, their vertices chosen first, instead of swapped after (the M0 0.5% more, the M4
   0.9%).
-- **The goals**: with the pixels at what they take now (0.28 M on the M4), 1.0 M leaves
-  0.72 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 71% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.42 M, the rest about 0.81 M). The largest excess found is per drawn triangle: on
-  the M4 about 550 instructions outside its rows and pixels (\`profile.py\`: \`fill_face\`
-  and the edge set-ups it calls, 0.53 M, about 80 of them the \`asm\` row loop's set-up with
-  its test of the columns)
-  where the arithmetic (a sort, two divisions for the depth walk, three edge set-ups, a
-  product with the light and its cosine from the kept normal) needs about 250, spread thin over
-  dozens of pieces of 5 to 25 instructions: about 0.24 M. The M4's rows and pixels are already hand-written (the \`asm\`
+- **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
+  0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  rows, 73% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.42 M, the rest about 0.81 M). Per drawn triangle the M4 takes about 535
+  instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
+  rows and of its depth walk, 0.51 M). That is not the compiler's moves between registers
+  and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of
+  its corners, its rows and three edges, \`thumb2::triangle_runs\`) takes about 150
+  instructions (the sort 26 with its IT blocks, the rows 17, an edge 27), as many as the
+  compiler's code for the same work; the 1.9% it saved came from the depth walk's set-up
+  then running in line right after it. A set-up and shading of about 250 instructions a
+  triangle, once estimated from the arithmetic, leaves out what that arithmetic takes in
+  instructions; hand-writing the rest (the depth walk's divisions, the colour) would gain
+  in proportion, a few per cent. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve;
   20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a

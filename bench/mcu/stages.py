@@ -75,16 +75,25 @@ CUTS = [
     ), (
         # The `asm` feature's row loops (both cores): everything up to the call.
         "src/target/asm_rows.rs",
-        "    unsafe { core_rows::rows::<T, K>(&mut block, clamp) };",
-        f"    if {BB}(true) {{ {BB}((&block, colors.len(), depths.len())); return true; }}\n"
-        "    unsafe { core_rows::rows::<T, K>(&mut block, clamp) };",
+        "    unsafe { core_rows::rows::<T, K>(block, clamp) };",
+        f"    if {BB}(true) {{ {BB}((&*block, colors.len(), depths.len())); return; }}\n"
+        "    unsafe { core_rows::rows::<T, K>(block, clamp) };",
     )]),
     ("span set-up (sorting, edge steppers)", "no fill set-up", [(
-        # The rows and edges as the build sets them up (for the `asm` row loops as runs), then
-        # nothing of the colour or the depth walk.
+        # The rows and edges as the build sets them up (for the `asm` row loops as runs: on the
+        # M4F in assembly, from the corners), then nothing of the colour or the depth walk.
         "src/target/surface.rs",
         "        match paint.solid() {\n            Some(rgb) if Q::UNIFORM => {",
         f"        if {BB}(true) {{\n"
+        "            #[cfg(all(feature = \"asm\", fixed3d_thumb2))]\n"
+        "            {\n"
+        "                let mut runs = crate::raster::Runs::ZERO;\n"
+        "                let (p, up) = (&triangle.p, triangle.area > 0);\n"
+        "                let rows = (self.clip.y0, self.clip.y1);\n"
+        f"                {BB}(super::thumb2::triangle_runs(p, up, rows, &mut runs));\n"
+        f"                {BB}(&runs);\n"
+        "            }\n"
+        "            #[cfg(not(all(feature = \"asm\", fixed3d_thumb2)))]\n"
         "            if let Some(rows) = rows_in_range(triangle.p, self.clip, triangle.area) {\n"
         "                #[cfg(all(feature = \"asm\", fixed3d_asm_rows))]\n"
         f"                {BB}(rows.runs());\n"

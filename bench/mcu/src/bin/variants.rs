@@ -1,9 +1,11 @@
 //! Preset `variants`: `full`'s torus drawn twice at the same depths (see `scenes::variant`)
 //! through each depth test and count of `ColorDepth`, one line each, with the counts folded
 //! into each frame's hash, then once more from so near (`clipped`) that the near plane cuts
-//! triangles and spans reach every side of the screen: every u16 row and pixel loop the
-//! library has (Rust, and with the `asm` feature its Thumb-2 variants on the Cortex-M4F)
-//! checked against the host's (`tests/firmware.rs`). Not in footprint.md's table.
+//! triangles and spans reach every side of the screen, and last 600 random triangles of every
+//! row set-up case into a band (`triangles`, see `scenes::random_mesh`): every u16 row and
+//! pixel loop the library has (Rust, and with the `asm` feature its Thumb-2 variants and
+//! row set-up on the Cortex-M4F, its Thumb-1 loop on the M0) checked against the host's
+//! (`tests/firmware.rs`). Not in footprint.md's table.
 #![no_std]
 #![no_main]
 
