@@ -288,7 +288,8 @@ $stages
   \`asm\` feature Cortex-M3/M4 sort the corners, find the rows and set up the three edges in one
   block of Thumb-2, \`thumb2::triangle_runs\`, about 150 instructions, and the depth walk in
   line right after it: the M4's frame 1.9% fewer instructions, about 1.1 KB, and no fewer
-  with the depth walk's set-up out of line; checked on random triangles of every case by the
+  with the depth walk's set-up out of line, 0.2% more with the row loop's block kept by the
+  target instead of made for each triangle; checked on random triangles of every case by the
   \`variants\` preset), then flat shading. By \`FlatKept\`, as here, from the face's normal
   kept in the mesh
   (\`Mesh::with_face_normals\`, once: its direction at 15 bits and the reciprocal of its
