@@ -344,26 +344,15 @@ macro_rules! edge {
 
 /// In [`triangle_runs`], the keys in `$a` and `$b` swapped where `$a`'s is the greater, and the
 /// long edge's side (`side`) turned with them.
+#[rustfmt::skip]
 macro_rules! swap_if_greater {
     ($a:literal, $b:literal) => {
         concat!(
-            "cmp {",
-            $a,
-            "}, {",
-            $b,
-            "}\n",
+            "cmp {", $a, "}, {", $b, "}\n",
             "itttt gt\n",
-            "movgt {t1}, {",
-            $a,
-            "}\n",
-            "movgt {",
-            $a,
-            "}, {",
-            $b,
-            "}\n",
-            "movgt {",
-            $b,
-            "}, {t1}\n",
+            "movgt {t1}, {", $a, "}\n",
+            "movgt {", $a, "}, {", $b, "}\n",
+            "movgt {", $b, "}, {t1}\n",
             "eorgt {side}, {side}, #16\n",
         )
     };
@@ -371,12 +360,11 @@ macro_rules! swap_if_greater {
 
 /// In [`triangle_runs`], the first row at or below the point of key `$k` into `t1`:
 /// `(y + 7) >> 4` of its `y = k >> 2` (`first_centre_from32`).
+#[rustfmt::skip]
 macro_rules! first_row {
     ($k:literal) => {
         concat!(
-            "asr {t1}, {",
-            $k,
-            "}, #2\n",
+            "asr {t1}, {", $k, "}, #2\n",
             "add {t1}, {t1}, #7\n",
             "asr {t1}, {t1}, #4\n",
         )
