@@ -114,17 +114,6 @@ pub(crate) struct Runs {
     pub(crate) lower_is_left: bool,
 }
 
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-impl Runs {
-    /// No rows, and zero edges: where the Cortex-M3/M4's set-up in assembly writes runs.
-    pub(crate) const ZERO: Runs = Runs {
-        edges: [EdgeWalk::ZERO; 3],
-        upper: 0,
-        rows: 0,
-        lower_is_left: false,
-    };
-}
-
 /// The pixels a triangle covers, as spans clipped to `clip`, by the top-left rule (see the
 /// [module documentation](super)). Either winding is accepted; a triangle of zero area, or one
 /// with a coordinate beyond [`COORD_LIMIT`](super::COORD_LIMIT), yields nothing.

@@ -374,8 +374,8 @@ macro_rules! first_row {
 /// `TriangleRows::runs` (the other cores') of [`rows_in_range`] in one block of
 /// assembly, for the points `p` (within ±[`PIPELINE_LIMIT`], a [`ScreenTriangle`]'s), whose
 /// doubled signed area is positive if `area_positive`, in the rows `y0..y1`: written into
-/// `runs`, and the first row returned; `runs.rows` is 0 (and nothing else written) where the
-/// triangle covers none of those rows. About 150 instructions a triangle (the sort 26, the
+/// `runs`, every field of it, and the first row returned; `rows` is 0 (and nothing else
+/// written) where the triangle covers none of those rows. About 150 instructions a triangle (the sort 26, the
 /// rows 17, an edge 27), which with the depth walk set up in line after it took the
 /// reference frame 1.9% fewer instructions than the compiler's set-up (see the module's
 /// documentation).
@@ -402,22 +402,26 @@ macro_rules! first_row {
 /// [`rows_in_range`]: crate::raster::rows_in_range
 /// [`ScreenTriangle`]: super::ScreenTriangle
 /// [`PIPELINE_LIMIT`]: crate::raster::PIPELINE_LIMIT
+///
+/// # Safety
+/// `runs` is valid for writes of a `Runs` (its memory need not hold one) and borrowed by
+/// nothing else for the call.
 #[inline(always)]
 #[allow(unsafe_code)]
-pub(super) fn triangle_runs(
+pub(super) unsafe fn triangle_runs(
     p: &[ScreenPoint; 3],
     area_positive: bool,
     (y0, y1): (i32, i32),
-    runs: &mut Runs,
+    runs: *mut Runs,
 ) -> i32 {
     let mut y = y0;
     // The long edge's side as 16 (left) or 0, which each swap of the sort turns.
     let side: u32 = if area_positive { 16 } else { 0 };
     // SAFETY:
     // - Memory: the block reads the six words of `p` (borrowed; at offsets 0 to 20 by its
-    //   layout, asserted below) and writes words of `runs` (borrowed mutably): the three
-    //   edges at 0, 16 and 32, `upper`, `rows`, and the byte `lower_is_left`; nothing else,
-    //   and no stack (`nostack`). Point reads are `p + 8·i` for an index `i = key & 3` of
+    //   layout, asserted below) and writes words of `runs` (valid for writes and unshared, the
+    //   caller's contract): the three edges at 0, 16 and 32, `upper`, `rows`, and the byte
+    //   `lower_is_left`; nothing else, and no stack (`nostack`). Point reads are `p + 8·i` for an index `i = key & 3` of
     //   keys made from the indices 0, 1 and 2 and only moved about.
     // - Values: a `bool` gets 0 or 1; `u32`s any word; an edge (`DivideStepper`) any words
     //   but its denominator, which is positive (see above), as its `NonZeroU32` requires.
@@ -500,7 +504,7 @@ pub(super) fn triangle_runs(
             "asr {y}, {y}, #4",
             "9:",
             p = in(reg) p.as_ptr(),
-            s = in(reg) runs as *mut Runs,
+            s = in(reg) runs,
             side = inout(reg) side => _,
             y = inout(reg) y,
             ye = inout(reg) y1 => _,
