@@ -157,7 +157,7 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.9% fewer
-  instructions per frame (5.8% with the \`asm\` loops, which then need no count either), the
+  instructions per frame (5.5% with the \`asm\` loops, which then need no count either), the
   M0 4.1% (2.9% with its \`asm\` loop), x86-64 1.8% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
@@ -289,7 +289,9 @@ $stages
   block of Thumb-2, \`thumb2::triangle_runs\`, about 150 instructions, and the depth walk in
   line right after it: the M4's frame 1.9% fewer instructions, about 1.1 KB, and no fewer
   with the depth walk's set-up out of line, 0.2% more with the row loop's block kept by the
-  target instead of made for each triangle; checked on random triangles of every case by the
+  target instead of made for each triangle, and 1.2% fewer again with that block not
+  cleared before each triangle (its runs from the assembly, every other field written once
+  into uninitialised memory); checked on random triangles of every case by the
   \`variants\` preset), then flat shading. By \`FlatKept\`, as here, from the face's normal
   kept in the mesh
   (\`Mesh::with_face_normals\`, once: its direction at 15 bits and the reciprocal of its
@@ -297,7 +299,7 @@ $stages
   turns to it wherever it lies beyond ±2³¹ (within that band, where rounding the direction
   could change its sign, the face is lit from its positions as \`Flat\` lights it; no face
   of the torus is), and the cosine from it and the reciprocal; the same colours as
-  \`Flat\`, the M4's frame 6.0% fewer instructions, the M0's 7.0%, x86-64's 7.1%. (As
+  \`Flat\`, the M4's frame 5.7% fewer instructions, the M0's 7.0%, x86-64's 7.1%. (As
   a path inside \`Flat\`, read where a mesh keeps normals, it cost meshes that keep none 2%
   on the M4 and 0.5% on the M0, its registers moving around the whole triangle set-up: a
   type of its own costs them nothing. The colour found in the walk and handed to the fill
@@ -440,10 +442,10 @@ $stages
   0.9%).
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 73% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.42 M, the rest about 0.81 M). Per drawn triangle the M4 takes about 535
+  rows, 74% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.42 M, the rest about 0.81 M). Per drawn triangle the M4 takes about 520
   instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
-  rows and of its depth walk, 0.51 M). That is not the compiler's moves between registers
+  rows and of its depth walk, 0.50 M). That is not the compiler's moves between registers
   and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of
   its corners, its rows and three edges, \`thumb2::triangle_runs\`) takes about 150
   instructions (the sort 26 with its IT blocks, the rows 17, an edge 27), as many as the
