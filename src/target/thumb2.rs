@@ -10,7 +10,7 @@
 //! counter, and the colour reloaded from the stack): the reference frame on the Cortex-M4F
 //! 3.8% fewer instructions with it (1.790 M → 1.722 M).
 //!
-//! The row loop ([`rows`], on the block `asm_rows::solid_rows` fills in) around the same pixel
+//! The row loop ([`rows`], on the block `asm_rows::solid_triangle` fills in) around the same pixel
 //! loop: a whole triangle, both runs of rows (above and below its middle vertex), in one
 //! block of assembly. A row takes 20 instructions (each edge's end by one division of its
 //! numerator, the depth walk and the row address; 4 more to clamp the span to the target's
@@ -242,7 +242,7 @@ macro_rules! rows_loop {
 const _: () = assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
 
 /// This core has loops without the clamps to the columns, for triangles within them (see
-/// `asm_rows::solid_rows`).
+/// `asm_rows::solid_triangle`).
 pub(super) const WITHOUT_CLAMPS: bool = true;
 
 /// The rows of a triangle in `block` (see [`RowBlock`]) through `rows_loop!`, the fragments
