@@ -255,3 +255,68 @@ fn triangles_variant_reaches_every_setup_case() {
         "{beyond_sides} {cut} {above_band}"
     );
 }
+
+/// The `front` variant walks an object inside every clip plane culled to its front faces
+/// (which the Cortex-M4's `asm` feature does in assembly, checked by this variant's hash,
+/// which folds in every count, under emulation) over back faces, front faces and faces of
+/// zero area, with runs of each kind, the last triangle among them; and it draws.
+#[test]
+fn front_variant_walks_every_kind_of_face_inside_every_plane() {
+    use fixed3d::mesh::Object;
+    use fixed3d::pipeline::Stats;
+    use fixed3d::scene::Scene;
+    use fixed3d::shade::Flat;
+    use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+    let (mut rp, mut rt) = (
+        vec![Vec3::ZERO; 3 * RANDOM_TRIANGLES],
+        vec![[0u16; 3]; RANDOM_TRIANGLES],
+    );
+    let random = random_mesh(&mut rp, &mut rt);
+    let mut cache = vec![ScreenVertex::DEFAULT; RANDOM_TRIANGLES * 3];
+    let (mut fb, mut depth) = (
+        vec![Rgb565::BLACK; (W * H) as usize],
+        vec![u16::MAX; (W * H) as usize],
+    );
+    let objects = [Object::new(&random, front_model(0), ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    let p = frame(W, H)
+        .expect("frame")
+        .prepare(&scene, &mut cache, Flat)
+        .expect("prepare");
+    let mut c = FrameBuffer::new(&mut fb, W, H).expect("colour buffer");
+    let mut d = DepthBuffer::new(&mut depth, W, H).expect("depth buffer");
+    let stats = p.draw(&mut ColorDepth::new(&mut c, &mut d).expect("target"));
+    let stats = stats.expect("drawn");
+    let Stats {
+        culled,
+        degenerate,
+        drawn,
+        outside,
+        clipped,
+        invalid,
+        ..
+    } = stats;
+    assert_eq!((outside, clipped, invalid), (0, 0, 0), "{stats:?}");
+    assert!(cache.iter().all(|v| v.is_inside()));
+    assert!(
+        culled >= 100 && drawn >= 100 && degenerate >= 5,
+        "{stats:?}"
+    );
+    // The kind of each triangle in turn: back (2), front (0) or of zero area (1).
+    let kinds: Vec<i64> = random
+        .triangles()
+        .iter()
+        .map(|tri| {
+            let q = tri.map(|i| cache[i as usize].point());
+            let area = (q[1].x - q[0].x) as i64 * (q[2].y - q[0].y) as i64
+                - (q[2].x - q[0].x) as i64 * (q[1].y - q[0].y) as i64;
+            area.signum() + 1
+        })
+        .collect();
+    let runs = |k: i64| kinds.windows(2).filter(|w| w == &[k, k]).count();
+    assert!(runs(0) >= 10 && runs(2) >= 10, "{} {}", runs(0), runs(2));
+    assert_eq!(kinds.iter().filter(|&&k| k == 1).count() as u32, degenerate);
+    assert_eq!(kinds.iter().filter(|&&k| k == 2).count() as u32, culled);
+    let lit = fb.iter().filter(|&&c| c != Rgb565::BLACK).count();
+    assert!(lit > 1_000, "{lit}");
+}

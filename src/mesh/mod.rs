@@ -92,6 +92,9 @@ impl core::error::Error for MeshError {}
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Mesh<'a> {
     positions: &'a [Vec3],
+    /// Every index below `positions.len()`: checked by `new`, the only constructor that sets
+    /// `positions` or `triangles` (the others copy both). The triangle walk in assembly on
+    /// Cortex-M3/M4 (`target::thumb2::FrontFaces`) reads vertices by these indices unchecked.
     triangles: &'a [Triangle],
     normals: Option<&'a [Vec3]>,
     face_normals: Option<&'a [FaceNormal]>,

@@ -24,6 +24,9 @@ mod vertex;
 pub use precision::{MatrixFormat, Precision};
 pub use vertex::ScreenVertex;
 
+#[cfg(all(feature = "asm", any(fixed3d_thumb1, fixed3d_thumb2)))]
+pub(crate) use draw::FaceStop;
+
 use core::fmt;
 
 use crate::math::{Mat4, NARROW_CORE};

@@ -19,7 +19,9 @@ use crate::raster::{ScreenPoint, PIPELINE_LIMIT};
 /// One transformed vertex in the per-frame cache: snapped screen position, depth, lit colour
 /// (Gouraud) and the clip planes it is outside of. 16 bytes; a frame needs one per vertex of
 /// the scene.
+// In this order (`repr(C)`): the triangle walks in assembly read x and y as a pair.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(C)]
 pub struct ScreenVertex {
     pub(crate) x: i32,
     pub(crate) y: i32,

@@ -31,3 +31,7 @@ pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;
 pub use surface::{ColorDepth, Direct, RasterTarget, ScreenTriangle};
+#[cfg(all(feature = "asm", fixed3d_thumb1))]
+pub(crate) use thumb1::FrontFaces;
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+pub(crate) use thumb2::FrontFaces;

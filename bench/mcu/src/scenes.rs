@@ -252,14 +252,16 @@ pub fn full_per_frame(
 /// The `variants` preset's configurations: the depth tests and counts of `ColorDepth`, then
 /// `clipped`, the strict counted target with the eye so close that the tori cross the near
 /// plane and every side of the screen (spans clamped to the target's columns, polygons cut by
-/// the near plane).
-pub const VARIANTS: [&str; 6] = [
+/// the near plane), then [`random_mesh`] drawn whole (`triangles`) and, shrunk inside every
+/// clip plane, culled to its front faces (`front`).
+pub const VARIANTS: [&str; 7] = [
     "less",
     "less-counted",
     "less-or-equal",
     "less-or-equal-counted",
     "clipped",
     "triangles",
+    "front",
 ];
 
 /// Triangles of the `triangles` variant's mesh ([`random_mesh`]), three vertices each.
@@ -348,6 +350,9 @@ pub fn variant(
     if name == "triangles" {
         return random_triangles(random, f, cache, color, depth);
     }
+    if name == "front" {
+        return random_front_faces(random, f, cache, color, depth);
+    }
     let objects = [
         Object::new(mesh, torus_model(f), ORANGE),
         Object::new(mesh, torus_model(f), Rgb888::new(40, 90, 255)),
@@ -406,6 +411,38 @@ fn random_triangles(
         .draw(&mut ColorDepth::band(&mut c, &mut d, 37).ok()?)
         .ok()?;
     Some(stats.fragments.rotate_left(16) ^ stats.written)
+}
+
+/// The model matrix of the `front` variant at frame `f`: [`random_mesh`] turned about x and
+/// shrunk to a quarter, so that every vertex lies inside every clip plane.
+pub fn front_model(f: u32) -> Mat4 {
+    let quarter = Scalar::from_bits(1 << 14);
+    let turn = Mat4::rotation_x(Angle::from_degrees(7 * f as i32));
+    turn * Mat4::scaling(Vec3::new(quarter, quarter, quarter))
+}
+
+/// The `front` variant: [`random_mesh`] at [`front_model`], back faces culled, into the whole
+/// frame, fragments counted: the triangle walk of an object inside every clip plane (on the
+/// Cortex-M4 with `asm` in assembly), over triangles of both windings and of zero area.
+/// Returns a word of every count of the drawing but the primitives: culled, degenerate, drawn,
+/// fragments and writes.
+fn random_front_faces(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<u32> {
+    let objects = [Object::new(mesh, front_model(f), ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
+    let (mut c, mut d) = (
+        FrameBuffer::new(color, W, H).ok()?,
+        DepthBuffer::new(depth, W, H).ok()?,
+    );
+    let s = p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?).ok()?;
+    let counts = [s.culled, s.degenerate, s.drawn, s.fragments, s.written];
+    Some(counts.iter().fold(0, |h, &k| h.rotate_left(7) ^ k))
 }
 
 /// `gouraud`: the torus with per-vertex normals, Gouraud shading, three coloured lights.
