@@ -5,7 +5,9 @@
 //! row set-up case into a band (`triangles`, see `scenes::random_mesh`): every u16 row and
 //! pixel loop the library has (Rust, and with the `asm` feature its Thumb-2 variants and
 //! row set-up on the Cortex-M4F, its Thumb-1 loop on the M0) checked against the host's
-//! (`tests/firmware.rs`). Not in footprint.md's table.
+//! (`tests/firmware.rs`); and the same random triangles shrunk inside every clip plane and
+//! culled to their front faces (`front`, every count in its hash), the triangle walk each
+//! core takes in assembly with `asm`. Not in footprint.md's table.
 #![no_std]
 #![no_main]
 
