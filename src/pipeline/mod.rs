@@ -24,7 +24,7 @@ mod vertex;
 pub use precision::{MatrixFormat, Precision};
 pub use vertex::ScreenVertex;
 
-#[cfg(all(feature = "asm", any(fixed3d_thumb1, fixed3d_thumb2)))]
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
 pub(crate) use draw::FaceStop;
 
 use core::fmt;

@@ -11,6 +11,8 @@
 //!   the dither keeps shading visible on 1-bit and grey displays.
 
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
+mod asm_faces;
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
 mod asm_rows;
 mod depth;
 mod dither;
@@ -24,6 +26,8 @@ mod thumb2;
 #[cfg(all(feature = "asm", target_arch = "x86_64"))]
 mod x86_64;
 
+#[cfg(all(feature = "asm", fixed3d_asm_rows))]
+pub(crate) use asm_faces::FrontFaces;
 pub use depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LessOrEqual, Uncounted,
 };
@@ -31,7 +35,3 @@ pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;
 pub use surface::{ColorDepth, Direct, RasterTarget, ScreenTriangle};
-#[cfg(all(feature = "asm", fixed3d_thumb1))]
-pub(crate) use thumb1::FrontFaces;
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-pub(crate) use thumb2::FrontFaces;

@@ -24,21 +24,22 @@
 //! (depth test × counted), on ties too, and spans clamped to the target's columns (its
 //! `clipped` configuration).
 //!
-//! The triangle walk's skip of back faces ([`FrontFaces`]): for an object inside every clip
-//! plane culled to its front faces, each triangle's indices, points and signed area in one
-//! loop of assembly that stops only on a triangle to draw or one of zero area, which then
-//! goes on as the Rust walk takes it. The same classification as the Rust walk's (the same
-//! area, the same sign and zero tests), checked under emulation by the `variants` preset's
-//! `front` (random triangles of both windings and of zero area, every count in its hash):
-//! 29 instructions a back face where the compiled walk took about 65, the reference
-//! frame on the Cortex-M0 2.8% fewer instructions (2.352 M → 2.286 M), 450 bytes more flash.
+//! The triangle walk's skip of back faces (`FrontFaces::next_stop`, on the walk's state in
+//! asm_faces.rs): for an object inside every clip plane culled to its front faces, each
+//! triangle's indices, points and signed area in one loop of assembly that stops only on a
+//! triangle to draw (its corners copied for the call that fills it) or one of zero area. The
+//! same classification as the Rust walk's (the same area, the same sign and zero tests),
+//! checked under emulation by the `variants` preset's `front` (random triangles of both
+//! windings and of zero area, every count in its hash): 29 instructions a back face where the
+//! compiled walk took about 65, the reference frame on the Cortex-M0 2.8% fewer instructions
+//! (2.352 M → 2.287 M), 450 bytes more flash.
 
 use core::mem::{offset_of, size_of};
 
+use super::asm_faces::FrontFaces;
 use super::asm_rows::{RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount};
-use crate::mesh::{Mesh, Triangle};
-use crate::pipeline::{FaceStop, ScreenVertex};
+use crate::pipeline::FaceStop;
 use crate::raster::{Runs, ScreenPoint};
 
 /// One row loop as a naked function of the block's address (r0), its fields at their offsets
@@ -271,71 +272,46 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     }
 }
 
-/// The triangles of a mesh, walked with their back faces skipped in assembly: each call of
-/// `next_stop` gives the next triangle that is not a back face ([`FaceStop`]); the back faces
-/// are those not given, the number of triangles less the stops. For an object whose every
-/// vertex lies inside every clip plane, culled to its front faces: a back face has a doubled
-/// signed area above 0, a front face below, taken in 32-bit words as `short_sides_area` takes
-/// it (every side of such a triangle lies within ±2¹⁵).
-///
-/// A back face takes 29 instructions: its three indices loaded (unchecked: a [`Mesh`] checked
-/// them once), its points by `ldm`, the area by two 32-bit multiplies, its sign and its zero
-/// tested. The compiled walk took about 65, keeping its state on the stack around the call it
-/// makes for the faces it draws; a front face's three corners are copied here for that call.
-/// Inline assembly on ARMv6-M gets r0 to r5 of the low registers (and high registers only as
-/// clobbers): the end, the vertices' address and `out`'s wait in r8 to r10, the third
-/// corner's address in r12.
-pub(crate) struct FrontFaces<'t, 'v> {
-    triangles: &'t [Triangle],
-    vertices: &'v [ScreenVertex],
-    /// The next triangle to look at (within `triangles`, or one past its end).
-    next: *const Triangle,
-}
-
-impl<'t, 'v> FrontFaces<'t, 'v> {
-    /// A walk of `mesh`'s triangles from the first, their vertices in `vertices`: none
-    /// unless it holds one for each of the mesh's positions (every index of a [`Mesh`] lies
-    /// below their number).
-    pub(crate) fn new(mesh: &Mesh<'t>, vertices: &'v [ScreenVertex]) -> Option<Self> {
-        let triangles = mesh.triangles();
-        (vertices.len() == mesh.positions().len()).then_some(Self {
-            triangles,
-            vertices,
-            next: triangles.as_ptr(),
-        })
-    }
-
+/// The walk on ARMv6-M: a back face takes 29 instructions (its three indices loaded, its
+/// points by `ldm`, the area by two 32-bit multiplies as `short_sides_area` takes it, every
+/// side of such a triangle lying within ±2¹⁵, its sign and its zero tested, the count of
+/// triangles left stepped), where the compiled walk took about 65, keeping its state on the
+/// stack around the call it makes for the faces it draws. Inline assembly on ARMv6-M gets r0
+/// to r5 of the low registers (and high registers only as clobbers): the count left, the
+/// vertices' address and `out`'s wait in r8 to r10, the third corner's address in r12.
+impl<'t> FrontFaces<'t, '_> {
     /// The next triangle that is not a back face, or [`FaceStop::End`]; for a front face its
     /// vertices' positions and depths written to `out`.
     #[inline(always)]
     #[allow(unsafe_code)]
     pub(crate) fn next_stop(&mut self, out: &mut [(ScreenPoint, i32); 3]) -> FaceStop<'t> {
-        let start = self.triangles.as_ptr();
         let stop: u32;
         let area: i32;
         // SAFETY:
-        // - Memory: the block reads the three indices of each triangle from `next` up to the
-        //   end (within `triangles`: `next` lies within it or at its end, and moves by one
-        //   triangle while below the end), and the words at `v + 16·i` and `v + 16·i + 4` and
-        //   (for a front face) `v + 16·i + 8` for each index `i` of those triangles: within
-        //   `vertices`, whose elements take 16 bytes with x, y and z at 0, 4 and 8 (asserted
-        //   below), as `i` is below the mesh's number of positions (the invariant of `Mesh`),
-        //   which is `vertices.len()` (checked by `new`). Where it stops on a front face it
-        //   writes `out` (borrowed mutably): that face's three vertices' x, y and z to the
-        //   three words at 0, 12 and 24 (its layout, asserted below); no other memory, and no
-        //   stack (`nostack`).
-        // - Values: `next` leaves at one past the triangle the walk stopped on, or at the end;
-        //   `out` gets `i32`s (any word is one).
-        // - Registers: every register the block writes is an output; the flags it changes
-        //   are not preserved, as asm! allows by default.
+        // - Memory: the block reads the three indices of each of the `left` triangles from
+        //   `next` (within `triangles`: `next` lies within it or at its end, `left` triangles
+        //   before the end, and moves by one triangle as `left` counts down to 0), and the
+        //   words at `v + 16·i` and `v + 16·i + 4` and (for a front face) `v + 16·i + 8` for
+        //   each index `i` of those triangles: within `vertices`, whose elements take 16 bytes
+        //   with x, y and z at 0, 4 and 8 (asserted in asm_faces.rs), as `i` is below the
+        //   mesh's number of positions (the invariant of `Mesh`), which is `vertices.len()`
+        //   (checked by `FrontFaces::new`). Where it stops on a front face it writes `out`
+        //   (borrowed mutably): that face's three vertices' x, y and z to the three words at
+        //   0, 12 and 24 (its layout, asserted there); no other memory, and no stack
+        //   (`nostack`).
+        // - Values: `next` leaves at one past the triangle the walk stopped on, or at the end,
+        //   `left` as the triangles after it; `out` gets `i32`s (any word is one).
+        // - Registers: every register the block writes is an output or a clobber; the flags
+        //   it changes are not preserved, as asm! allows by default.
         unsafe {
             core::arch::asm!(
-                // The end, the vertices' and `out`'s addresses into high registers.
+                // The count left (in r1 at the end), the vertices' and `out`'s addresses into
+                // high registers.
                 "mov r8, r1",
                 "mov r9, r2",
                 "mov r10, r3",
-                "cmp r5, r8",
-                "bhs 5f",
+                "cmp r1, #0",
+                "beq 5f",
                 "2:",
                 "ldrh r0, [r5, #0]",
                 "ldrh r1, [r5, #2]",
@@ -364,14 +340,17 @@ impl<'t, 'v> FrontFaces<'t, 'v> {
                 "subs r2, r2, r3",
                 "bmi 3f",
                 "beq 4f",
-                "cmp r5, r8",
-                "blo 2b",
+                // A back face: the count left stepped (in r1), the next face unless none.
+                "mov r1, r8",
+                "subs r1, #1",
+                "mov r8, r1",
+                "bne 2b",
                 "5:",
                 "movs r0, #{end_}",
                 "b 9f",
                 "4:",
                 "movs r0, #{degenerate}",
-                "b 9f",
+                "b 8f",
                 // A front face: its corners' x, y and z to `out` (the area kept in r12).
                 "3:",
                 "mov r12, r2",
@@ -394,9 +373,13 @@ impl<'t, 'v> FrontFaces<'t, 'v> {
                 "stm r4!, {{r0, r2, r3}}",
                 "mov r2, r12",
                 "movs r0, #{front}",
+                // A stop on a face: the count left stepped past it (in r1).
+                "8:",
+                "mov r1, r8",
+                "subs r1, #1",
                 "9:",
                 inout("r5") self.next,
-                inout("r1") start.wrapping_add(self.triangles.len()) => _,
+                inout("r1") self.left,
                 inout("r2") self.vertices.as_ptr() => area,
                 inout("r3") out.as_mut_ptr() => _,
                 out("r0") stop, out("r4") _,
@@ -407,31 +390,6 @@ impl<'t, 'v> FrontFaces<'t, 'v> {
                 options(nostack),
             );
         }
-        if stop == FaceStop::FRONT {
-            // The triangle before `next`: its offset in bytes a multiple of 6, so the half of
-            // it times the inverse of 3 modulo 2³² is exact (no division on this core).
-            let bytes = (self.next as usize).wrapping_sub(start as usize);
-            let k = ((bytes >> 1) as u32)
-                .wrapping_mul(0xAAAA_AAAB)
-                .wrapping_sub(1);
-            if let Some(tri) = self.triangles.get(k as usize) {
-                return FaceStop::Front(k as usize, tri, i64::from(area));
-            }
-        }
-        if stop == FaceStop::DEGENERATE {
-            FaceStop::Degenerate
-        } else {
-            FaceStop::End
-        }
+        self.stopped(stop, i64::from(area))
     }
 }
-
-// The layouts `FrontFaces` reads and writes: triangles of three u16 indices, vertices of 16
-// bytes with their x, y and z one after the other at the start, the corners it writes as
-// three words (x, y, z) after one another.
-const _: () = {
-    assert!(size_of::<Triangle>() == 6 && size_of::<ScreenVertex>() == 16);
-    assert!(offset_of!(ScreenVertex, x) == 0 && offset_of!(ScreenVertex, y) == 4);
-    assert!(offset_of!(ScreenVertex, z) == 8 && size_of::<(ScreenPoint, i32)>() == 12);
-    assert!(offset_of!((ScreenPoint, i32), 0) == 0 && offset_of!((ScreenPoint, i32), 1) == 8);
-};

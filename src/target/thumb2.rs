@@ -41,21 +41,22 @@
 //! counted), on ties too, and spans clamped to the target's columns (its `clipped`
 //! configuration), `bands` a band's first row other than 0.
 //!
-//! The triangle walk's skip of back faces ([`FrontFaces`]): for an object inside every clip
-//! plane culled to its front faces, each triangle's indices, points and signed area in one
-//! loop of assembly that stops only on a triangle to draw or one of zero area, which then
-//! goes on as the Rust walk takes it. The same classification as the Rust walk's (the same
-//! area, the same sign and zero tests), checked under emulation by the `variants` preset's
-//! `front` (random triangles of both windings and of zero area, every count in its hash):
-//! 22 instructions a back face where the compiled walk took about 49, the reference frame on
-//! the Cortex-M4F 3.4% fewer instructions (1.262 M → 1.219 M), 370 bytes more flash.
+//! The triangle walk's skip of back faces (`FrontFaces::next_stop`, on the walk's state in
+//! asm_faces.rs): for an object inside every clip plane culled to its front faces, each
+//! triangle's indices, points and signed area in one loop of assembly that stops only on a
+//! triangle to draw (its corners copied for the call that fills it) or one of zero area. The
+//! same classification as the Rust walk's (the same area, the same sign and zero tests),
+//! checked under emulation by the `variants` preset's `front` (random triangles of both
+//! windings and of zero area, every count in its hash): 22 instructions a back face where the
+//! compiled walk took about 49, the reference frame on the Cortex-M4F 3.4% fewer
+//! instructions (1.262 M → 1.219 M), 370 bytes more flash.
 
 use core::mem::{align_of, offset_of, size_of};
 
+use super::asm_faces::FrontFaces;
 use super::asm_rows::{RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount};
-use crate::mesh::{Mesh, Triangle};
-use crate::pipeline::{FaceStop, ScreenVertex};
+use crate::pipeline::FaceStop;
 use crate::raster::{Runs, ScreenPoint};
 
 /// The pixel loop's instructions as one template: from label `$l`, the depth in register
@@ -559,40 +560,11 @@ macro_rules! corner {
     };
 }
 
-/// The triangles of a mesh, walked with their back faces skipped in assembly: each call of
-/// `next_stop` gives the next triangle that is not a back face ([`FaceStop`]); the back faces
-/// are those not given, the number of triangles less the stops. For an object whose every
-/// vertex lies inside every clip plane, culled to its front faces: a back face has a doubled
-/// signed area (`doubled_area`) above 0, a front face below.
-///
-/// A back face takes 22 instructions: its three indices loaded (unchecked: a [`Mesh`] checked
-/// them once), its three points loaded in pairs, the area by one widening multiply and one
-/// multiply-accumulate (as `cross_words` takes it), its sign and its zero tested. The
-/// compiled walk took about 49, keeping its state on the stack around the call it makes for
-/// the faces it draws; a front face's three corners are copied here for that call.
-pub(crate) struct FrontFaces<'t, 'v> {
-    triangles: &'t [Triangle],
-    vertices: &'v [ScreenVertex],
-    /// The next triangle to look at (within `triangles`, or one past its end).
-    next: *const Triangle,
-    /// The triangles from `next` to the end.
-    left: usize,
-}
-
-impl<'t, 'v> FrontFaces<'t, 'v> {
-    /// A walk of `mesh`'s triangles from the first, their vertices in `vertices`: none
-    /// unless it holds one for each of the mesh's positions (every index of a [`Mesh`] lies
-    /// below their number).
-    pub(crate) fn new(mesh: &Mesh<'t>, vertices: &'v [ScreenVertex]) -> Option<Self> {
-        let triangles = mesh.triangles();
-        (vertices.len() == mesh.positions().len()).then_some(Self {
-            triangles,
-            vertices,
-            next: triangles.as_ptr(),
-            left: triangles.len(),
-        })
-    }
-
+/// The walk on ARMv7-M: a back face takes 22 instructions (its three indices loaded, its
+/// three points loaded in pairs, the area by one widening multiply and one multiply-accumulate
+/// as `cross_words` takes it, its sign and its zero tested), where the compiled walk took
+/// about 49, keeping its state on the stack around the call it makes for the faces it draws.
+impl<'t> FrontFaces<'t, '_> {
     /// The next triangle that is not a back face, or [`FaceStop::End`]; for a front face its
     /// vertices' positions and depths written to `out`.
     #[inline(always)]
@@ -668,18 +640,7 @@ impl<'t, 'v> FrontFaces<'t, 'v> {
                 options(nostack),
             );
         }
-        if stop == FaceStop::FRONT {
-            // The triangle before `next`.
-            let k = self.triangles.len().wrapping_sub(self.left).wrapping_sub(1);
-            if let Some(tri) = self.triangles.get(k) {
-                return FaceStop::Front(k, tri, pair_to_i64(lo, hi));
-            }
-        }
-        if stop == FaceStop::DEGENERATE {
-            FaceStop::Degenerate
-        } else {
-            FaceStop::End
-        }
+        self.stopped(stop, pair_to_i64(lo, hi))
     }
 }
 
@@ -688,13 +649,3 @@ impl<'t, 'v> FrontFaces<'t, 'v> {
 fn pair_to_i64(lo: u32, hi: u32) -> i64 {
     ((u64::from(hi) << 32) | u64::from(lo)) as i64
 }
-
-// The layouts `FrontFaces` reads and writes: triangles of three u16 indices, vertices of 16
-// bytes with their x, y and z one after the other at the start, the corners it writes as
-// three words (x, y, z) after one another.
-const _: () = {
-    assert!(size_of::<Triangle>() == 6 && size_of::<ScreenVertex>() == 16);
-    assert!(offset_of!(ScreenVertex, x) == 0 && offset_of!(ScreenVertex, y) == 4);
-    assert!(offset_of!(ScreenVertex, z) == 8 && size_of::<(ScreenPoint, i32)>() == 12);
-    assert!(offset_of!((ScreenPoint, i32), 0) == 0 && offset_of!((ScreenPoint, i32), 1) == 8);
-};

@@ -26,12 +26,23 @@
 //! every rasteriser test over a [`ColorDepth`](super::ColorDepth) with u16 depth, and
 //! asm_rows.rs's own tests against the loops' definition (both middle-vertex sides, both
 //! clamps, a band's first row, ties, counts) and of what the set-up refuses.
+//!
+//! The triangle walk's skip of back faces (`FrontFaces::next_stop`, on the walk's state in
+//! asm_faces.rs): for an object inside every clip plane culled to its front faces, each
+//! triangle's indices, points and signed area in one loop of assembly that stops only on a
+//! triangle to draw (its corners copied for the call that fills it) or one of zero area. The
+//! same classification as the Rust walk's (the same area, the same sign and zero tests),
+//! checked by the host's tests with the feature (every golden image, every count the
+//! pipeline's tests assert): 24 instructions a back face where the compiled walk took about
+//! 50, the reference frame 3.3% fewer instructions (1.233 M → 1.193 M).
 
 use core::mem::offset_of;
 
+use super::asm_faces::FrontFaces;
 use super::asm_rows::{RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount};
-use crate::raster::Runs;
+use crate::pipeline::FaceStop;
+use crate::raster::{Runs, ScreenPoint};
 
 /// One pixel of the pixel loop, at the cells `2·i` bytes past `d` and `c` and `$at` more: its
 /// depth from the walk `acc`, which steps, tested against the stored one; a fragment that
@@ -239,5 +250,120 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
             (false, false) => rows_loop!("jae", ["17f", "7f", "27f"], [], [], []; block),
             (true, false) => rows_loop!("ja", ["17f", "7f", "27f"], [], [], []; block),
         }
+    }
+}
+
+/// One corner of a front face for `FrontFaces::next_stop`: its vertex (the index at `t +
+/// $index`, `t` one past the triangle) copied to `out + $to` as its x and y (one quadword) and
+/// its z.
+macro_rules! corner {
+    ($index:literal, $to:literal) => {
+        concat!(
+            "movzx {ia:e}, word ptr [{t} - ",
+            $index,
+            "]\n",
+            "shl {ia:e}, 4\n",
+            "mov {ib}, qword ptr [{v} + {ia}]\n",
+            "mov {ic:e}, dword ptr [{v} + {ia} + 8]\n",
+            "mov qword ptr [{out} + ",
+            $to,
+            "], {ib}\n",
+            "mov dword ptr [{out} + ",
+            $to,
+            " + 8], {ic:e}",
+        )
+    };
+}
+
+/// The walk on x86-64: a back face takes 24 instructions (its three indices loaded, its
+/// points sign-extended to 64 bits, the area by two 64-bit multiplies as `doubled_area` takes
+/// it, its sign and its zero tested, the count of triangles left stepped), where the compiled
+/// walk took about 50, keeping its state on the stack around the call it makes for the faces
+/// it draws.
+impl<'t> FrontFaces<'t, '_> {
+    /// The next triangle that is not a back face, or [`FaceStop::End`]; for a front face its
+    /// vertices' positions and depths written to `out`.
+    #[inline(always)]
+    #[allow(unsafe_code)]
+    pub(crate) fn next_stop(&mut self, out: &mut [(ScreenPoint, i32); 3]) -> FaceStop<'t> {
+        let stop: u64;
+        let area: i64;
+        // SAFETY:
+        // - Memory: the block reads the three indices of each of the `left` triangles from
+        //   `next` (within `triangles`: `next` lies within it or at its end, `left` triangles
+        //   before the end, and moves by one triangle as `left` counts down to 0), and the
+        //   dwords at `v + 16·i` and `v + 16·i + 4` and (for a front face) the bytes `v + 16·i`
+        //   to `v + 16·i + 12` for each index `i` of those triangles: within `vertices`, whose
+        //   elements take 16 bytes with x, y and z at 0, 4 and 8 (asserted in asm_faces.rs),
+        //   as `i` is below the mesh's number of positions (the invariant of `Mesh`), which is
+        //   `vertices.len()` (checked by `FrontFaces::new`). Where it stops on a front face it
+        //   writes `out` (borrowed mutably): that face's three vertices' x, y and z to its 36
+        //   bytes (x and y at 0, 12 and 24, z 8 bytes further: its layout, asserted there); no
+        //   other memory, and no stack (`nostack`).
+        // - Values: `next` leaves at one past the triangle the walk stopped on, or at the end,
+        //   `left` as the triangles after it; `out` gets `i32`s (any dword is one).
+        // - Registers: every register the block writes is an output; the flags it changes
+        //   are not preserved, as asm! allows by default.
+        unsafe {
+            core::arch::asm!(
+                "test {left}, {left}",
+                "jz 5f",
+                "2:",
+                "movzx {ia:e}, word ptr [{t}]",
+                "movzx {ib:e}, word ptr [{t} + 2]",
+                "movzx {ic:e}, word ptr [{t} + 4]",
+                "add {t}, 6",
+                "shl {ia:e}, 4",
+                "shl {ib:e}, 4",
+                "shl {ic:e}, 4",
+                // a = (ax, ay), b − a = (ux, uy), c − a = (ia, ic).
+                "movsxd {ax}, dword ptr [{v} + {ia}]",
+                "movsxd {ay}, dword ptr [{v} + {ia} + 4]",
+                "movsxd {ux}, dword ptr [{v} + {ib}]",
+                "movsxd {uy}, dword ptr [{v} + {ib} + 4]",
+                "movsxd {ia}, dword ptr [{v} + {ic}]",
+                "movsxd {ic}, dword ptr [{v} + {ic} + 4]",
+                "sub {ux}, {ax}",
+                "sub {uy}, {ay}",
+                "sub {ia}, {ax}",
+                "sub {ic}, {ay}",
+                // (b − a).x·(c − a).y − (c − a).x·(b − a).y.
+                "imul {ux}, {ic}",
+                "imul {ia}, {uy}",
+                "sub {ux}, {ia}",
+                "jl 3f",
+                "je 4f",
+                // A back face: the count left stepped, the next face unless none.
+                "sub {left}, 1",
+                "jnz 2b",
+                "5:",
+                "mov {ay:e}, {end_}",
+                "jmp 9f",
+                "4:",
+                "mov {ay:e}, {degenerate}",
+                "jmp 8f",
+                // A front face: its corners' x, y and z to `out`.
+                "3:",
+                corner!(6, 0),
+                corner!(4, 12),
+                corner!(2, 24),
+                "mov {ay:e}, {front}",
+                // A stop on a face: the count left stepped past it.
+                "8:",
+                "sub {left}, 1",
+                "9:",
+                t = inout(reg) self.next,
+                left = inout(reg) self.left,
+                v = in(reg) self.vertices.as_ptr(),
+                out = in(reg) out.as_mut_ptr(),
+                ia = out(reg) _, ib = out(reg) _, ic = out(reg) _,
+                ax = out(reg) _, ay = out(reg) stop, ux = out(reg) area, uy = out(reg) _,
+                front = const FaceStop::FRONT,
+                degenerate = const FaceStop::DEGENERATE,
+                end_ = const FaceStop::END,
+                options(nostack),
+            );
+        }
+        self.stopped(stop as u32, area)
     }
 }
