@@ -19,6 +19,7 @@ use super::sqrt::isqrt_u64;
 /// assert_eq!(v.dot(Vec3::X), Scalar::from_num(1));
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(C)]
 pub struct Vec3 {
     /// X component.
     pub x: Scalar,

@@ -220,7 +220,7 @@ impl Frame {
             });
         }
         let map = ScreenMap::new(&self.viewport, &self.precision);
-        let mut slots = cache.iter_mut();
+        let mut slots = &mut cache[..];
         let mut inside = 0u64;
         for (k, object) in scene.objects.iter().enumerate() {
             let mut planes = 0u8;
@@ -254,8 +254,23 @@ impl Frame {
             } else {
                 None
             };
-            for (i, p) in object.mesh.positions().iter().enumerate() {
-                let Some(slot) = slots.next() else { break };
+            let positions = object.mesh.positions();
+            // This object's slots (the cache holds one for every vertex of the scene).
+            let rest = core::mem::take(&mut slots);
+            let (these, after) = rest.split_at_mut(positions.len().min(rest.len()));
+            slots = after;
+            // With `asm` on Cortex-M3/M4, an object of known words without lit colours in
+            // assembly (see `project_known_in_words`).
+            #[cfg(all(feature = "asm", fixed3d_thumb2))]
+            if fits && known == Known::InWords && normals.is_none() {
+                let halves = map.half_sizes();
+                crate::target::project_known_in_words(&clip_from_model, halves, positions, these);
+                if k < 64 {
+                    inside |= 1 << k;
+                }
+                continue;
+            }
+            for (i, (p, slot)) in positions.iter().zip(these).enumerate() {
                 let (code, pt, z) = if !NARROW_CORE && fits {
                     // Known short (`fits` implies the extent below 2²⁹): where products are
                     // long multiplies, one path from the transform to the projection, whose

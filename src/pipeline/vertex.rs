@@ -94,6 +94,12 @@ impl ScreenMap {
         }
     }
 
+    /// Half the viewport's width and height in sub-pixels (at most 2¹⁴ each).
+    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    pub(crate) fn half_sizes(&self) -> (i32, i32) {
+        (self.half_w as i32, self.half_h as i32)
+    }
+
     /// What holds for every point within `radius` of the origin (raw Q16.16) through `m`, its
     /// coordinates rounded as [`Mat4::transform_short`] rounds them (for a matrix that
     /// [`fits_32_bits`](Mat4::fits_32_bits)): inside every clip plane, and then whether its

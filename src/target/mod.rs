@@ -35,3 +35,5 @@ pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;
 pub use surface::{ColorDepth, Direct, RasterTarget, ScreenTriangle};
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+pub(crate) use thumb2::project_known_in_words;

@@ -424,8 +424,8 @@ pub fn front_model(f: u32) -> Mat4 {
 /// The `front` variant: [`random_mesh`] at [`front_model`], back faces culled, into the whole
 /// frame, fragments counted: the triangle walk of an object inside every clip plane (on the
 /// Cortex-M4 with `asm` in assembly), over triangles of both windings and of zero area.
-/// Returns a word of every count of the drawing but the primitives: culled, degenerate, drawn,
-/// fragments and writes.
+/// Returns a word of every count of the drawing but the primitives (culled, degenerate, drawn,
+/// fragments and writes) and of the depth buffer.
 fn random_front_faces(
     mesh: &Mesh<'_>,
     f: u32,
@@ -436,12 +436,17 @@ fn random_front_faces(
     let objects = [Object::new(mesh, front_model(f), ORANGE)];
     let scene = Scene::new(&objects, sun());
     let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
-    let (mut c, mut d) = (
-        FrameBuffer::new(color, W, H).ok()?,
-        DepthBuffer::new(depth, W, H).ok()?,
-    );
-    let s = p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?).ok()?;
-    let counts = [s.culled, s.degenerate, s.drawn, s.fragments, s.written];
+    let s = {
+        let (mut c, mut d) = (
+            FrameBuffer::new(color, W, H).ok()?,
+            DepthBuffer::new(depth, W, H).ok()?,
+        );
+        p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?).ok()?
+    };
+    // The depths too: a vertex's depth one unit off changes few colours.
+    let mut h = Fnv::new();
+    depth.iter().for_each(|&z| h.write(z as u32));
+    let counts = [s.culled, s.degenerate, s.drawn, s.fragments, s.written, h.0];
     Some(counts.iter().fold(0, |h, &k| h.rotate_left(7) ^ k))
 }
 
