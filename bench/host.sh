@@ -156,12 +156,12 @@ $stages
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
-  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.9% fewer
-  instructions per frame (5.5% with the \`asm\` loops, which then need no count either), the
-  M0 4.1% (2.9% with its \`asm\` loop), x86-64 1.8% (the counts hold registers in the row
+  1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
+  instructions per frame (5.6% with the \`asm\` loops, which then need no count either), the
+  M0 4.1% (3.0% with its \`asm\` loop), x86-64 1.6% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
-  2.8% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  2.9% with its \`asm\` loop, which adds each span's length in memory). The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -368,7 +368,16 @@ $stages
   denominator positive (1% of the frame, against a second guard). On x86-64 the triangle
   walk is compiled once per culling mode, the mode a constant (0.5% of its frame; on the M0
   that cost 1.4% more instructions and 1.4 KB, on the M4 it saved 0.2% for 1.3 KB, so both
-  read the mode). At the firmware's opt-level "s" an iterator's sum or
+  read the mode). With the \`asm\` feature the walk of an object inside every clip plane,
+  culled to its front faces, skips the back faces in assembly (\`FrontFaces::next_stop\` in
+  each core's module, its state in \`target/asm_faces.rs\`): each triangle's indices
+  (unchecked: \`Mesh::new\` checked every one), points and doubled area in one loop that
+  stops only on a face to draw, whose corners it copies for \`fill_face\`, or one of zero
+  area: 22 instructions a back face on the M4, where the compiled walk took about 49, 29 on
+  the M0 (about 65), 24 on x86-64 (about 50), each keeping its state on the stack around
+  the call it makes for the faces it draws: the frames 3.4%, 2.8% and 3.3% fewer
+  instructions, 300 to 450 bytes. In Rust the same skip as a function of its own measured
+  the M4's frame 6% more, in line 2.8% more. At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
   products, the normal's largest component, each vertex's tuple: 4% of the M4's frame; the
   reciprocal square root's Newton steps, when it took two: 0.3% of the frame), and a flat
@@ -420,7 +429,13 @@ $stages
   \`w\` below 2¹⁹ (\`Known::InWords\`), each product is one 32-bit multiply (the M0 0.7%) and,
   with a divide instruction, the divisions take words untested (the M4 0.8%, x86-64 0.5%,
   the depth there one 64-bit division; on the M0 a digit from the low word alone measured
-  0.4% more). The stage is about a sixth of the M0's frame, about 380 instructions a vertex
+  0.4% more). With the \`asm\` feature the M4 takes such an object's vertices without lit
+  colours in a naked Thumb-2 function (\`thumb2::project_known_in_words\`): the transform,
+  the two rounded quotients and the depth's three digits in 65 instructions a vertex, each
+  row of the matrix read from a block by one \`ldm\`, each result stored as it is found,
+  where the compiled loop took about 125, reloading the matrix from the stack for each
+  vertex: the frame 4.1% fewer instructions (1.219 M → 1.170 M), about 420 bytes. The
+  stage is about a sixth of the M0's frame, about 380 instructions a vertex
   with the frame's matrices (about 345 in its loop), most of them the transform (about 135)
   and the divisions (about 135 with the reciprocal). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
@@ -442,8 +457,8 @@ $stages
   0.9%).
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 74% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.42 M, the rest about 0.81 M). Per drawn triangle the M4 takes about 520
+  rows, 81% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.42 M, the rest about 0.76 M). Per drawn triangle the M4 takes about 520
   instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
   rows and of its depth walk, 0.50 M). That is not the compiler's moves between registers
   and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of

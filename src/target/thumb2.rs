@@ -661,6 +661,55 @@ fn pair_to_i64(lo: u32, hi: u32) -> i64 {
     ((u64::from(hi) << 32) | u64::from(lo)) as i64
 }
 
+/// One clip coordinate for `project_rows`: the row's coefficients (r3 to r5) and sum (r6, r7)
+/// loaded by `$load`, the point's products (r0 to r2) accumulated onto the sum, its bits 16
+/// to 47 into `$to`.
+macro_rules! clip_row {
+    ($load:literal, $to:literal) => {
+        concat!(
+            $load,
+            "\n",
+            "smlal r6, r7, r3, r0\n",
+            "smlal r6, r7, r4, r1\n",
+            "smlal r6, r7, r5, r2\n",
+            "lsr ",
+            $to,
+            ", r6, #16\n",
+            "orr ",
+            $to,
+            ", ",
+            $to,
+            ", r7, lsl #16",
+        )
+    };
+}
+
+/// A screen coordinate for `project_rows`: the next row's clip coordinate times the half size
+/// that follows it in the block (r8), its rounded quotient by w (r9; half of it in r10, as
+/// `div_round_word`: the magnitude plus half, divided, the sign put back), placed by `$place`
+/// (from the half size) and stored at `$at` of the vertex.
+macro_rules! screen_axis {
+    ($place:literal, $at:literal) => {
+        concat!(
+            clip_row!("ldm lr!, {{r3, r4, r5, r6, r7, r8}}", "r6"),
+            "\n",
+            "mul r6, r6, r8\n",
+            "cmp r6, #0\n",
+            "it mi\n",
+            "rsbmi r6, r6, #0\n",
+            "add r6, r6, r10\n",
+            "udiv r6, r6, r9\n",
+            "it mi\n",
+            "rsbmi r6, r6, #0\n",
+            $place,
+            "\n",
+            "str r6, [r12, #",
+            $at,
+            "]",
+        )
+    };
+}
+
 /// What [`project_known_in_words`]'s loop reads for each vertex: the clip-from-model matrix'
 /// rows w, x, y and z, each as its three coefficients and the sum its products accumulate
 /// onto (`((t << 16) + 2¹⁵)`, `t` the row's translation, as two words, low first), x's and y's
@@ -756,57 +805,16 @@ unsafe extern "C" fn project_rows(
         "2:",
         "ldm r11!, {{r0, r1, r2}}",
         // w, at least 1 (as `NonZeroU32::new(w).unwrap_or(MIN)`), and half of it.
-        "ldm lr!, {{r3, r4, r5, r6, r7}}",
-        "smlal r6, r7, r3, r0",
-        "smlal r6, r7, r4, r1",
-        "smlal r6, r7, r5, r2",
-        "lsr r9, r6, #16",
-        "orr r9, r9, r7, lsl #16",
+        clip_row!("ldm lr!, {{r3, r4, r5, r6, r7}}", "r9"),
         "cmp r9, #1",
         "it lo",
         "movlo r9, #1",
         "lsr r10, r9, #1",
-        // x: half_w + round(x·half_w / w).
-        "ldm lr!, {{r3, r4, r5, r6, r7, r8}}",
-        "smlal r6, r7, r3, r0",
-        "smlal r6, r7, r4, r1",
-        "smlal r6, r7, r5, r2",
-        "lsr r6, r6, #16",
-        "orr r6, r6, r7, lsl #16",
-        "mul r6, r6, r8",
-        "cmp r6, #0",
-        "it mi",
-        "rsbmi r6, r6, #0",
-        "add r6, r6, r10",
-        "udiv r6, r6, r9",
-        "it mi",
-        "rsbmi r6, r6, #0",
-        "add r6, r8, r6",
-        "str r6, [r12, #0]",
-        // y: half_h − round(y·half_h / w).
-        "ldm lr!, {{r3, r4, r5, r6, r7, r8}}",
-        "smlal r6, r7, r3, r0",
-        "smlal r6, r7, r4, r1",
-        "smlal r6, r7, r5, r2",
-        "lsr r6, r6, #16",
-        "orr r6, r6, r7, lsl #16",
-        "mul r6, r6, r8",
-        "cmp r6, #0",
-        "it mi",
-        "rsbmi r6, r6, #0",
-        "add r6, r6, r10",
-        "udiv r6, r6, r9",
-        "it mi",
-        "rsbmi r6, r6, #0",
-        "sub r6, r8, r6",
-        "str r6, [r12, #4]",
+        // x: half_w + round(x·half_w / w); y: half_h − round(y·half_h / w).
+        screen_axis!("add r6, r8, r6", 0),
+        screen_axis!("sub r6, r8, r6", 4),
         // The depth: z·2³⁰/w rounded, by the digits q1·2¹⁷ + q2·2⁴ + q3; the end in r8.
-        "ldm lr, {{r3, r4, r5, r6, r7, r8}}",
-        "smlal r6, r7, r3, r0",
-        "smlal r6, r7, r4, r1",
-        "smlal r6, r7, r5, r2",
-        "lsr r6, r6, #16",
-        "orr r6, r6, r7, lsl #16",
+        clip_row!("ldm lr, {{r3, r4, r5, r6, r7, r8}}", "r6"),
         "lsl r6, r6, #13",
         "udiv r3, r6, r9",
         "mls r6, r3, r9, r6",
