@@ -376,8 +376,11 @@ $stages
   area: 22 instructions a back face on the M4, where the compiled walk took about 49, 29 on
   the M0 (about 65), 24 on x86-64 (about 50), each keeping its state on the stack around
   the call it makes for the faces it draws: the frames 3.4%, 2.8% and 3.3% fewer
-  instructions, 300 to 450 bytes. In Rust the same skip as a function of its own measured
-  the M4's frame 6% more, in line 2.8% more. At the firmware's opt-level "s" an iterator's sum or
+  instructions, 300 to 450 bytes; that walk out of line (its loop its own registers) 0.24%
+  fewer again on the M4 and x86-64 (on the M0 0.26% more, so there it stays in line). In
+  Rust the same skip as a function of its own measured the M4's frame 6% more, in line 2.8%
+  more; \`fill_face\`'s body in line in the walk in assembly, the M4 2.9% more, the M0 3.2%,
+  x86-64 2.6%. At the firmware's opt-level "s" an iterator's sum or
   \`array::map\` over three components stays a loop, so this code writes them out (dot
   products, the normal's largest component, each vertex's tuple: 4% of the M4's frame; the
   reciprocal square root's Newton steps, when it took two: 0.3% of the frame), and a flat
@@ -458,14 +461,17 @@ $stages
 - **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
   0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 81% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.42 M, the rest about 0.76 M). Per drawn triangle the M4 takes about 520
+  about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 takes about 520
   instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
   rows and of its depth walk, 0.50 M). That is not the compiler's moves between registers
   and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of
   its corners, its rows and three edges, \`thumb2::triangle_runs\`) takes about 150
   instructions (the sort 26 with its IT blocks, the rows 17, an edge 27), as many as the
   compiler's code for the same work; the 1.9% it saved came from the depth walk's set-up
-  then running in line right after it. A set-up and shading of about 250 instructions a
+  then running in line right after it. The same set-up written for x86-64 (its edges two
+  128-bit and 64-bit divisions each, \`FractionStepper\`'s words) took about 235
+  instructions a triangle where the compiled \`rows_in_range\` and \`TriangleRows::runs\`
+  take about 215: the frame 1.5% more, not kept. A set-up and shading of about 250 instructions a
   triangle, once estimated from the arithmetic, leaves out what that arithmetic takes in
   instructions; hand-writing the rest (the depth walk's divisions, the colour) would gain
   in proportion, a few per cent. The M4's rows and pixels are already hand-written (the \`asm\`
