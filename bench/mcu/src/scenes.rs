@@ -422,8 +422,8 @@ pub fn front_model(f: u32) -> Mat4 {
 }
 
 /// The `front` variant: [`random_mesh`] at [`front_model`], back faces culled, into the whole
-/// frame, fragments counted: the triangle walk of an object inside every clip plane (on the
-/// Cortex-M4 with `asm` in assembly), over triangles of both windings and of zero area.
+/// frame, fragments counted: the triangle walk of an object inside every clip plane (with
+/// `asm` in assembly on both cores), over triangles of both windings and of zero area.
 /// Returns a word of every count of the drawing but the primitives (culled, degenerate, drawn,
 /// fragments and writes) and of the depth buffer.
 fn random_front_faces(
