@@ -257,9 +257,9 @@ fn triangles_variant_reaches_every_setup_case() {
 }
 
 /// The `front` variant walks an object inside every clip plane culled to its front faces
-/// (which the Cortex-M4's `asm` feature does in assembly, checked by this variant's hash,
-/// which folds in every count, under emulation) over back faces, front faces and faces of
-/// zero area, with runs of each kind, the last triangle among them; and it draws.
+/// (which the `asm` feature does in assembly on both cores, checked by this variant's hash,
+/// which folds in every count and the depths, under emulation) over back faces, front faces
+/// and faces of zero area, with runs of back and of front faces; and it draws.
 #[test]
 fn front_variant_walks_every_kind_of_face_inside_every_plane() {
     use fixed3d::mesh::Object;
