@@ -18,7 +18,8 @@ use crate::raster::ScreenPoint;
 ///
 /// Its indices are read unchecked: every index of a [`Mesh`] lies below its number of
 /// positions (`Mesh::new` checks them once), and [`new`](Self::new) requires one vertex for
-/// each position.
+/// each position. Its fields are set by `new` and moved on only by the walks in assembly,
+/// which keep `next` and `left` as documented below (the safety of each walk rests on it).
 pub(crate) struct FrontFaces<'t, 'v> {
     pub(super) triangles: &'t [Triangle],
     pub(super) vertices: &'v [ScreenVertex],
