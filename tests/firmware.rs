@@ -262,11 +262,7 @@ fn triangles_variant_reaches_every_setup_case() {
 /// and faces of zero area, with runs of back and of front faces; and it draws.
 #[test]
 fn front_variant_walks_every_kind_of_face_inside_every_plane() {
-    use fixed3d::mesh::Object;
     use fixed3d::pipeline::Stats;
-    use fixed3d::scene::Scene;
-    use fixed3d::shade::Flat;
-    use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
     let (mut rp, mut rt) = (
         vec![Vec3::ZERO; 3 * RANDOM_TRIANGLES],
         vec![[0u16; 3]; RANDOM_TRIANGLES],
@@ -277,15 +273,7 @@ fn front_variant_walks_every_kind_of_face_inside_every_plane() {
         vec![Rgb565::BLACK; (W * H) as usize],
         vec![u16::MAX; (W * H) as usize],
     );
-    let objects = [Object::new(&random, front_model(0), ORANGE)];
-    let scene = Scene::new(&objects, sun());
-    let p = frame(W, H)
-        .expect("frame")
-        .prepare(&scene, &mut cache, Flat)
-        .expect("prepare");
-    let mut c = FrameBuffer::new(&mut fb, W, H).expect("colour buffer");
-    let mut d = DepthBuffer::new(&mut depth, W, H).expect("depth buffer");
-    let stats = p.draw(&mut ColorDepth::new(&mut c, &mut d).expect("target"));
+    let stats = random_front_stats(&random, 0, &mut cache, &mut fb, &mut depth);
     let stats = stats.expect("drawn");
     let Stats {
         culled,

@@ -259,8 +259,8 @@ impl Frame {
             let rest = core::mem::take(&mut slots);
             let (these, after) = rest.split_at_mut(positions.len().min(rest.len()));
             slots = after;
-            // With `asm` on Cortex-M3/M4, an object of known words without lit colours in
-            // assembly (see `project_known_in_words`).
+            // With `asm` on Cortex-M3/M4, an object known inside in words without lit colours
+            // takes the vertex loop in assembly (`target::thumb2::project_known_in_words`).
             #[cfg(all(feature = "asm", fixed3d_thumb2))]
             if fits && known == Known::InWords && normals.is_none() {
                 let halves = map.half_sizes();

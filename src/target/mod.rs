@@ -9,6 +9,12 @@
 //!   `fill_solid` per span.
 //! - [`Nearest`] and [`OrderedDither`] turn the shaded 24-bit colour into the target's colour;
 //!   the dither keeps shading visible on 1-bit and grey displays.
+//!
+//! With the `asm` feature each core's hand-written code lives here too (thumb1.rs, thumb2.rs,
+//! x86_64.rs: the crate's only `unsafe`): the row and pixel loops, and for the pipeline's
+//! earlier stages the triangle walk's skip of back faces (its state in asm_faces.rs) and on
+//! Cortex-M3/M4 a triangle's row set-up and the vertex loop of an object known inside the
+//! clip planes.
 
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
 mod asm_faces;

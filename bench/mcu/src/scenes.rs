@@ -397,9 +397,7 @@ fn random_triangles(
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> Option<u32> {
-    // About x, so that corners apart only in x stay at one height and depth.
-    let turn = Mat4::rotation_x(Angle::from_degrees(7 * f as i32));
-    let objects = [Object::new(mesh, turn, ORANGE)];
+    let objects = [Object::new(mesh, random_turn(f), ORANGE)];
     let scene = Scene::new(&objects, sun());
     let frame = frame(W, H)?.with_cull(Cull::None);
     let p = frame.prepare(&scene, cache, Flat).ok()?;
@@ -413,12 +411,39 @@ fn random_triangles(
     Some(stats.fragments.rotate_left(16) ^ stats.written)
 }
 
-/// The model matrix of the `front` variant at frame `f`: [`random_mesh`] turned about x and
-/// shrunk to a quarter, so that every vertex lies inside every clip plane.
+/// [`random_mesh`]'s turn at frame `f`: about x, so that corners apart only in x stay at one
+/// height and depth.
+fn random_turn(f: u32) -> Mat4 {
+    Mat4::rotation_x(Angle::from_degrees(7 * f as i32))
+}
+
+/// The model matrix of the `front` variant at frame `f`: [`random_mesh`] turned as in
+/// `triangles` and shrunk to a quarter, so that every vertex lies inside every clip plane.
 pub fn front_model(f: u32) -> Mat4 {
     let quarter = Scalar::from_bits(1 << 14);
-    let turn = Mat4::rotation_x(Angle::from_degrees(7 * f as i32));
-    turn * Mat4::scaling(Vec3::new(quarter, quarter, quarter))
+    random_turn(f) * Mat4::scaling(Vec3::new(quarter, quarter, quarter))
+}
+
+/// The `front` variant's drawing of frame `f` (see [`random_front_faces`]), fragments
+/// counted: what it counted. The vertices stay in `cache`, the frame in `color` and `depth`.
+pub fn random_front_stats(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<Stats> {
+    let objects = [Object::new(mesh, front_model(f), ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    with_depth_target(
+        frame(W, H)?,
+        &scene,
+        Flat,
+        cache,
+        color,
+        depth,
+        |p, mut target| p.draw(&mut target).ok(),
+    )
 }
 
 /// The `front` variant: [`random_mesh`] at [`front_model`], back faces culled, into the whole
@@ -433,16 +458,7 @@ fn random_front_faces(
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> Option<u32> {
-    let objects = [Object::new(mesh, front_model(f), ORANGE)];
-    let scene = Scene::new(&objects, sun());
-    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
-    let s = {
-        let (mut c, mut d) = (
-            FrameBuffer::new(color, W, H).ok()?,
-            DepthBuffer::new(depth, W, H).ok()?,
-        );
-        p.draw(&mut ColorDepth::new(&mut c, &mut d).ok()?).ok()?
-    };
+    let s = random_front_stats(mesh, f, cache, color, depth)?;
     // The depths too: a vertex's depth one unit off changes few colours.
     let mut h = Fnv::new();
     depth.iter().for_each(|&z| h.write(z as u32));
