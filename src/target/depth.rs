@@ -18,7 +18,7 @@ const DROPPED: u32 = 13;
 /// Half a u16 step in the interpolator's units: added once, truncation then rounds to nearest.
 const HALF_STEP: i64 = 1 << (U16_STEP_BITS - 1);
 /// Half a u16 step in the 32-bit loop's unit.
-const LOOP_HALF_STEP: i32 = 1 << (U16_STEP_BITS - DROPPED - 1);
+pub(super) const LOOP_HALF_STEP: i32 = 1 << (U16_STEP_BITS - DROPPED - 1);
 
 mod sealed {
     pub trait Sealed {}

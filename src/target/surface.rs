@@ -14,6 +14,8 @@ use super::depth::{
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+use super::thumb2;
 use crate::pipeline::Stats;
 #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
 use crate::raster::TriangleRows;
@@ -26,9 +28,9 @@ use crate::shade::Paint;
 /// area, from which a target sets up its rows and the depth interpolation it needs (opaque).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ScreenTriangle {
-    p: [ScreenPoint; 3],
-    z: [i32; 3],
-    area: i64,
+    pub(super) p: [ScreenPoint; 3],
+    pub(super) z: [i32; 3],
+    pub(super) area: i64,
     /// Every side known to lie within ±2¹⁵ (its vertices inside every clip plane).
     short_sides: bool,
 }
@@ -337,7 +339,11 @@ where
             p,
             area,
             (self.clip.y0, self.clip.y1),
-            |y| RoundedRows::<NativeWord>::new(p, z, area, y, short_sides),
+            // Small triangles' walks in assembly, the others' in Rust (the same walks).
+            |y| match thumb2::depth_walk(triangle, y) {
+                Some(walk) => Some((walk, walk.step_x)),
+                None => rounded_rows(p, z, area, y, short_sides),
+            },
             colors,
             depths,
             width,

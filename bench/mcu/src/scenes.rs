@@ -389,7 +389,8 @@ pub fn variant(
 
 /// The `triangles` variant: [`random_mesh`] turned by frame `f` about x, both windings drawn
 /// (no culling), into a band of the frame from row 37 (its rows 37 to 276, the buffers'
-/// 240), fragments counted. Returns the counts' word, as [`variant`] does.
+/// 240), fragments counted. Returns a word of the counts and of the depth buffer (the depth
+/// walks of triangles of every size and both windings, which change few colours).
 fn random_triangles(
     mesh: &Mesh<'_>,
     f: u32,
@@ -408,7 +409,14 @@ fn random_triangles(
     let stats = p
         .draw(&mut ColorDepth::band(&mut c, &mut d, 37).ok()?)
         .ok()?;
-    Some(stats.fragments.rotate_left(16) ^ stats.written)
+    Some(stats.fragments.rotate_left(16) ^ stats.written ^ depth_word(depth))
+}
+
+/// A word of every stored depth: a walk one unit off changes few colours.
+fn depth_word(depth: &[u16]) -> u32 {
+    let mut h = Fnv::new();
+    depth.iter().for_each(|&z| h.write(z as u32));
+    h.0
 }
 
 /// [`random_mesh`]'s turn at frame `f`: about x, so that corners apart only in x stay at one
@@ -459,10 +467,15 @@ fn random_front_faces(
     depth: &mut [u16],
 ) -> Option<u32> {
     let s = random_front_stats(mesh, f, cache, color, depth)?;
-    // The depths too: a vertex's depth one unit off changes few colours.
-    let mut h = Fnv::new();
-    depth.iter().for_each(|&z| h.write(z as u32));
-    let counts = [s.culled, s.degenerate, s.drawn, s.fragments, s.written, h.0];
+    let depths = depth_word(depth);
+    let counts = [
+        s.culled,
+        s.degenerate,
+        s.drawn,
+        s.fragments,
+        s.written,
+        depths,
+    ];
     Some(counts.iter().fold(0, |h, &k| h.rotate_left(7) ^ k))
 }
 
