@@ -13,6 +13,7 @@ fn main() {
         "fixed3d_thumb1",
         "fixed3d_thumb2",
         "fixed3d_asm_rows",
+        "fixed3d_dsp",
     ] {
         println!("cargo:rustc-check-cfg=cfg({cfg})");
     }
@@ -28,6 +29,10 @@ fn main() {
     if let Some(cfg) = set {
         println!("cargo:rustc-cfg={cfg}");
         println!("cargo:rustc-cfg=fixed3d_thumb");
+    }
+    // The DSP extension's halfword instructions (`usub16`, `sel`): Cortex-M4 and M7.
+    if starts(&["thumbv7em-"]) {
+        println!("cargo:rustc-cfg=fixed3d_dsp");
     }
     if set.is_some() || std::env::var("CARGO_CFG_TARGET_ARCH").as_deref() == Ok("x86_64") {
         println!("cargo:rustc-cfg=fixed3d_asm_rows");
