@@ -147,17 +147,26 @@ $stages
   stay in a register beside the row loop's state, one load a written pixel; Cortex-M compares
   depths in 32 bits so that the stored halfword needs no masking). The \`asm\` feature's
   hand-written loops, which the firmware presets have, take nine on both cores (seven for a
-  fragment that loses on the M0); x86-64's takes two pixels a turn, the second at the next
+  fragment that loses on the M0), and on the M4 (and M7: the DSP extension's halfword
+  instructions) an uncounted span's pixels two at a time, 13 instructions for two
+  (\`pixel_pairs!\`: both depths in one word, both stored ones loaded in one, unaligned where
+  the span starts at an odd column, one \`usub16\` and a \`sel\` each for the depths and the
+  colours that win, both words stored back; a span of odd length takes its first pixel
+  alone): the frame 4.7% fewer instructions (1.151 M → 1.097 M); x86-64's takes two pixels a turn, the second at the next
   cells' displacement, so that one index step and branch serve both: eight a written
   fragment, six one that loses, and a span of odd length takes its first pixel apart, four
   more (its frame 1% fewer instructions than one pixel a turn; the torus' spans are 4.8
-  pixels long on average; on Cortex-M a second pixel's cells need two more registers, which
-  the row loop does not have, or an index step of its own, which costs as much as it saves).
+  pixels long on average; on the M0 a second pixel's cells need two more registers, which
+  the row loop does not have, or an index step of its own, which costs as much as it saves;
+  on x86-64 eight pixels a turn in SSE2, each span's lanes masked, would take about 30
+  instructions a span by a count of what it needs, against about 38 for the 4.8 pixels
+  now: not tried).
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
-  instructions per frame (5.6% with the \`asm\` loops, which then need no count either), the
+  instructions per frame (10.1% with the \`asm\` loops, which then need no count either and
+  take the pixels in pairs), the
   M0 4.1% (3.0% with its \`asm\` loop), x86-64 1.6% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
   pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
@@ -458,12 +467,12 @@ $stages
   through a call (the M0 0.3% more, the M4 0.4%), and the first row's edges set up where
   they go, their vertices chosen first, instead of swapped after (the M0 0.5% more, the M4
   0.9%).
-- **The goals**: with the pixels at what they take now (0.27 M on the M4), 1.0 M leaves
-  0.73 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 81% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 takes about 520
+- **The goals**: with the pixels at what they take now (0.22 M on the M4), 1.0 M leaves
+  0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
+  rows, 89% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 takes about 510
   instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
-  rows and of its depth walk, 0.50 M). That is not the compiler's moves between registers
+  rows and of its depth walk, 0.49 M). That is not the compiler's moves between registers
   and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of
   its corners, its rows and three edges, \`thumb2::triangle_runs\`) takes about 150
   instructions (the sort 26 with its IT blocks, the rows 17, an edge 27), as many as the
@@ -471,13 +480,23 @@ $stages
   then running in line right after it. The same set-up written for x86-64 (its edges two
   128-bit and 64-bit divisions each, \`FractionStepper\`'s words) took about 235
   instructions a triangle where the compiled \`rows_in_range\` and \`TriangleRows::runs\`
-  take about 215: the frame 1.5% more, not kept. A set-up and shading of about 250 instructions a
+  take about 215: the frame 1.5% more, not kept. The M4's depth walk set-up of a small
+  triangle by hand (\`thumb2::depth_walk\`: its numerators by a widening multiply and a
+  multiply-accumulate each, its steps by two signed divisions where a numerator fits a word,
+  by three 15-bit digits otherwise, its row's start) takes about 90 instructions where the
+  compiled set-up took about 105: the frame 1.4% fewer instructions (1.167 M → 1.151 M), 310
+  bytes less flash (the compiled set-up for every size left out of line). The same for
+  x86-64 took about 100, as many as the compiled code, and the registers it held cost the
+  code around it more: the frame 3.1% more, not kept; in Thumb-1 for the M0 (a naked
+  function, its digits as \`ShortQuotients\` finds them) about 340 where the compiled code
+  takes about 357: the frame 0.7% fewer instructions for about 1 KB more flash, above the
+  preset's budget, not kept. A set-up and shading of about 250 instructions a
   triangle, once estimated from the arithmetic, leaves out what that arithmetic takes in
   instructions; hand-writing the rest (the depth walk's divisions, the colour) would gain
   in proportion, a few per cent. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
-  predicated in one IT block, one index for both buffers, against the compiler's twelve;
-  20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
+  predicated in one IT block, one index for both buffers, against the compiler's twelve, and
+  13 for two in an uncounted span; 20 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
   stage (0.43 M, about 375
   a vertex, of which the transform takes about 135 and the divisions by w about 135) and the depth
@@ -491,10 +510,7 @@ $stages
   (the nearest and farthest w, the longest edge on screen) it spares 441 of the torus'
   1,152 vertices (606 are used only by back faces), about 4% of the M0's frame after a
   test per triangle, nothing on the M4 or x86-64 (there the tests of a vertex's two
-  triangles cost as much as the projections they spare). And two pixels a turn on the M4 (the depth cell's address stepping by the load's
-  write-back, the colour's an offset from it, which frees the index register) saves a
-  pixel's loop step but costs each span three instructions of set-up and an entry by
-  parity: n − 3 fewer for a span of n, about 0.5% for the torus' spans of 4.8 pixels.
+  triangles cost as much as the projections they spare).
 - \`python3 bench/mcu/profile.py full thumbv6m-none-eabi\` (or \`thumbv7em-none-eabihf\`)
   lists the instructions by function and the library calls by the line that makes them, and
   \`ASM=fill_face\` prints a function's instructions with their counts.
