@@ -275,16 +275,21 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
 macro_rules! rows_loop {
     // x0 = max(x0, 0), x1 = min(x1, width), the width in a register of its own (the M4's
     // frame 0.44% fewer instructions than loaded each row).
+    // The run's end loaded from the block each row.
     (clamped [$($width:tt)*] $($rest:tt)*) => {
         rows_loop!(["add {x0}, {c}"], ["add {x1}, {c}"],
                    ["bic {x0}, {x0}, {x0}, asr #31", "cmp {x1}, {w}", "it gt",
-                    "movgt {x1}, {w}"] [w = in(reg) $($width)*,] $($rest)*)
+                    "movgt {x1}, {w}"], [], ["ldr {a}, [{s}, #{end}]", "cmp {cptr}, {a}"],
+                   ["str {a}, [{s}, #{end}]"] [w = in(reg) $($width)*,] $($rest)*)
     };
-    // Every edge's base is 0 (see `triangle_runs`): no additions.
+    // Every edge's base is 0 (see `triangle_runs`): no additions; the run's end in the
+    // register the width takes in the other loop (the M4's frame 0.6% fewer instructions).
     (within [$($width:tt)*] $($rest:tt)*) => {
-        rows_loop!([], [], [] [] $($rest)*)
+        rows_loop!([], [], [], ["ldr {e}, [{s}, #{end}]"], ["cmp {cptr}, {e}"],
+                   ["mov {e}, {a}"] [e = out(reg) _,] $($rest)*)
     };
-    ([$($left_base:literal)?], [$($right_base:literal)?], [$($clamp:literal),*]
+    ([$($left_base:literal)?], [$($right_base:literal)?], [$($clamp:literal),*],
+     [$($end_init:literal)?], [$($end_cmp:literal),*], [$set_end:literal]
      [$($width:tt)*] $it:tt, $pass:tt,
      [$($before:literal),*], [$($count:literal)?], [$($after:literal)?], $pixels:ident;
      $block:expr $(, $extra:ident = const $value:expr)*) => {
@@ -295,6 +300,7 @@ macro_rules! rows_loop {
             "ldr {rowz}, [{s}, #{row_z}]",
             "ldr {col}, [{s}, #{bits}]",
             "orr {col}, {col}, {col}, lsl #16",
+            $($end_init,)?
             "2:",
             // Left end: numerator / denominator (+ base); the numerator steps.
             "ldrd {a}, {b}, [{s}]",
@@ -328,14 +334,13 @@ macro_rules! rows_loop {
             "ldrd {a}, {b}, [{s}, #{step_y}]",
             "add {rowz}, {a}",
             "add {cptr}, {b}",
-            "ldr {a}, [{s}, #{end}]",
-            "cmp {cptr}, {a}",
+            $($end_cmp,)*
             "bne 2b",
             // The last run ends at `last`; before it, the lower short edge takes its side.
             "ldrd {a}, {b}, [{s}, #{last}]",
             "cmp {cptr}, {a}",
             "beq 5f",
-            "str {a}, [{s}, #{end}]",
+            $set_end,
             "add {b}, {s}",
             "ldrd {c}, {d}, [{s}, #{lower}]",
             "strd {c}, {d}, [{b}]",
@@ -386,7 +391,8 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     //   loads and stores words at any halfword address in normal memory, as the buffers
     //   are.) It also reads `block` (borrowed mutably), and writes its
     //   edges' numerators (the first word of the first two edges), the lower edge over the
-    //   one at `slot` (0 or one edge's size), `end` and, counted, its counts; nothing else,
+    //   one at `slot` (0 or one edge's size), `end` (with the clamps: without them the run's
+    //   end waits in a register) and, counted, its counts; nothing else,
     //   and no stack (`nostack`).
     // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid colour
     //   unchanged, or (in a pair) its own two bytes; an edge gets a copy of a valid edge or a
