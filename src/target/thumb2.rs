@@ -22,7 +22,8 @@
 //! loop: a whole triangle, both runs of rows (above and below its middle vertex), in one
 //! block of assembly. A row takes 20 instructions (each edge's end by one division of its
 //! numerator, the depth walk and the row address; 4 more to clamp the span to the target's
-//! columns, for a triangle that crosses its left or right side), 4 more to enter a span,
+//! columns, for a triangle that crosses its left or right side), 4 more to enter a span
+//! (since then 17 a row without the clamps, see below, and 6 to enter a span with pairs),
 //! where the compiler's row loop took about 49, moving the row's state between registers and
 //! the stack around the pixel loop; here the edges and the constants are read in pairs from
 //! one block in memory. Its set-up takes about 60 instructions a triangle more than the
@@ -41,7 +42,8 @@
 //! is 0 or more takes it folded into its numerator, and a triangle whose corners all lie at
 //! or right of the first pixel centre takes the row loop without the clamps, which then adds
 //! no base: 2 instructions a row fewer, the reference frame 1.0% fewer instructions
-//! (1.097 M → 1.085 M).
+//! (1.097 M → 1.085 M). That loop also keeps the run's end in the register the clamped
+//! loop gives the width: one load a row fewer, 0.6% (1.085 M → 1.079 M).
 //!
 //! Both loops compute exactly what the Rust loops compute: the same span ends (the same unsigned
 //! division of the same numerators, clamped to the same columns, or already within them), the
@@ -92,6 +94,23 @@ use crate::math::{Mat4, Vec3};
 use crate::pipeline::{FaceStop, ScreenVertex};
 use crate::raster::{Runs, ScreenPoint};
 
+/// One pixel of `pixels!` (its arguments), before the index steps: the depth from the walk,
+/// which steps, tested against the stored one, both stores where the fragment wins.
+#[rustfmt::skip]
+macro_rules! one_pixel {
+    ($z:literal, $o:literal, $st:literal, $it:literal, $pass:literal) => {
+        concat!(
+            "lsr {", $z, "}, {acc}, #15\n",
+            "ldrh {", $o, "}, [{d}, {i}, lsl #1]\n",
+            "add {acc}, {", $st, "}\n",
+            "cmp {", $z, "}, {", $o, "}\n",
+            $it, " ", $pass, "\n",
+            "strh", $pass, " {", $z, "}, [{d}, {i}, lsl #1]\n",
+            "strh", $pass, " {col}, [{c}, {i}, lsl #1]\n",
+        )
+    };
+}
+
 /// The pixel loop's instructions as one template: from label `$l`, the depth in register
 /// `$z`, the stored depth in `$o`, the step in `$st` (the others named `acc`, `d`, `c`, `i`,
 /// `col`); `$it` the IT block (`itt`, or `itte` with the failure count), `$pass` the
@@ -103,13 +122,7 @@ macro_rules! pixels {
      [$($count:literal)?]) => {
         concat!(
             $l, ":\n",
-            "lsr {", $z, "}, {acc}, #15\n",
-            "ldrh {", $o, "}, [{d}, {i}, lsl #1]\n",
-            "add {acc}, {", $st, "}\n",
-            "cmp {", $z, "}, {", $o, "}\n",
-            $it, " ", $pass, "\n",
-            "strh", $pass, " {", $z, "}, [{d}, {i}, lsl #1]\n",
-            "strh", $pass, " {col}, [{c}, {i}, lsl #1]\n",
+            one_pixel!($z, $o, $st, $it, $pass),
             $($count, "\n",)?
             "adds {i}, {i}, #1\n",
             "bne ", $l, "b",
@@ -146,13 +159,7 @@ macro_rules! pixel_pairs {
         concat!(
             "tst {i}, #1\n",
             "beq 6f\n",
-            "lsr {", $z, "}, {acc}, #15\n",
-            "ldrh {", $o, "}, [{d}, {i}, lsl #1]\n",
-            "add {acc}, {", $st, "}\n",
-            "cmp {", $z, "}, {", $o, "}\n",
-            $it, " ", $pass, "\n",
-            "strh", $pass, " {", $z, "}, [{d}, {i}, lsl #1]\n",
-            "strh", $pass, " {col}, [{c}, {i}, lsl #1]\n",
+            one_pixel!($z, $o, $st, $it, $pass),
             "adds {i}, {i}, #1\n",
             "beq 7f\n",
             "6:\n",
@@ -732,6 +739,25 @@ macro_rules! long_axis_step {
     };
 }
 
+/// In [`depth_walk`], a numerator into `$lo`, `$hi`: `u·(c₁ − a) + v·(a − c₂)` for the first
+/// corner's coordinate `a` and two others' `c₁`, `c₂` (the words at those offsets from the
+/// points), the differences `u`, `v` in the registers named, by a widening multiply and a
+/// multiply-accumulate (temporaries `r`, `s`).
+#[rustfmt::skip]
+macro_rules! numerator {
+    ($a:literal, $c1:literal, $c2:literal, $u:literal, $v:literal, $lo:literal, $hi:literal) => {
+        concat!(
+            "ldr {r}, [{t}, #{p} + ", $a, "]\n",
+            "ldr {s}, [{t}, #{p} + ", $c1, "]\n",
+            "sub {s}, {s}, {r}\n",
+            "smull {", $lo, "}, {", $hi, "}, {", $u, "}, {s}\n",
+            "ldr {s}, [{t}, #{p} + ", $c2, "]\n",
+            "sub {s}, {r}, {s}\n",
+            "smlal {", $lo, "}, {", $hi, "}, {", $v, "}, {s}\n",
+        )
+    };
+}
+
 /// `RoundedRows::new` of `triangle`'s depth walk on row `y` (the first row of its runs) in one
 /// block of assembly, for a triangle whose doubled area's magnitude lies below 2¹⁷ (every
 /// small one): `None` where it declines (a larger triangle, or a step that would not fit a
@@ -784,20 +810,8 @@ pub(super) fn depth_walk(triangle: &ScreenTriangle, y: i32) -> Option<RoundedRow
             "lsrs {q}, {q}, #17",
             "bne 8f",
             // The numerators: dv₁·dy₂ + dv₂·(y₀ − y₁) and dv₂·dx₁ + dv₁·(x₀ − x₂).
-            "ldr {r}, [{t}, #{p} + 4]",
-            "ldr {s}, [{t}, #{p} + 20]",
-            "sub {s}, {s}, {r}",
-            "smull {xl}, {xh}, {t1}, {s}",
-            "ldr {s}, [{t}, #{p} + 12]",
-            "sub {s}, {r}, {s}",
-            "smlal {xl}, {xh}, {t2}, {s}",
-            "ldr {r}, [{t}, #{p}]",
-            "ldr {s}, [{t}, #{p} + 8]",
-            "sub {s}, {s}, {r}",
-            "smull {yl}, {yh}, {t2}, {s}",
-            "ldr {s}, [{t}, #{p} + 16]",
-            "sub {s}, {r}, {s}",
-            "smlal {yl}, {yh}, {t1}, {s}",
+            numerator!("4", "20", "12", "t1", "t2", "xl", "xh"),
+            numerator!("0", "8", "16", "t2", "t1", "yl", "yh"),
             // The steps.
             axis_step!("xl", "xh", "2", "3"),
             axis_step!("yl", "yh", "4", "5"),
