@@ -351,7 +351,7 @@ impl TriangleRows {
 }
 
 /// `TriangleRows::within_columns` of the triangle `v`, in any order.
-#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))))]
+#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 #[inline(always)]
 pub(crate) fn within_columns(v: &[ScreenPoint; 3], bound: u32) -> bool {
     let [a, b, c] = *v;
@@ -362,7 +362,7 @@ pub(crate) fn within_columns(v: &[ScreenPoint; 3], bound: u32) -> bool {
 /// The bound of [`within_columns`] for `width` columns: one unsigned comparison a
 /// vertex, `x + 7 ≤ 16·width + 15` (a wrapped negative fails it). Widths from 2²⁷ on are taken
 /// as 2²⁷ − 1, which only tests more strictly, so that the bound stays below 2³¹.
-#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))))]
+#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 pub(crate) const fn columns_bound(width: i32) -> u32 {
     let w = if width < 0 {
         0

@@ -16,12 +16,10 @@ use super::thumb2 as core_rows;
 use super::x86_64 as core_rows;
 use crate::pipeline::Stats;
 #[cfg(not(fixed3d_thumb2))]
-use crate::raster::columns_bound;
-#[cfg(fixed3d_thumb2)]
-use crate::raster::ScreenPoint;
-#[cfg(not(fixed3d_thumb2))]
 use crate::raster::TriangleRows;
-use crate::raster::{EdgeWalk, Runs};
+use crate::raster::{columns_bound, EdgeWalk, Runs};
+#[cfg(fixed3d_thumb2)]
+use crate::raster::{within_columns, ScreenPoint};
 
 /// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
 /// steps; on ARMv7-M its numerator, step, denominator and base; on x86-64 its walk and step).
@@ -43,8 +41,7 @@ pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 ///   size (right);
 /// - `bits` holds the two bytes of a valid colour of the buffer's type;
 /// - called without the clamps (`clamp` false), every row's span ends lie in `0..=width`
-///   before any clamp (`within_columns`), and on Cortex-M3/M4 every edge's base is 0
-///   (`folded_within_columns`: `triangle_runs` folds a base from 0 up into the numerator).
+///   before any clamp (`within_columns`).
 #[repr(C)]
 pub(super) struct RowBlock {
     /// Left, right and the lower short edge (`runs.edges`), and the rows.
@@ -182,7 +179,7 @@ pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWor
     // This core has a loop without the clamps: spans that cannot cross the columns take it
     // (the reference frame's triangles all do: 4 instructions a row fewer, the frame 1.05%
     // fewer instructions, for about 200 bytes of flash).
-    let clamp = !(core_rows::WITHOUT_CLAMPS && folded_within_columns(p, w));
+    let clamp = !(core_rows::WITHOUT_CLAMPS && within_columns(p, columns_bound(w)));
     let first = y.wrapping_sub(y0) as u32;
     // SAFETY: as above; with these and the runs (all of them written, rows being left) every
     // field but the seven `run_block` writes holds a valid value, as it requires.
@@ -197,19 +194,6 @@ pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWor
         run_block::<C, T, K>(block, clamp, colors, depths, first, width, stats);
     }
     true
-}
-
-/// Whether the spans of the triangle `p` lie within the columns `0..width` (`within_columns`)
-/// and every corner lies at or right of the first pixel centre (x ≥ 8): then every edge's base
-/// is at least 0 and `triangle_runs` folds it into the numerator, as the row loop without the
-/// clamps takes it. Every corner's x minus 8 at most 16·width, as one unsigned comparison (a
-/// corner left of it wraps and fails); `within_columns` holds too (x + 7 ≤ 16·width + 15).
-#[cfg(fixed3d_thumb2)]
-#[inline(always)]
-fn folded_within_columns(p: &[ScreenPoint; 3], width: i32) -> bool {
-    let [a, b, c] = *p;
-    let at = |x: i32| x.wrapping_sub(8) as u32;
-    at(a.x).max(at(b.x)).max(at(c.x)) <= (width as u32).wrapping_mul(16)
 }
 
 /// The block's width for buffers of `width` columns: rows of fewer than 2¹⁶ pixels (every
@@ -283,9 +267,8 @@ unsafe fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
     // edge's size; `bits` came from `color_bits` of a valid `C` (the caller's); without the
     // clamps, `within_columns` holds for `width` and the triangle whose rows the edges in
     // `runs` walk (set up by `TriangleRows::runs`, or on Cortex-M3/M4 by
-    // `thumb2::triangle_runs`, which computes the same walks, each edge's base from 0 up
-    // folded into its numerator: see its documentation; there without the clamps every
-    // corner lies at or right of x = 8, `folded_within_columns`, so every base is 0).
+    // `thumb2::triangle_runs`, which computes the same walks with no base, the numerator
+    // signed: see its documentation).
     unsafe { core_rows::rows::<T, K>(block, clamp) };
     if K::COUNTED {
         stats.fragments = stats.fragments.saturating_add(block.fragments);

@@ -38,14 +38,17 @@
 //! in line beside it, and out of line for the triangles it leaves to the general loops), and 1.2%
 //! fewer again (1.262 M) with the block not cleared first, the set-up writing every field of its
 //! runs. Its output is checked against the Rust set-up on random triangles of every case under
-//! emulation (the `variants` preset's `triangles`). An edge whose base (its leftmost column)
-//! is 0 or more takes it folded into its numerator, and a triangle whose corners all lie at
-//! or right of the first pixel centre takes the row loop without the clamps, which then adds
-//! no base: 2 instructions a row fewer, the reference frame 1.0% fewer instructions
-//! (1.097 M → 1.085 M). That loop also keeps the run's end in the register the clamped
-//! loop gives the width: one load a row fewer, 0.6% (1.085 M → 1.079 M).
+//! emulation (the `variants` preset's `triangles`). Its edges have no base (the column the
+//! Rust stepper subtracts to keep its numerator unsigned): the numerator is signed, `N + D − 1`
+//! in a word for every triangle of the pipeline, and the rows divide it signed, which rounds
+//! toward zero where the floor is wanted only for a negative numerator, whose end (−1 or
+//! less, or 0 for −1 by that rounding) the clamps take to 0 or to an empty span all the same:
+//! 18 instructions an edge where the base took 27, 2 a row fewer (no base to add), the
+//! reference frame 2.8% fewer instructions (1.097 M → 1.066 M, in two steps, the first
+//! folding only bases from 0 up). The row loop without the clamps keeps the run's end in the
+//! register the clamped loop gives the width: one load a row fewer, 0.6%.
 //!
-//! Both loops compute exactly what the Rust loops compute: the same span ends (the same unsigned
+//! Both loops compute exactly what the Rust loops compute: the same span ends (the same
 //! division of the same numerators, clamped to the same columns, or already within them), the
 //! same depths (`acc >> 15`, below 2¹⁶ since every value lies in [0, 2³¹)), the same test on
 //! the same stored depth (zero-extended to 32 bits in both), the same stores and counts. The
@@ -272,9 +275,9 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
 /// pixel loop, in it, and after it (none uncounted), then the block's address and the counts'
 /// operands if any. The block's fields at their offsets (`const` operands), first the first
 /// row's colour address, the depth walk and the colour; an edge's numerator and step as a
-/// pair, its denominator and base as another. A row: each edge's span end (one division of
-/// its numerator, which then steps, plus the base if `clamped`: without the clamps every
-/// edge's base is 0, folded into its numerator by `triangle_runs`), the span clamped to
+/// pair, its denominator (and base, 0 from `triangle_runs`: not read) as another. A row: each
+/// edge's span end (one signed division of its numerator, which then steps), the span
+/// clamped to
 /// `0..width` if `clamped`, and where it
 /// holds pixels the depth at its first one and the pixel loop; then the depth walk and the row
 /// address step down. At the end of the first run the lower short edge takes its side, and
@@ -284,18 +287,17 @@ macro_rules! rows_loop {
     // frame 0.44% fewer instructions than loaded each row).
     // The run's end loaded from the block each row.
     (clamped [$($width:tt)*] $($rest:tt)*) => {
-        rows_loop!(["add {x0}, {c}"], ["add {x1}, {c}"],
-                   ["bic {x0}, {x0}, {x0}, asr #31", "cmp {x1}, {w}", "it gt",
+        rows_loop!(["bic {x0}, {x0}, {x0}, asr #31", "cmp {x1}, {w}", "it gt",
                     "movgt {x1}, {w}"], [], ["ldr {a}, [{s}, #{end}]", "cmp {cptr}, {a}"],
                    ["str {a}, [{s}, #{end}]"] [w = in(reg) $($width)*,] $($rest)*)
     };
-    // Every edge's base is 0 (see `triangle_runs`): no additions; the run's end in the
-    // register the width takes in the other loop (the M4's frame 0.6% fewer instructions).
+    // The run's end in the register the width takes in the other loop (the M4's frame 0.6%
+    // fewer instructions).
     (within [$($width:tt)*] $($rest:tt)*) => {
-        rows_loop!([], [], [], ["ldr {e}, [{s}, #{end}]"], ["cmp {cptr}, {e}"],
+        rows_loop!([], ["ldr {e}, [{s}, #{end}]"], ["cmp {cptr}, {e}"],
                    ["mov {e}, {a}"] [e = out(reg) _,] $($rest)*)
     };
-    ([$($left_base:literal)?], [$($right_base:literal)?], [$($clamp:literal),*],
+    ([$($clamp:literal),*],
      [$($end_init:literal)?], [$($end_cmp:literal),*], [$set_end:literal]
      [$($width:tt)*] $it:tt, $pass:tt,
      [$($before:literal),*], [$($count:literal)?], [$($after:literal)?], $pixels:ident;
@@ -309,20 +311,18 @@ macro_rules! rows_loop {
             "orr {col}, {col}, {col}, lsl #16",
             $($end_init,)?
             "2:",
-            // Left end: numerator / denominator (+ base); the numerator steps.
+            // Left end: numerator / denominator, signed; the numerator steps.
             "ldrd {a}, {b}, [{s}]",
             "add {c}, {a}, {b}",
             "str {c}, [{s}]",
-            "ldrd {b}, {c}, [{s}, #8]",
-            "udiv {x0}, {a}, {b}",
-            $($left_base,)?
+            "ldr {b}, [{s}, #8]",
+            "sdiv {x0}, {a}, {b}",
             // Right end.
             "ldrd {a}, {b}, [{s}, #{right}]",
             "add {c}, {a}, {b}",
             "str {c}, [{s}, #{right}]",
-            "ldrd {b}, {c}, [{s}, #{right} + 8]",
-            "udiv {x1}, {a}, {b}",
-            $($right_base,)?
+            "ldr {b}, [{s}, #{right} + 8]",
+            "sdiv {x1}, {a}, {b}",
             // The clamps if any; no pixels unless x0 < x1 (signed).
             $($clamp,)*
             "subs {i}, {x0}, {x1}",
@@ -405,7 +405,8 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     //   unchanged, or (in a pair) its own two bytes; an edge gets a copy of a valid edge or a
     //   new numerator (any u32), `end` the
     //   address `last`, the counts u32s.
-    // - Division: every denominator is a `NonZeroU32` (an edge's den), never 0.
+    // - Division: every denominator is 16·dy of an edge with rows, positive and below 2²⁰
+    //   (`triangle_runs`), so never 0, and no quotient overflows (only −2³¹ / −1 would).
     // - Termination: each row ends with i rising to 0 from x0 − x1 ≥ −width, by one, or in
     //   pairs by two from an even value only (an odd one first takes a single pixel). `cptr`
     //   rises by `stride` > 0 a row from the first cell: it meets `end` after `upper` ≥ 1
@@ -449,13 +450,15 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
 /// edge from the point of key `$p` to that of key `$q` (sorted: `p.y ≤ q.y`) at the row whose
 /// sample line is `$r` (16·row + 8), stored at `$off` from the address `$dst` holds after the
 /// instructions `$to_dst` (which may use `ye`, free by then), as `edge_by_division` computes
-/// it: `dx = q.x − p.x`, `dy = q.y − p.y`, the base `b = (min(p.x, q.x) − 8) >> 4`, the
-/// numerator `(p.x − 8 − 16·b)·dy + dx·t + D − 1` with `t = r − p.y` and `D = 16·dy`, the step
-/// `16·dx`, all modulo 2³² as there; but a base from 0 up is folded into the numerator (`b`
-/// taken as 0: `min(b, 0)`), which then walks `N + D − 1`, the edge's own numerator `N` plus
-/// `D − 1`, whose quotient is the same span end `ceil(N / D)`, with no base to add. It stays
-/// in a word on every row: the ends it gives, from `b ≥ 0` up to at most 2¹¹ (corners within
-/// ±2¹⁵), times `D` (below 2²⁰) plus `D − 1`, below 2³¹. Temporaries `t1` to `t4` and `ye`.
+/// it with its base `b` taken as 0: `dx = q.x − p.x`, `dy = q.y − p.y`, the numerator
+/// `(p.x − 8)·dy + dx·t + D − 1` (as `p.x·dy + dx·t + 8·dy − 1`) with `t = r − p.y` and
+/// `D = 16·dy`, the step `16·dx`, modulo 2³². That is `N + D − 1` for the edge's own numerator
+/// `N` (`ceil(N / D)` its span end on the row), and it lies in a word, signed, on every row
+/// the edge walks: `N + D − 1` lies in `[x·D, (x + 1)·D)` for the end `x`, within ±2¹¹ (its
+/// corners within ±2¹⁵), and `D` is below 2²⁰, so within ±(2¹¹ + 1)·(2²⁰ − 512), inside
+/// ±2³¹. The row loop divides it signed (`sdiv`): the floor, that end, where it is 0 or
+/// more; toward zero, at most one above the floor and never above 0, where it is negative.
+/// Temporaries `t1` to `t4` and `ye`.
 macro_rules! edge {
     ($p:literal, $q:literal, $r:literal, [$($to_dst:literal),*], $dst:literal, $off:literal) => {
         concat!(
@@ -463,28 +466,19 @@ macro_rules! edge {
             "ldr {t1}, [{p}, {t1}, lsl #3]\n",
             "and {t2}, {", $p, "}, #3\n",
             "ldr {t2}, [{p}, {t2}, lsl #3]\n",
-            // dx, then min(p.x, q.x) and the base.
+            // dx and dy; p.x·dy + dx·t + 8·dy − 1, which is (p.x − 8)·dy + dx·t + D − 1.
             "sub {t3}, {t1}, {t2}\n",
-            "cmp {t1}, {t2}\n",
-            "it gt\n",
-            "movgt {t1}, {t2}\n",
-            "sub {t1}, {t1}, #8\n",
-            "asr {t1}, {t1}, #4\n",
-            // A base from 0 up folded into the numerator: 0.
-            "and {t1}, {t1}, {t1}, asr #31\n",
-            // (p.x − 8 − 16·b)·dy + dx·t.
-            "sub {t2}, {t2}, #8\n",
-            "sub {t2}, {t2}, {t1}, lsl #4\n",
             "asr {t4}, {", $q, "}, #2\n",
             "sub {t4}, {t4}, {", $p, "}, asr #2\n",
             "mul {t2}, {t2}, {t4}\n",
             "sub {ye}, {", $r, "}, {", $p, "}, asr #2\n",
             "mla {t2}, {t3}, {ye}, {t2}\n",
-            // D, the numerator plus D − 1, the step.
-            "lsl {t4}, {t4}, #4\n",
-            "add {t2}, {t2}, {t4}\n",
+            "add {t2}, {t2}, {t4}, lsl #3\n",
             "sub {t2}, {t2}, #1\n",
+            // D, the step, the base 0.
+            "lsl {t4}, {t4}, #4\n",
             "lsl {t3}, {t3}, #4\n",
+            "mov {t1}, #0\n",
             $($to_dst, "\n",)*
             "strd {t2}, {t3}, [{", $dst, "}, #", $off, "]\n",
             "strd {t4}, {t1}, [{", $dst, "}, #", $off, " + 8]\n",
