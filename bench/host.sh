@@ -165,7 +165,7 @@ $stages
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
   1%); without the counts (\`.uncounted()\`, a type) the M4 takes 5.5% fewer
-  instructions per frame (10.1% with the \`asm\` loops, which then need no count either and
+  instructions per frame (10.4% with the \`asm\` loops, which then need no count either and
   take the pixels in pairs), the
   M0 4.1% (3.0% with its \`asm\` loop), x86-64 1.6% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
@@ -214,11 +214,11 @@ $stages
   \`DivideStepper\`), where the arithmetic needs about 25: the rest moves the row's state (the edges, the depth walk, the clip column, the
   buffers) between registers and the stack around the pixel loop. With the \`asm\` feature
   (the firmware presets have it) the M4's whole row loop is Thumb-2 too, for a solid colour
-  into u16 depth: 17 instructions a row (24 for a triangle that crosses the target's left
-  or right side, or touches the first column, whose spans are clamped) and 6 more to enter a
-  span (20 a row before each edge's base was folded into its numerator, the loop without the
-  clamps adding none, and the run's end kept in the register the other loop gives the
-  width: the frame 1.0% and 0.6% fewer instructions, 1.097 M → 1.079 M). It reads the edges and
+  into u16 depth: 17 instructions a row (22 for a triangle that crosses the target's left
+  or right side, whose spans are clamped) and 6 more to enter a span (20 a row while each
+  edge had a base to add, to keep its numerator unsigned: now the numerator is signed and
+  divided so, and the loop without the clamps keeps the run's end in the register the other
+  loop gives the width; the frame 2.8% and 0.6% fewer instructions, 1.097 M → 1.059 M). It reads the edges and
   the triangle's constants in pairs (\`ldrd\`) from one block in memory and stores the two
   numerators back, which leaves twelve registers for the row and the pixel loop together;
   the runs above and below the middle vertex go through it in one call, the lower short
@@ -472,14 +472,14 @@ $stages
   0.9%).
 - **The goals**: with the pixels at what they take now (0.22 M on the M4), 1.0 M leaves
   0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 91% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 takes about 510
+  rows, 93% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
+  about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 takes about 490
   instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
-  rows and of its depth walk, 0.49 M). That is not the compiler's moves between registers
+  rows and of its depth walk, 0.47 M). That is not the compiler's moves between registers
   and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of
-  its corners, its rows and three edges, \`thumb2::triangle_runs\`) takes about 150
+  its corners, its rows and three edges, \`thumb2::triangle_runs\`) took about 150
   instructions (the sort 26 with its IT blocks, the rows 17, an edge 27), as many as the
-  compiler's code for the same work; the 1.9% it saved came from the depth walk's set-up
+  compiler's code for the same work (an edge 18 since it has no base); the 1.9% it saved came from the depth walk's set-up
   then running in line right after it. The same set-up written for x86-64 (its edges two
   128-bit and 64-bit divisions each, \`FractionStepper\`'s words) took about 235
   instructions a triangle where the compiled \`rows_in_range\` and \`TriangleRows::runs\`
