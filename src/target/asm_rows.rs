@@ -22,7 +22,8 @@ use crate::raster::{columns_bound, EdgeWalk, Runs};
 use crate::raster::{within_columns, ScreenPoint};
 
 /// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
-/// steps; on ARMv7-M its numerator, step, denominator and base; on x86-64 its walk and step).
+/// steps; on ARMv7-M its numerator, step, denominator and base, which `thumb2::triangle_runs`
+/// writes as a signed numerator and a base of 0; on x86-64 its walk and step).
 pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 
 /// What a row loop in assembly reads and writes, each field at its `offset_of!` (which the

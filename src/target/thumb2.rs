@@ -32,7 +32,8 @@
 //!
 //! The set-up of those rows ([`triangle_runs`]): the sort of the corners, the rows and the three
 //! edges of a triangle written into the same block, about 150 instructions a triangle in one block
-//! of assembly, where the compiler's code takes about as many but, with the depth walk's set-up
+//! of assembly (about 139 since its edges have no base, below), where the compiler's code took
+//! about as many but, with the depth walk's set-up
 //! beside it, kept more values on the stack: with it the reference frame on the Cortex-M4F took
 //! 1.9% fewer instructions (1.301 M → 1.276 M), for about 1.1 KB of flash (the depth walk's set-up
 //! in line beside it, and out of line for the triangles it leaves to the general loops), and 1.2%
@@ -44,12 +45,12 @@
 //! toward zero where the floor is wanted only for a negative numerator, whose end (−1 or
 //! less, or 0 for −1 by that rounding) the clamps take to 0 or to an empty span all the same:
 //! 18 instructions an edge where the base took 27, 2 a row fewer (no base to add), the
-//! reference frame 2.8% fewer instructions (1.097 M → 1.066 M, in two steps, the first
-//! folding only bases from 0 up). The row loop without the clamps keeps the run's end in the
-//! register the clamped loop gives the width: one load a row fewer, 0.6%.
+//! reference frame 2.8% fewer instructions (in two steps, the first folding only bases from 0
+//! up). The row loop without the clamps keeps the run's end in the register the clamped loop
+//! gives the width: one load a row fewer, 0.6% (with the edges, 1.097 M → 1.059 M).
 //!
-//! Both loops compute exactly what the Rust loops compute: the same span ends (the same
-//! division of the same numerators, clamped to the same columns, or already within them), the
+//! Both loops compute exactly what the Rust loops compute: the same span ends (divisions of
+//! numerators with the same quotients, clamped to the same columns, or already within them), the
 //! same depths (`acc >> 15`, below 2¹⁶ since every value lies in [0, 2³¹)), the same test on
 //! the same stored depth (zero-extended to 32 bits in both), the same stores and counts. The
 //! row loop's runs are [`Runs`], whose walk a host test checks against the Rust row loops; the
@@ -277,15 +278,13 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
 /// row's colour address, the depth walk and the colour; an edge's numerator and step as a
 /// pair, its denominator (and base, 0 from `triangle_runs`: not read) as another. A row: each
 /// edge's span end (one signed division of its numerator, which then steps), the span
-/// clamped to
-/// `0..width` if `clamped`, and where it
-/// holds pixels the depth at its first one and the pixel loop; then the depth walk and the row
-/// address step down. At the end of the first run the lower short edge takes its side, and
+/// clamped to `0..width` if `clamped`, and where it holds pixels the depth at its first one
+/// and the pixel loop; then the depth walk and the row address step down. At the end of the first run the lower short edge takes its side, and
 /// the second run goes on to `last`.
 macro_rules! rows_loop {
     // x0 = max(x0, 0), x1 = min(x1, width), the width in a register of its own (the M4's
-    // frame 0.44% fewer instructions than loaded each row).
-    // The run's end loaded from the block each row.
+    // frame 0.44% fewer instructions than loaded each row); the run's end loaded from the
+    // block each row.
     (clamped [$($width:tt)*] $($rest:tt)*) => {
         rows_loop!(["bic {x0}, {x0}, {x0}, asr #31", "cmp {x1}, {w}", "it gt",
                     "movgt {x1}, {w}"], [], ["ldr {a}, [{s}, #{end}]", "cmp {cptr}, {a}"],
@@ -519,10 +518,10 @@ macro_rules! first_row {
 /// assembly, for the points `p` (within ±[`PIPELINE_LIMIT`], a [`ScreenTriangle`]'s), whose
 /// doubled signed area is positive if `area_positive`, in the rows `y0..y1`: written into
 /// `runs`, every field of it, and the first row returned; `rows` is 0 (and nothing else
-/// written) where the triangle covers none of those rows. About 150 instructions a triangle (the sort 26, the
-/// rows 17, an edge 27), which with the depth walk set up in line after it took the
-/// reference frame 1.9% fewer instructions than the compiler's set-up (see the module's
-/// documentation).
+/// written) where the triangle covers none of those rows. About 139 instructions a triangle
+/// (the sort 26, the rows 17, an edge 18; with an edge of 27, about 150, it took the
+/// reference frame 1.9% fewer instructions than the compiler's set-up, with the depth walk
+/// set up in line after it: see the module's documentation).
 ///
 /// What it computes, step by step as the Rust does it:
 /// - The sort: keys `4·y + i` for the point `i`, sorted by three compare-and-swaps in
