@@ -279,8 +279,8 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
 /// pair, its denominator (and base, 0 from `triangle_runs`: not read) as another. A row: each
 /// edge's span end (one signed division of its numerator, which then steps), the span
 /// clamped to `0..width` if `clamped`, and where it holds pixels the depth at its first one
-/// and the pixel loop; then the depth walk and the row address step down. At the end of the first run the lower short edge takes its side, and
-/// the second run goes on to `last`.
+/// and the pixel loop; then the depth walk and the row address step down. At the end of the
+/// first run the lower short edge takes its side, and the second run goes on to `last`.
 macro_rules! rows_loop {
     // x0 = max(x0, 0), x1 = min(x1, width), the width in a register of its own (the M4's
     // frame 0.44% fewer instructions than loaded each row); the run's end loaded from the
@@ -564,8 +564,9 @@ pub(super) unsafe fn triangle_runs(
     // - Memory: the block reads the six words of `p` (borrowed; at offsets 0 to 20 by its
     //   layout, asserted below) and writes words of `runs` (valid for writes and unshared, the
     //   caller's contract): the three edges at 0, 16 and 32, `upper`, `rows`, and the byte
-    //   `lower_is_left`; nothing else, and no stack (`nostack`). Point reads are `p + 8·i` for an index `i = key & 3` of
-    //   keys made from the indices 0, 1 and 2 and only moved about.
+    //   `lower_is_left`; nothing else, and no stack (`nostack`). Point reads are `p + 8·i`
+    //   for an index `i = key & 3` of keys made from the indices 0, 1 and 2 and only moved
+    //   about.
     // - Values: a `bool` gets 0 or 1; `u32`s any word; an edge (`DivideStepper`) any words
     //   but its denominator, which is positive (see above), as its `NonZeroU32` requires.
     // - Registers: every register the block writes is an output; the flags it changes are
