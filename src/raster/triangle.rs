@@ -108,10 +108,32 @@ pub struct TriangleSpans {
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 pub(crate) struct Runs {
+    #[cfg(not(fixed3d_thumb2))]
     pub(crate) edges: [EdgeWalk; 3],
+    #[cfg(fixed3d_thumb2)]
+    pub(crate) edges: RunEdges,
     pub(crate) upper: u32,
     pub(crate) rows: u32,
     pub(crate) lower_is_left: bool,
+}
+
+/// [`Runs`]' edges on Cortex-M3/M4 with the `asm` feature, as `target::thumb2::triangle_runs`
+/// writes them and its row loop reads them: each the walk of a [`DivideStepper`] with a base
+/// of 0 (its numerator signed, see `triangle_runs`), as words: the left and right edges'
+/// numerators, then their steps, then their denominators (the row loop loads all six with one
+/// `ldm` and stores both numerators back with one `strd`), then the lower short edge's
+/// numerator, step and denominator.
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+#[derive(Clone, Copy, Debug)]
+#[repr(C)]
+pub(crate) struct RunEdges([u32; 9]);
+
+#[cfg(all(feature = "asm", fixed3d_thumb2))]
+impl RunEdges {
+    /// The bytes from an edge's word to the right edge's (its numerator's from the left's).
+    pub(crate) const RIGHT: usize = 4;
+    /// The lower short edge's offset in bytes (its numerator, then its step and denominator).
+    pub(crate) const LOWER: usize = 24;
 }
 
 /// The pixels a triangle covers, as spans clipped to `clip`, by the top-left rule (see the

@@ -15,15 +15,16 @@ use super::thumb2 as core_rows;
 #[cfg(target_arch = "x86_64")]
 use super::x86_64 as core_rows;
 use crate::pipeline::Stats;
-#[cfg(not(fixed3d_thumb2))]
-use crate::raster::TriangleRows;
-use crate::raster::{columns_bound, EdgeWalk, Runs};
+use crate::raster::{columns_bound, Runs};
 #[cfg(fixed3d_thumb2)]
-use crate::raster::{within_columns, ScreenPoint};
+use crate::raster::{within_columns, RunEdges, ScreenPoint};
+#[cfg(not(fixed3d_thumb2))]
+use crate::raster::{EdgeWalk, TriangleRows};
 
 /// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
-/// steps; on ARMv7-M its numerator, step, denominator and base, which `thumb2::triangle_runs`
-/// writes as a signed numerator and a base of 0; on x86-64 its walk and step).
+/// steps; on x86-64 its walk and step; on ARMv7-M the edges' words are interleaved, see
+/// `RunEdges`).
+#[cfg(not(fixed3d_thumb2))]
 pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 
 /// What a row loop in assembly reads and writes, each field at its `offset_of!` (which the
@@ -39,7 +40,8 @@ pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 /// - `stride` is `2 · width`, `end` is `row + upper · stride` with `1 ≤ runs.upper ≤
 ///   runs.rows`, and `last` is `row + rows · stride`;
 /// - `slot` is the offset of the edge the lower short edge replaces: 0 (left) or one edge's
-///   size (right);
+///   size (right; on ARMv7-M, whose edges' words interleave, the offset of the right edge's
+///   first word, `RunEdges::RIGHT`);
 /// - `bits` holds the two bytes of a valid colour of the buffer's type;
 /// - called without the clamps (`clamp` false), every row's span ends lie in `0..=width`
 ///   before any clamp (`within_columns`).
@@ -186,7 +188,7 @@ pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWor
     // field but the seven `run_block` writes holds a valid value, as it requires.
     unsafe {
         let lower_is_left = addr_of!((*block).runs.lower_is_left).read();
-        addr_of_mut!((*block).slot).write(if lower_is_left { 0 } else { EDGE });
+        addr_of_mut!((*block).slot).write(if lower_is_left { 0 } else { RunEdges::RIGHT });
         addr_of_mut!((*block).step_x).write(walk.step_x.to_i32());
         addr_of_mut!((*block).step_y).write(walk.step_y.to_i32());
         addr_of_mut!((*block).row_z).write(walk.row.to_i32());

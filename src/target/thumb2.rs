@@ -23,7 +23,7 @@
 //! block of assembly. A row takes 20 instructions (each edge's end by one division of its
 //! numerator, the depth walk and the row address; 4 more to clamp the span to the target's
 //! columns, for a triangle that crosses its left or right side), 4 more to enter a span
-//! (since then 17 a row without the clamps, see below, and 6 to enter a span with pairs),
+//! (since then 13 a row without the clamps, see below, and 6 to enter a span with pairs),
 //! where the compiler's row loop took about 49, moving the row's state between registers and
 //! the stack around the pixel loop; here the edges and the constants are read in pairs from
 //! one block in memory. Its set-up takes about 60 instructions a triangle more than the
@@ -48,6 +48,14 @@
 //! reference frame 2.8% fewer instructions (in two steps, the first folding only bases from 0
 //! up). The row loop without the clamps keeps the run's end in the register the clamped loop
 //! gives the width: one load a row fewer, 0.6% (with the edges, 1.097 M → 1.059 M).
+//!
+//! The edges' words interleave ([`RunEdges`]: both numerators, both steps, both
+//! denominators, then the lower edge's), so that a row loads both edges with one `ldm` and
+//! stores both numerators back with one `strd`: 6 instructions for both span ends where two
+//! `ldrd`s, two loads, two additions, two stores and the divisions took 10. A row takes 13
+//! instructions (18 clamped), the lower edge's switch one more; the reference frame on the
+//! Cortex-M4F 2.9% fewer instructions (1.059 M → 1.029 M), 32 bytes less flash. `ldm` wants
+//! its registers in ascending order, so the row loop names r0 to r5 itself.
 //!
 //! Both loops compute exactly what the Rust loops compute: the same span ends (divisions of
 //! numerators with the same quotients, clamped to the same columns, or already within them), the
@@ -91,42 +99,44 @@
 use core::mem::{align_of, offset_of, size_of};
 
 use super::asm_faces::FrontFaces;
-use super::asm_rows::{RowBlock, EDGE};
+use super::asm_rows::RowBlock;
 use super::depth::{DepthTest, FragmentCount, RoundedRows, LOOP_HALF_STEP};
 use super::surface::ScreenTriangle;
 use crate::math::{Mat4, Vec3};
 use crate::pipeline::{FaceStop, ScreenVertex};
-use crate::raster::{Runs, ScreenPoint};
+use crate::raster::{RunEdges, Runs, ScreenPoint};
 
 /// One pixel of `pixels!` (its arguments), before the index steps: the depth from the walk,
 /// which steps, tested against the stored one, both stores where the fragment wins.
 #[rustfmt::skip]
 macro_rules! one_pixel {
-    ($z:literal, $o:literal, $st:literal, $it:literal, $pass:literal) => {
+    ([$z:literal, $o:literal, $st:literal, $d:literal, $c:literal], $it:literal, $pass:literal) => {
         concat!(
-            "lsr {", $z, "}, {acc}, #15\n",
-            "ldrh {", $o, "}, [{d}, {i}, lsl #1]\n",
-            "add {acc}, {", $st, "}\n",
-            "cmp {", $z, "}, {", $o, "}\n",
+            "lsr ", $z, ", {acc}, #15\n",
+            "ldrh ", $o, ", [", $d, ", {i}, lsl #1]\n",
+            "add {acc}, ", $st, "\n",
+            "cmp ", $z, ", ", $o, "\n",
             $it, " ", $pass, "\n",
-            "strh", $pass, " {", $z, "}, [{d}, {i}, lsl #1]\n",
-            "strh", $pass, " {col}, [{c}, {i}, lsl #1]\n",
+            "strh", $pass, " ", $z, ", [", $d, ", {i}, lsl #1]\n",
+            "strh", $pass, " {col}, [", $c, ", {i}, lsl #1]\n",
         )
     };
 }
 
-/// The pixel loop's instructions as one template: from label `$l`, the depth in register
-/// `$z`, the stored depth in `$o`, the step in `$st` (the others named `acc`, `d`, `c`, `i`,
-/// `col`); `$it` the IT block (`itt`, or `itte` with the failure count), `$pass` the
-/// condition where the fragment wins (`lo`: strictly nearer; `ls`: nearer or equal), then the
-/// failure count's instruction if any. One index counts from −n up to 0 and addresses both
-/// buffers, from their cells n (d and c); the loop ends where it reaches 0.
+/// The pixel loop's instructions as one template: from label `$l`, with the registers (each
+/// as the template writes it: `{name}` for an operand, or a register's own name) of the depth
+/// `$z`, the stored depth `$o`, the step `$st`, the depth and colour cells `$d` and `$c` (and a
+/// free one `$b`, which only `pixel_pairs!` uses; the others named `acc`, `i`, `col`); `$it`
+/// the IT block (`itt`, or `itte` with the failure count), `$pass` the condition where the
+/// fragment wins (`lo`: strictly nearer; `ls`: nearer or equal), then the failure count's
+/// instruction if any. One index counts from −n up to 0 and addresses both buffers, from
+/// their cells n (`$d` and `$c`); the loop ends where it reaches 0.
 macro_rules! pixels {
-    ($l:literal, $z:literal, $o:literal, $st:literal, $it:literal, $pass:literal,
-     [$($count:literal)?]) => {
+    ($l:literal, [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal, $b:literal],
+     $it:literal, $pass:literal, [$($count:literal)?]) => {
         concat!(
             $l, ":\n",
-            one_pixel!($z, $o, $st, $it, $pass),
+            one_pixel!([$z, $o, $st, $d, $c], $it, $pass),
             $($count, "\n",)?
             "adds {i}, {i}, #1\n",
             "bne ", $l, "b",
@@ -135,8 +145,8 @@ macro_rules! pixels {
 }
 
 /// The row loop's pixels two at a time, for uncounted fragments on cores with the DSP
-/// extension (Cortex-M4 and M7): the same arguments as `pixels!` (the count none), the row
-/// loop's `b` free for the flags' result. A span of odd length takes its first pixel as
+/// extension (Cortex-M4 and M7): the same arguments as `pixels!` (the count none), `$b` for
+/// the flags' result. A span of odd length takes its first pixel as
 /// `pixels!` does (then ends if it had one); each pair then takes both depths in one word
 /// (the second's from the walk's next value, bits 15 to 30 into the high half by `pkhbt`),
 /// both stored depths in one (a word load at any halfword: ARMv7-M loads and stores words
@@ -146,38 +156,40 @@ macro_rules! pixels {
 /// fragment that loses writes back the cells' own bytes.
 #[cfg(fixed3d_dsp)]
 macro_rules! pixel_pairs {
-    ($l:literal, $z:literal, $o:literal, $st:literal, $it:literal, "lo", []) => {
-        pixel_pairs!(@ $l, $z, $o, $st, $it, "lo",
-            concat!("usub16 {b}, {", $z, "}, {", $o, "}\n"),
-            concat!("sel {", $z, "}, {", $o, "}, {", $z, "}\n"),
-            concat!("sel {", $o, "}, {", $o, "}, {col}\n"))
+    ($l:literal, [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal, $b:literal],
+     $it:literal, "lo", []) => {
+        pixel_pairs!(@ [$z, $o, $st, $d, $c], $it, "lo",
+            concat!("usub16 ", $b, ", ", $z, ", ", $o, "\n"),
+            concat!("sel ", $z, ", ", $o, ", ", $z, "\n"),
+            concat!("sel ", $o, ", ", $o, ", {col}\n"))
     };
-    ($l:literal, $z:literal, $o:literal, $st:literal, $it:literal, "ls", []) => {
-        pixel_pairs!(@ $l, $z, $o, $st, $it, "ls",
-            concat!("usub16 {b}, {", $o, "}, {", $z, "}\n"),
-            concat!("sel {", $z, "}, {", $z, "}, {", $o, "}\n"),
-            concat!("sel {", $o, "}, {col}, {", $o, "}\n"))
+    ($l:literal, [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal, $b:literal],
+     $it:literal, "ls", []) => {
+        pixel_pairs!(@ [$z, $o, $st, $d, $c], $it, "ls",
+            concat!("usub16 ", $b, ", ", $o, ", ", $z, "\n"),
+            concat!("sel ", $z, ", ", $z, ", ", $o, "\n"),
+            concat!("sel ", $o, ", {col}, ", $o, "\n"))
     };
-    (@ $l:literal, $z:literal, $o:literal, $st:literal, $it:literal, $pass:literal,
-     $flags:expr, $depths:expr, $colors:expr) => {
+    (@ [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal], $it:literal,
+     $pass:literal, $flags:expr, $depths:expr, $colors:expr) => {
         concat!(
             "tst {i}, #1\n",
             "beq 6f\n",
-            one_pixel!($z, $o, $st, $it, $pass),
+            one_pixel!([$z, $o, $st, $d, $c], $it, $pass),
             "adds {i}, {i}, #1\n",
             "beq 7f\n",
             "6:\n",
-            "lsr {", $z, "}, {acc}, #15\n",
-            "add {acc}, {", $st, "}\n",
-            "pkhbt {", $z, "}, {", $z, "}, {acc}, lsl #1\n",
-            "add {acc}, {", $st, "}\n",
-            "ldr {", $o, "}, [{d}, {i}, lsl #1]\n",
+            "lsr ", $z, ", {acc}, #15\n",
+            "add {acc}, ", $st, "\n",
+            "pkhbt ", $z, ", ", $z, ", {acc}, lsl #1\n",
+            "add {acc}, ", $st, "\n",
+            "ldr ", $o, ", [", $d, ", {i}, lsl #1]\n",
             $flags,
             $depths,
-            "str {", $z, "}, [{d}, {i}, lsl #1]\n",
-            "ldr {", $o, "}, [{c}, {i}, lsl #1]\n",
+            "str ", $z, ", [", $d, ", {i}, lsl #1]\n",
+            "ldr ", $o, ", [", $c, ", {i}, lsl #1]\n",
             $colors,
-            "str {", $o, "}, [{c}, {i}, lsl #1]\n",
+            "str ", $o, ", [", $c, ", {i}, lsl #1]\n",
             "adds {i}, {i}, #2\n",
             "bne 6b\n",
             "7:",
@@ -201,7 +213,7 @@ macro_rules! uncounted_pixels {
 macro_rules! span_loop {
     ($it:literal, $pass:literal, [$($count:literal)?], $($operands:tt)*) => {
         core::arch::asm!(
-            pixels!("2", "z", "o", "st", $it, $pass, [$($count)?]),
+            pixels!("2", ["{z}", "{o}", "{st}", "{d}", "{c}", ""], $it, $pass, [$($count)?]),
             $($operands)*
         )
     };
@@ -275,26 +287,33 @@ pub(super) fn solid_span<C: Copy, T: DepthTest, K: FragmentCount>(
 /// lie within it), `$it` and `$pass` as in `pixels!`, then the count's instructions before the
 /// pixel loop, in it, and after it (none uncounted), then the block's address and the counts'
 /// operands if any. The block's fields at their offsets (`const` operands), first the first
-/// row's colour address, the depth walk and the colour; an edge's numerator and step as a
-/// pair, its denominator (and base, 0 from `triangle_runs`: not read) as another. A row: each
-/// edge's span end (one signed division of its numerator, which then steps), the span
-/// clamped to `0..width` if `clamped`, and where it holds pixels the depth at its first one
-/// and the pixel loop; then the depth walk and the row address step down. At the end of the
-/// first run the lower short edge takes its side, and the second run goes on to `last`.
+/// row's colour address, the depth walk and the colour. A row: both edges' numerators, steps
+/// and denominators by one `ldm` (the layout of [`RunEdges`]), each edge's span end by one
+/// signed division, both numerators stepped and stored back as a pair, the span clamped to
+/// `0..width` if `clamped`, and where it holds pixels the depth at its first one and the
+/// pixel loop; then the depth walk and the row address step down. At the end of the first run
+/// the lower short edge takes its side, and the second run goes on to `last`.
+///
+/// The `ldm` needs its six registers in ascending order: r0 to r5, named in the template
+/// itself (an operand the compiler places cannot be), each with one use: r0 and r1 the
+/// numerators, then temporaries (`a`, `b` before); r2 and r3 the steps, then the span's cells
+/// (`c`, `d`); r4 and r5 the denominators, then the span's ends (`x0`, `x1`). The other seven
+/// (the block, the row's colour address and depth, the colour, the index, the depth walk,
+/// the run's end or the width) take the registers left (r6, r8 to r12, lr).
 macro_rules! rows_loop {
     // x0 = max(x0, 0), x1 = min(x1, width), the width in a register of its own (the M4's
     // frame 0.44% fewer instructions than loaded each row); the run's end loaded from the
     // block each row.
     (clamped [$($width:tt)*] $($rest:tt)*) => {
-        rows_loop!(["bic {x0}, {x0}, {x0}, asr #31", "cmp {x1}, {w}", "it gt",
-                    "movgt {x1}, {w}"], [], ["ldr {a}, [{s}, #{end}]", "cmp {cptr}, {a}"],
-                   ["str {a}, [{s}, #{end}]"] [w = in(reg) $($width)*,] $($rest)*)
+        rows_loop!(["bic r4, r4, r4, asr #31", "cmp r5, {w}", "it gt",
+                    "movgt r5, {w}"], [], ["ldr r0, [{s}, #{end}]", "cmp {cptr}, r0"],
+                   ["str r0, [{s}, #{end}]"] [w = in(reg) $($width)*,] $($rest)*)
     };
     // The run's end in the register the width takes in the other loop (the M4's frame 0.6%
     // fewer instructions).
     (within [$($width:tt)*] $($rest:tt)*) => {
         rows_loop!([], ["ldr {e}, [{s}, #{end}]"], ["cmp {cptr}, {e}"],
-                   ["mov {e}, {a}"] [e = out(reg) _,] $($rest)*)
+                   ["mov {e}, r0"] [e = out(reg) _,] $($rest)*)
     };
     ([$($clamp:literal),*],
      [$($end_init:literal)?], [$($end_cmp:literal),*], [$set_end:literal]
@@ -310,55 +329,52 @@ macro_rules! rows_loop {
             "orr {col}, {col}, {col}, lsl #16",
             $($end_init,)?
             "2:",
-            // Left end: numerator / denominator, signed; the numerator steps.
-            "ldrd {a}, {b}, [{s}]",
-            "add {c}, {a}, {b}",
-            "str {c}, [{s}]",
-            "ldr {b}, [{s}, #8]",
-            "sdiv {x0}, {a}, {b}",
-            // Right end.
-            "ldrd {a}, {b}, [{s}, #{right}]",
-            "add {c}, {a}, {b}",
-            "str {c}, [{s}, #{right}]",
-            "ldr {b}, [{s}, #{right} + 8]",
-            "sdiv {x1}, {a}, {b}",
+            // Both ends: numerator / denominator, signed; the numerators step.
+            "ldm {s}, {{r0, r1, r2, r3, r4, r5}}",
+            "sdiv r4, r0, r4",
+            "sdiv r5, r1, r5",
+            "add r0, r2",
+            "add r1, r3",
+            "strd r0, r1, [{s}]",
             // The clamps if any; no pixels unless x0 < x1 (signed).
             $($clamp,)*
-            "subs {i}, {x0}, {x1}",
+            "subs {i}, r4, r5",
             "bge 4f",
             // The depth at x0; both buffers addressed from their cell x1, i from x0 − x1 to 0.
-            "ldrd {a}, {b}, [{s}, #{step_x}]",
-            "mla {acc}, {a}, {x0}, {rowz}",
-            "add {c}, {cptr}, {x1}, lsl #1",
-            "add {d}, {c}, {b}",
+            "ldrd r0, r1, [{s}, #{step_x}]",
+            "mla {acc}, r0, r4, {rowz}",
+            "add r2, {cptr}, r5, lsl #1",
+            "add r3, r2, r1",
             $($before,)*
-            // The pixel loop: the depth in x0, the stored depth in x1, the step in a.
-            $pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),
+            // The pixel loop: the depth in r4, the stored depth in r5, the step in r0.
+            $pixels!("3", ["r4", "r5", "r0", "r3", "r2", "r1"], $it, $pass, [$($count)?]),
             $($after,)?
             "4:",
             // Next row: the depth walk and the row address; the run ends at `end`.
-            "ldrd {a}, {b}, [{s}, #{step_y}]",
-            "add {rowz}, {a}",
-            "add {cptr}, {b}",
+            "ldrd r0, r1, [{s}, #{step_y}]",
+            "add {rowz}, r0",
+            "add {cptr}, r1",
             $($end_cmp,)*
             "bne 2b",
-            // The last run ends at `last`; before it, the lower short edge takes its side.
-            "ldrd {a}, {b}, [{s}, #{last}]",
-            "cmp {cptr}, {a}",
+            // The last run ends at `last`; before it, the lower short edge takes its side
+            // (`slot`: its numerator's offset, and its step and denominator two and four
+            // words on).
+            "ldrd r0, r1, [{s}, #{last}]",
+            "cmp {cptr}, r0",
             "beq 5f",
             $set_end,
-            "add {b}, {s}",
-            "ldrd {c}, {d}, [{s}, #{lower}]",
-            "strd {c}, {d}, [{b}]",
-            "ldrd {c}, {d}, [{s}, #{lower} + 8]",
-            "strd {c}, {d}, [{b}, #8]",
+            "add r1, {s}",
+            "ldrd r2, r3, [{s}, #{lower}]",
+            "str r2, [r1]",
+            "str r3, [r1, #8]",
+            "ldr r2, [{s}, #{lower} + 8]",
+            "str r2, [r1, #16]",
             "b 2b",
             "5:",
             s = in(reg) $block as *mut RowBlock, cptr = out(reg) _, rowz = out(reg) _,
-            col = out(reg) _, a = out(reg) _, b = out(reg) _,
-            c = out(reg) _, d = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
-            acc = out(reg) _,
-            right = const EDGE, lower = const 2 * EDGE,
+            col = out(reg) _, i = out(reg) _, acc = out(reg) _,
+            out("r0") _, out("r1") _, out("r2") _, out("r3") _, out("r4") _, out("r5") _,
+            lower = const RunEdges::LOWER,
             step_x = const offset_of!(RowBlock, step_x),
             step_y = const offset_of!(RowBlock, step_y), end = const offset_of!(RowBlock, end),
             last = const offset_of!(RowBlock, last), row = const offset_of!(RowBlock, row),
@@ -370,7 +386,7 @@ macro_rules! rows_loop {
     };
 }
 
-// The edges lie at the block's start, one edge's size apart.
+// The edges' words lie at the block's start (`RunEdges`).
 const _: () = assert!(offset_of!(RowBlock, runs) == 0 && offset_of!(Runs, edges) == 0);
 
 /// This core has loops without the clamps to the columns, for triangles within them (see
@@ -396,13 +412,13 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     //   c + 2i and d + 2i only while i ≤ −2, so both halves are cells of the span; ARMv7-M
     //   loads and stores words at any halfword address in normal memory, as the buffers
     //   are.) It also reads `block` (borrowed mutably), and writes its
-    //   edges' numerators (the first word of the first two edges), the lower edge over the
-    //   one at `slot` (0 or one edge's size), `end` (with the clamps: without them the run's
-    //   end waits in a register) and, counted, its counts; nothing else,
-    //   and no stack (`nostack`).
+    //   edges' numerators (its first two words), the lower edge's three words over those of
+    //   the edge at `slot` (0 or 4: the words at slot, slot + 8 and slot + 16 of `RunEdges`,
+    //   all within its nine), `end` (with the clamps: without them the run's end waits in a
+    //   register) and, counted, its counts; nothing else, and no stack (`nostack`).
     // - Values: a depth cell gets a u16, a colour cell `bits`, the two bytes of a valid colour
-    //   unchanged, or (in a pair) its own two bytes; an edge gets a copy of a valid edge or a
-    //   new numerator (any u32), `end` the
+    //   unchanged, or (in a pair) its own two bytes; an edge's words get copies of the lower
+    //   edge's or a new numerator (any u32), `end` the
     //   address `last`, the counts u32s.
     // - Division: every denominator is 16·dy of an edge with rows, positive and below 2²⁰
     //   (`triangle_runs`), so never 0, and no quotient overflows (only −2³¹ / −1 would).
@@ -419,14 +435,14 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
             ($clamp:ident $width:tt) => {
                 match (T::OR_EQUAL, K::COUNTED) {
                     (false, true) => rows_loop!($clamp $width "itte", "lo",
-                        ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
-                         "str {x0}, [{s}, #{frag}]"],
-                        ["addhs {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"], pixels;
+                        ["ldrd r4, r1, [{s}, #{frag}]", "sub r4, r4, {i}",
+                         "str r4, [{s}, #{frag}]"],
+                        ["addhs r1, r1, #1"], ["str r1, [{s}, #{frag} + 4]"], pixels;
                         block, frag = const offset_of!(RowBlock, fragments)),
                     (true, true) => rows_loop!($clamp $width "itte", "ls",
-                        ["ldrd {x0}, {b}, [{s}, #{frag}]", "sub {x0}, {x0}, {i}",
-                         "str {x0}, [{s}, #{frag}]"],
-                        ["addhi {b}, {b}, #1"], ["str {b}, [{s}, #{frag} + 4]"], pixels;
+                        ["ldrd r4, r1, [{s}, #{frag}]", "sub r4, r4, {i}",
+                         "str r4, [{s}, #{frag}]"],
+                        ["addhi r1, r1, #1"], ["str r1, [{s}, #{frag} + 4]"], pixels;
                         block, frag = const offset_of!(RowBlock, fragments)),
                     (false, false) => {
                         rows_loop!($clamp $width "itt", "lo", [], [], [], uncounted_pixels; block)
@@ -445,11 +461,12 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
     }
 }
 
-/// One edge of [`triangle_runs`]: the [`DivideStepper`](crate::raster::DivideStepper) of the
-/// edge from the point of key `$p` to that of key `$q` (sorted: `p.y ≤ q.y`) at the row whose
-/// sample line is `$r` (16·row + 8), stored at `$off` from the address `$dst` holds after the
-/// instructions `$to_dst` (which may use `ye`, free by then), as `edge_by_division` computes
-/// it with its base `b` taken as 0: `dx = q.x − p.x`, `dy = q.y − p.y`, the numerator
+/// One edge of [`triangle_runs`]: the walk of a [`DivideStepper`](crate::raster::DivideStepper)
+/// of the edge from the point of key `$p` to that of key `$q` (sorted: `p.y ≤ q.y`) at the row
+/// whose sample line is `$r` (16·row + 8), its numerator in `t2`, its step in `t3` and its
+/// denominator in `t4`, which the instructions `$store` store (they may use `ye`, free by
+/// then; see [`RunEdges`] for where), as `edge_by_division` computes it with its base `b`
+/// taken as 0: `dx = q.x − p.x`, `dy = q.y − p.y`, the numerator
 /// `(p.x − 8)·dy + dx·t + D − 1` (as `p.x·dy + dx·t + 8·dy − 1`) with `t = r − p.y` and
 /// `D = 16·dy`, the step `16·dx`, modulo 2³². That is `N + D − 1` for the edge's own numerator
 /// `N` (`ceil(N / D)` its span end on the row), and it lies in a word, signed, on every row
@@ -459,7 +476,7 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
 /// more; toward zero, at most one above the floor and never above 0, where it is negative.
 /// Temporaries `t1` to `t4` and `ye`.
 macro_rules! edge {
-    ($p:literal, $q:literal, $r:literal, [$($to_dst:literal),*], $dst:literal, $off:literal) => {
+    ($p:literal, $q:literal, $r:literal, [$($store:literal),*]) => {
         concat!(
             "and {t1}, {", $q, "}, #3\n",
             "ldr {t1}, [{p}, {t1}, lsl #3]\n",
@@ -474,13 +491,10 @@ macro_rules! edge {
             "mla {t2}, {t3}, {ye}, {t2}\n",
             "add {t2}, {t2}, {t4}, lsl #3\n",
             "sub {t2}, {t2}, #1\n",
-            // D, the step, the base 0.
+            // D and the step.
             "lsl {t4}, {t4}, #4\n",
             "lsl {t3}, {t3}, #4\n",
-            "mov {t1}, #0\n",
-            $($to_dst, "\n",)*
-            "strd {t2}, {t3}, [{", $dst, "}, #", $off, "]\n",
-            "strd {t4}, {t1}, [{", $dst, "}, #", $off, " + 8]\n",
+            $($store, "\n",)*
         )
     };
 }
@@ -496,7 +510,7 @@ macro_rules! swap_if_greater {
             "movgt {t1}, {", $a, "}\n",
             "movgt {", $a, "}, {", $b, "}\n",
             "movgt {", $b, "}, {t1}\n",
-            "eorgt {side}, {side}, #16\n",
+            "eorgt {side}, {side}, #4\n",
         )
     };
 }
@@ -558,17 +572,17 @@ pub(super) unsafe fn triangle_runs(
     runs: *mut Runs,
 ) -> i32 {
     let mut y = y0;
-    // The long edge's side as 16 (left) or 0, which each swap of the sort turns.
-    let side: u32 = if area_positive { 16 } else { 0 };
+    // The long edge's side as 4 (left: its words one word before the right's) or 0, which
+    // each swap of the sort turns.
+    let side: u32 = if area_positive { 4 } else { 0 };
     // SAFETY:
     // - Memory: the block reads the six words of `p` (borrowed; at offsets 0 to 20 by its
     //   layout, asserted below) and writes words of `runs` (valid for writes and unshared, the
-    //   caller's contract): the three edges at 0, 16 and 32, `upper`, `rows`, and the byte
+    //   caller's contract): the edges' nine words (`RunEdges`), `upper`, `rows`, and the byte
     //   `lower_is_left`; nothing else, and no stack (`nostack`). Point reads are `p + 8·i`
     //   for an index `i = key & 3` of keys made from the indices 0, 1 and 2 and only moved
     //   about.
-    // - Values: a `bool` gets 0 or 1; `u32`s any word; an edge (`DivideStepper`) any words
-    //   but its denominator, which is positive (see above), as its `NonZeroU32` requires.
+    // - Values: a `bool` gets 0 or 1; `u32`s (the edges' words among them) any word.
     // - Registers: every register the block writes is an output; the flags it changes are
     //   not preserved, as asm! allows by default.
     unsafe {
@@ -600,7 +614,7 @@ pub(super) unsafe fn triangle_runs(
             "str {t2}, [{s}, #{rows}]",
             "ble 9f",
             "str {t2}, [{s}, #{upper}]",
-            "ubfx {t1}, {side}, #4, #1",
+            "ubfx {t1}, {side}, #2, #1",
             "eor {t1}, {t1}, #1",
             "strb {t1}, [{s}, #{lower_is_left}]",
             // The split row.
@@ -618,11 +632,10 @@ pub(super) unsafe fn triangle_runs(
             "it ne",
             "cmpne {t1}, {ye}",
             "bne 3f",
-            // No split: the zero edge in the third place, y as 16·y + 8.
+            // No split: zeros for the lower edge (never read), y as 16·y + 8.
             "mov {t2}, #0",
-            "mov {t3}, #1",
-            "strd {t2}, {t2}, [{s}, #32]",
-            "strd {t3}, {t2}, [{s}, #40]",
+            "strd {t2}, {t2}, [{s}, #{lower}]",
+            "str {t2}, [{s}, #{lower} + 8]",
             "lsl {y}, {y}, #4",
             "add {y}, {y}, #8",
             "b 4f",
@@ -632,18 +645,23 @@ pub(super) unsafe fn triangle_runs(
             "str {t2}, [{s}, #{upper}]",
             "lsl {y}, {t1}, #4",
             "add {y}, {y}, #8",
-            edge!("kb", "kc", "y", [], "s", "32"),
+            edge!("kb", "kc", "y", ["strd {t2}, {t3}, [{s}, #{lower}]",
+                                    "str {t4}, [{s}, #{lower} + 8]"]),
             "ldr {t1}, [{s}, #{upper}]",
             "sub {y}, {y}, {t1}, lsl #4",
             // The long edge on its side (left: offset 0 when bit 4 of `side` is set) and the
             // short one on the other.
             "4:",
-            edge!("ka", "kc", "y", ["and {ye}, {side}, #16", "sub {ye}, {s}, {ye}"], "ye", "16"),
+            edge!("ka", "kc", "y", ["and {ye}, {side}, #4", "sub {ye}, {s}, {ye}",
+                                    "str {t2}, [{ye}, #4]", "str {t3}, [{ye}, #12]",
+                                    "str {t4}, [{ye}, #20]"]),
             "tst {side}, #2",
             "itt ne",
             "movne {ka}, {kb}",
             "movne {kb}, {kc}",
-            edge!("ka", "kb", "y", ["and {ye}, {side}, #16", "add {ye}, {s}, {ye}"], "ye", "0"),
+            edge!("ka", "kb", "y", ["and {ye}, {side}, #4", "add {ye}, {s}, {ye}",
+                                    "str {t2}, [{ye}]", "str {t3}, [{ye}, #8]",
+                                    "str {t4}, [{ye}, #16]"]),
             "sub {y}, {y}, #8",
             "asr {y}, {y}, #4",
             "9:",
@@ -657,6 +675,7 @@ pub(super) unsafe fn triangle_runs(
             rows = const offset_of!(Runs, rows),
             upper = const offset_of!(Runs, upper),
             lower_is_left = const offset_of!(Runs, lower_is_left),
+            lower = const RunEdges::LOWER,
             options(nostack),
         );
     }
@@ -860,11 +879,11 @@ pub(super) fn depth_walk(triangle: &ScreenTriangle, y: i32) -> Option<RoundedRow
     })
 }
 
-// The layouts `triangle_runs` reads and writes: points of two words (x, y), edges of four
-// words one after the other from the runs' start.
+// The layouts `triangle_runs` reads and writes: points of two words (x, y), the edges' nine
+// words at the runs' start.
 const _: () = {
     assert!(size_of::<ScreenPoint>() == 8 && offset_of!(ScreenPoint, y) == 4);
-    assert!(offset_of!(ScreenPoint, x) == 0 && EDGE == 16);
+    assert!(offset_of!(ScreenPoint, x) == 0 && size_of::<RunEdges>() == 36);
 };
 
 // The layout `depth_walk` reads: three points of two words, three words of depth, the area's
