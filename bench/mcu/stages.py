@@ -45,8 +45,9 @@ CUTS = [
     ), (
         # The same feature's row loop: each span entered, no pixel loop.
         "src/target/thumb2.rs",
-        '            $pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),',
-        '            "b 4f",\n            $pixels!("3", "x0", "x1", "a", $it, $pass, [$($count)?]),',
+        '            $pixels!("3", ["r4", "r5", "r0", "r3", "r2", "r1"], $it, $pass, [$($count)?]),',
+        '            "b 4f",\n'
+        '            $pixels!("3", ["r4", "r5", "r0", "r3", "r2", "r1"], $it, $pass, [$($count)?]),',
     ), (
         # The M0's row loop in Thumb-1.
         "src/target/thumb1.rs",

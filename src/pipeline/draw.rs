@@ -115,10 +115,12 @@ struct ObjectSetup<'o, const N: usize> {
     /// times a scale: face normals then need no normal matrix.
     model_lighting: Option<Lighting<N>>,
     /// The mesh's kept face normals, where the shading reads them ([`FlatKept`]): lit in model
-    /// space, by [`Normalize::Newton`] (what they keep).
+    /// space, by [`Normalize::Newton`] (what they keep); none otherwise. An empty slice rather
+    /// than `None`: a front face's normal is one bounds test (the Cortex-M4's frame 0.28% fewer
+    /// instructions, the M0's 0.08%, x86-64's 0.08%).
     ///
     /// [`FlatKept`]: crate::shade::FlatKept
-    face_normals: Option<&'o [FaceNormal]>,
+    face_normals: &'o [FaceNormal],
     /// Every vertex lies inside every clip plane: no triangle needs its outcodes read.
     inside: bool,
     /// The target holds a band of the frame's rows, not all of them (see `fill_face`).
@@ -205,7 +207,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             let face_normals = match model_lighting {
                 Some(_) if newton && S::KEPT_FACE_NORMALS => object.mesh.face_normals(),
                 _ => None,
-            };
+            }
+            .unwrap_or(&[]);
             ObjectSetup {
                 object,
                 vertices,
@@ -376,9 +379,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// Triangle `k`'s kept face normal where the shading reads it (none otherwise: a constant
     /// for the others, whose code then holds nothing of it).
     fn face_normal<'o>(setup: &ObjectSetup<'o, N>, k: usize) -> Option<&'o FaceNormal> {
-        match setup.face_normals {
-            Some(n) if S::KEPT_FACE_NORMALS => n.get(k),
-            _ => None,
+        if S::KEPT_FACE_NORMALS {
+            setup.face_normals.get(k)
+        } else {
+            None
         }
     }
 
