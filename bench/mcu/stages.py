@@ -90,7 +90,7 @@ CUTS = [
         "            #[allow(unsafe_code)]\n"
         "            {\n"
         "                let mut runs = core::mem::MaybeUninit::<crate::raster::Runs>::uninit();\n"
-        "                let (p, up) = (&triangle.p, triangle.area > 0);\n"
+        "                let (p, up) = (&triangle.p, triangle.area);\n"
         "                let rows = (self.clip.y0, self.clip.y1);\n"
         "                let out = runs.as_mut_ptr();\n"
         f"                {BB}(unsafe {{ super::thumb2::triangle_runs(p, up, rows, out) }});\n"

@@ -170,7 +170,7 @@ pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWor
     // are written in place, and read only once written: `runs.rows` by `triangle_runs`
     // always, `runs.lower_is_left` by it whenever rows are left (its contract).
     let (y, rows) = unsafe {
-        let y = core_rows::triangle_runs(p, area > 0, (y0, y1), addr_of_mut!((*block).runs));
+        let y = core_rows::triangle_runs(p, area, (y0, y1), addr_of_mut!((*block).runs));
         (y, addr_of!((*block).runs.rows).read())
     };
     if rows == 0 {

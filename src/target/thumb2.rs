@@ -32,7 +32,10 @@
 //!
 //! The set-up of those rows ([`triangle_runs`]): the sort of the corners, the rows and the three
 //! edges of a triangle written into the same block, about 150 instructions a triangle in one block
-//! of assembly (about 139 since its edges have no base, below), where the compiler's code took
+//! of assembly (about 139 since its edges have no base, below; about 120 since the corners' x
+//! are loaded once for all three edges and the long edge's side comes from the area's high
+//! word in the block: the reference frame on the Cortex-M4F 0.28% and 0.50% fewer
+//! instructions, 1.026 M → 1.023 M → 1.018 M), where the compiler's code took
 //! about as many but, with the depth walk's set-up
 //! beside it, kept more values on the stack: with it the reference frame on the Cortex-M4F took
 //! 1.9% fewer instructions (1.301 M → 1.276 M), for about 1.1 KB of flash (the depth walk's set-up
@@ -462,8 +465,9 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
 }
 
 /// One edge of [`triangle_runs`]: the walk of a [`DivideStepper`](crate::raster::DivideStepper)
-/// of the edge from the point of key `$p` to that of key `$q` (sorted: `p.y ≤ q.y`) at the row
-/// whose sample line is `$r` (16·row + 8), its numerator in `t2`, its step in `t3` and its
+/// of the edge from the point of key `$p` and x `$xp` to that of key `$q` and x `$xq` (sorted:
+/// `p.y ≤ q.y`) at the row whose sample line is `$r` (16·row + 8), its numerator in `t2`,
+/// its step in `t3` and its
 /// denominator in `t4`, which the instructions `$store` store (they may use `ye`, free by
 /// then; see [`RunEdges`] for where), as `edge_by_division` computes it with its base `b`
 /// taken as 0: `dx = q.x − p.x`, `dy = q.y − p.y`, the numerator
@@ -474,19 +478,15 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
 /// corners within ±2¹⁵), and `D` is below 2²⁰, so within ±(2¹¹ + 1)·(2²⁰ − 512), inside
 /// ±2³¹. The row loop divides it signed (`sdiv`): the floor, that end, where it is 0 or
 /// more; toward zero, at most one above the floor and never above 0, where it is negative.
-/// Temporaries `t1` to `t4` and `ye`.
+/// Temporaries `t2` to `t4` and `ye`.
 macro_rules! edge {
-    ($p:literal, $q:literal, $r:literal, [$($store:literal),*]) => {
+    ($xp:literal, $xq:literal, $p:literal, $q:literal, $r:literal, [$($store:literal),*]) => {
         concat!(
-            "and {t1}, {", $q, "}, #3\n",
-            "ldr {t1}, [{p}, {t1}, lsl #3]\n",
-            "and {t2}, {", $p, "}, #3\n",
-            "ldr {t2}, [{p}, {t2}, lsl #3]\n",
             // dx and dy; p.x·dy + dx·t + 8·dy − 1, which is (p.x − 8)·dy + dx·t + D − 1.
-            "sub {t3}, {t1}, {t2}\n",
+            "sub {t3}, {", $xq, "}, {", $xp, "}\n",
             "asr {t4}, {", $q, "}, #2\n",
             "sub {t4}, {t4}, {", $p, "}, asr #2\n",
-            "mul {t2}, {t2}, {t4}\n",
+            "mul {t2}, {", $xp, "}, {t4}\n",
             "sub {ye}, {", $r, "}, {", $p, "}, asr #2\n",
             "mla {t2}, {t3}, {ye}, {t2}\n",
             "add {t2}, {t2}, {t4}, lsl #3\n",
@@ -495,6 +495,22 @@ macro_rules! edge {
             "lsl {t4}, {t4}, #4\n",
             "lsl {t3}, {t3}, #4\n",
             $($store, "\n",)*
+        )
+    };
+}
+
+/// In [`triangle_runs`], the sorted points' x, for the edges: a's into `p` (the points'
+/// address, last used here), b's into `t1`, c's into `xc` (each at `p + 8·(key & 3)`).
+#[rustfmt::skip]
+macro_rules! sorted_xs {
+    () => {
+        concat!(
+            "and {t2}, {kc}, #3\n",
+            "ldr {xc}, [{p}, {t2}, lsl #3]\n",
+            "and {t2}, {kb}, #3\n",
+            "ldr {t1}, [{p}, {t2}, lsl #3]\n",
+            "and {t2}, {ka}, #3\n",
+            "ldr {p}, [{p}, {t2}, lsl #3]\n",
         )
     };
 }
@@ -530,12 +546,13 @@ macro_rules! first_row {
 
 /// `TriangleRows::runs` (the other cores') of [`rows_in_range`] in one block of
 /// assembly, for the points `p` (within ±[`PIPELINE_LIMIT`], a [`ScreenTriangle`]'s), whose
-/// doubled signed area is positive if `area_positive`, in the rows `y0..y1`: written into
-/// `runs`, every field of it, and the first row returned; `rows` is 0 (and nothing else
-/// written) where the triangle covers none of those rows. About 139 instructions a triangle
-/// (the sort 26, the rows 17, an edge 18; with an edge of 27, about 150, it took the
-/// reference frame 1.9% fewer instructions than the compiler's set-up, with the depth walk
-/// set up in line after it: see the module's documentation).
+/// doubled signed area `area` is not 0 (so its sign is its high word's), in the rows
+/// `y0..y1`: written into `runs`, every field of it, and the first row returned; `rows` is 0
+/// (and nothing else written) where the triangle covers none of those rows. About 120
+/// instructions a triangle (the sort 28 with the long edge's side, the rows 21, the split row
+/// 15, the corners' x 6, an edge 15 with its stores; with an edge of 27, about 150, it took
+/// the reference frame 1.9% fewer instructions than the compiler's set-up, with the depth
+/// walk set up in line after it: see the module's documentation).
 ///
 /// What it computes, step by step as the Rust does it:
 /// - The sort: keys `4·y + i` for the point `i`, sorted by three compare-and-swaps in
@@ -567,14 +584,13 @@ macro_rules! first_row {
 #[allow(unsafe_code)]
 pub(super) unsafe fn triangle_runs(
     p: &[ScreenPoint; 3],
-    area_positive: bool,
+    area: i64,
     (y0, y1): (i32, i32),
     runs: *mut Runs,
 ) -> i32 {
     let mut y = y0;
-    // The long edge's side as 4 (left: its words one word before the right's) or 0, which
-    // each swap of the sort turns.
-    let side: u32 = if area_positive { 4 } else { 0 };
+    // The area's high word: 0 or more for a positive area (it is not 0).
+    let side = (area >> 32) as i32;
     // SAFETY:
     // - Memory: the block reads the six words of `p` (borrowed; at offsets 0 to 20 by its
     //   layout, asserted below) and writes words of `runs` (valid for writes and unshared, the
@@ -587,6 +603,10 @@ pub(super) unsafe fn triangle_runs(
     //   not preserved, as asm! allows by default.
     unsafe {
         core::arch::asm!(
+            // The long edge's side as 4 (left, for a positive area: its words one word before
+            // the right's) or 0, which each swap of the sort turns.
+            "mvn {side}, {side}, asr #31",
+            "and {side}, {side}, #4",
             // Keys 4·y + i, sorted.
             "ldr {ka}, [{p}, #4]",
             "ldr {kb}, [{p}, #12]",
@@ -638,6 +658,7 @@ pub(super) unsafe fn triangle_runs(
             "str {t2}, [{s}, #{lower} + 8]",
             "lsl {y}, {y}, #4",
             "add {y}, {y}, #8",
+            sorted_xs!(),
             "b 4f",
             // A split: upper = split − y, and the lower edge at the split row.
             "3:",
@@ -645,33 +666,38 @@ pub(super) unsafe fn triangle_runs(
             "str {t2}, [{s}, #{upper}]",
             "lsl {y}, {t1}, #4",
             "add {y}, {y}, #8",
-            edge!("kb", "kc", "y", ["strd {t2}, {t3}, [{s}, #{lower}]",
-                                    "str {t4}, [{s}, #{lower} + 8]"]),
-            "ldr {t1}, [{s}, #{upper}]",
-            "sub {y}, {y}, {t1}, lsl #4",
-            // The long edge on its side (left: offset 0 when bit 4 of `side` is set) and the
-            // short one on the other.
+            sorted_xs!(),
+            edge!("t1", "xc", "kb", "kc", "y", ["strd {t2}, {t3}, [{s}, #{lower}]",
+                                                "str {t4}, [{s}, #{lower} + 8]"]),
+            "ldr {t2}, [{s}, #{upper}]",
+            "sub {y}, {y}, {t2}, lsl #4",
+            // The long edge on its side (left: one word before the right's when bit 2 of
+            // `side` is set) and the short one on the other, upper or lower.
             "4:",
-            edge!("ka", "kc", "y", ["and {ye}, {side}, #4", "sub {ye}, {s}, {ye}",
-                                    "str {t2}, [{ye}, #4]", "str {t3}, [{ye}, #12]",
-                                    "str {t4}, [{ye}, #20]"]),
+            edge!("p", "xc", "ka", "kc", "y", ["and {ye}, {side}, #4", "sub {ye}, {s}, {ye}",
+                                                "str {t2}, [{ye}, #4]", "str {t3}, [{ye}, #12]",
+                                                "str {t4}, [{ye}, #20]"]),
             "tst {side}, #2",
-            "itt ne",
-            "movne {ka}, {kb}",
-            "movne {kb}, {kc}",
-            edge!("ka", "kb", "y", ["and {ye}, {side}, #4", "add {ye}, {s}, {ye}",
-                                    "str {t2}, [{ye}]", "str {t3}, [{ye}, #8]",
-                                    "str {t4}, [{ye}, #16]"]),
+            "bne 5f",
+            edge!("p", "t1", "ka", "kb", "y", ["and {ye}, {side}, #4", "add {ye}, {s}, {ye}",
+                                                "str {t2}, [{ye}]", "str {t3}, [{ye}, #8]",
+                                                "str {t4}, [{ye}, #16]"]),
+            "b 6f",
+            "5:",
+            edge!("t1", "xc", "kb", "kc", "y", ["and {ye}, {side}, #4", "add {ye}, {s}, {ye}",
+                                                "str {t2}, [{ye}]", "str {t3}, [{ye}, #8]",
+                                                "str {t4}, [{ye}, #16]"]),
+            "6:",
             "sub {y}, {y}, #8",
             "asr {y}, {y}, #4",
             "9:",
-            p = in(reg) p.as_ptr(),
+            p = inout(reg) p.as_ptr() => _,
             s = in(reg) runs,
             side = inout(reg) side => _,
             y = inout(reg) y,
             ye = inout(reg) y1 => _,
             ka = out(reg) _, kb = out(reg) _, kc = out(reg) _,
-            t1 = out(reg) _, t2 = out(reg) _, t3 = out(reg) _, t4 = out(reg) _,
+            t1 = out(reg) _, xc = out(reg) _, t2 = out(reg) _, t3 = out(reg) _, t4 = out(reg) _,
             rows = const offset_of!(Runs, rows),
             upper = const offset_of!(Runs, upper),
             lower_is_left = const offset_of!(Runs, lower_is_left),
