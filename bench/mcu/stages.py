@@ -89,7 +89,7 @@ CUTS = [
         "            #[cfg(all(feature = \"asm\", fixed3d_thumb2))]\n"
         "            #[allow(unsafe_code)]\n"
         "            {\n"
-        "                let mut runs = core::mem::MaybeUninit::<crate::raster::Runs>::uninit();\n"
+        "                let mut runs = core::mem::MaybeUninit::<super::asm_rows::RowBlock>::uninit();\n"
         "                let (p, up) = (&triangle.p, triangle.area);\n"
         "                let rows = (self.clip.y0, self.clip.y1);\n"
         "                let out = runs.as_mut_ptr();\n"

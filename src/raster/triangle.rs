@@ -103,7 +103,8 @@ pub struct TriangleSpans {
 /// `max(left, x0)..min(right, x1)` for the clip rectangle's columns `x0..x1`, both edges stepped
 /// after each row; after the first `upper` rows (at least one; `rows` when no edge changes),
 /// `edges[2]`, the lower short edge set up at that row, takes the place of the left edge if
-/// `lower_is_left`, else the right one.
+/// `lower_is_left`, else the right one (on Cortex-M3/M4, whose edges are `RunEdges`, the
+/// assembly writes that place straight into its row loop's block instead).
 #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
@@ -114,6 +115,7 @@ pub(crate) struct Runs {
     pub(crate) edges: RunEdges,
     pub(crate) upper: u32,
     pub(crate) rows: u32,
+    #[cfg(not(fixed3d_thumb2))]
     pub(crate) lower_is_left: bool,
 }
 

@@ -17,7 +17,7 @@ use super::x86_64 as core_rows;
 use crate::pipeline::Stats;
 use crate::raster::{columns_bound, Runs};
 #[cfg(fixed3d_thumb2)]
-use crate::raster::{within_columns, RunEdges, ScreenPoint};
+use crate::raster::{within_columns, ScreenPoint};
 #[cfg(not(fixed3d_thumb2))]
 use crate::raster::{EdgeWalk, TriangleRows};
 
@@ -168,9 +168,9 @@ pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWor
     let block = slot.as_mut_ptr();
     // SAFETY: `block` is valid for writes of a `RowBlock` (a local's), unshared; the fields
     // are written in place, and read only once written: `runs.rows` by `triangle_runs`
-    // always, `runs.lower_is_left` by it whenever rows are left (its contract).
+    // always, the rest of the runs and `slot` by it whenever rows are left (its contract).
     let (y, rows) = unsafe {
-        let y = core_rows::triangle_runs(p, area, (y0, y1), addr_of_mut!((*block).runs));
+        let y = core_rows::triangle_runs(p, area, (y0, y1), block);
         (y, addr_of!((*block).runs.rows).read())
     };
     if rows == 0 {
@@ -187,8 +187,6 @@ pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWor
     // SAFETY: as above; with these and the runs (all of them written, rows being left) every
     // field but the seven `run_block` writes holds a valid value, as it requires.
     unsafe {
-        let lower_is_left = addr_of!((*block).runs.lower_is_left).read();
-        addr_of_mut!((*block).slot).write(if lower_is_left { 0 } else { RunEdges::RIGHT });
         addr_of_mut!((*block).step_x).write(walk.step_x.to_i32());
         addr_of_mut!((*block).step_y).write(walk.step_y.to_i32());
         addr_of_mut!((*block).row_z).write(walk.row.to_i32());

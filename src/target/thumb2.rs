@@ -577,28 +577,33 @@ macro_rules! first_row {
 /// [`ScreenTriangle`]: super::ScreenTriangle
 /// [`PIPELINE_LIMIT`]: crate::raster::PIPELINE_LIMIT
 ///
+/// Where rows are left it also writes the block's `slot`, the lower edge's place: the right
+/// edge's (`RunEdges::RIGHT`) where the long edge lies on the left, else the left's (0),
+/// from the long edge's side (in Rust from `Runs::lower_is_left`, which this core's runs do
+/// not have: the reference frame 0.5% fewer instructions).
+///
 /// # Safety
-/// `runs` is valid for writes of a `Runs` (its memory need not hold one) and borrowed by
-/// nothing else for the call.
+/// `block` is valid for writes of a `RowBlock` (its memory need not hold one) and borrowed
+/// by nothing else for the call.
 #[inline(always)]
 #[allow(unsafe_code)]
 pub(super) unsafe fn triangle_runs(
     p: &[ScreenPoint; 3],
     area: i64,
     (y0, y1): (i32, i32),
-    runs: *mut Runs,
+    block: *mut RowBlock,
 ) -> i32 {
     let mut y = y0;
     // The area's high word: 0 or more for a positive area (it is not 0).
     let side = (area >> 32) as i32;
     // SAFETY:
     // - Memory: the block reads the six words of `p` (borrowed; at offsets 0 to 20 by its
-    //   layout, asserted below) and writes words of `runs` (valid for writes and unshared, the
-    //   caller's contract): the edges' nine words (`RunEdges`), `upper`, `rows`, and the byte
-    //   `lower_is_left`; nothing else, and no stack (`nostack`). Point reads are `p + 8·i`
+    //   layout, asserted below) and writes words of `block` (valid for writes and unshared,
+    //   the caller's contract): its runs' edges' nine words (`RunEdges`), `upper` and `rows`,
+    //   and its `slot`; nothing else, and no stack (`nostack`). Point reads are `p + 8·i`
     //   for an index `i = key & 3` of keys made from the indices 0, 1 and 2 and only moved
     //   about.
-    // - Values: a `bool` gets 0 or 1; `u32`s (the edges' words among them) any word.
+    // - Values: `u32`s (the edges' words among them) any word, `slot` 0 or 4.
     // - Registers: every register the block writes is an output; the flags it changes are
     //   not preserved, as asm! allows by default.
     unsafe {
@@ -634,9 +639,8 @@ pub(super) unsafe fn triangle_runs(
             "str {t2}, [{s}, #{rows}]",
             "ble 9f",
             "str {t2}, [{s}, #{upper}]",
-            "ubfx {t1}, {side}, #2, #1",
-            "eor {t1}, {t1}, #1",
-            "strb {t1}, [{s}, #{lower_is_left}]",
+            "and {t1}, {side}, #4",
+            "str {t1}, [{s}, #{slot}]",
             // The split row.
             first_row!("kb"),
             "cmp {t1}, {y}",
@@ -692,7 +696,7 @@ pub(super) unsafe fn triangle_runs(
             "asr {y}, {y}, #4",
             "9:",
             p = inout(reg) p.as_ptr() => _,
-            s = in(reg) runs,
+            s = in(reg) block,
             side = inout(reg) side => _,
             y = inout(reg) y,
             ye = inout(reg) y1 => _,
@@ -700,7 +704,7 @@ pub(super) unsafe fn triangle_runs(
             t1 = out(reg) _, xc = out(reg) _, t2 = out(reg) _, t3 = out(reg) _, t4 = out(reg) _,
             rows = const offset_of!(Runs, rows),
             upper = const offset_of!(Runs, upper),
-            lower_is_left = const offset_of!(Runs, lower_is_left),
+            slot = const offset_of!(RowBlock, slot),
             lower = const RunEdges::LOWER,
             options(nostack),
         );
@@ -910,6 +914,8 @@ pub(super) fn depth_walk(triangle: &ScreenTriangle, y: i32) -> Option<RoundedRow
 const _: () = {
     assert!(size_of::<ScreenPoint>() == 8 && offset_of!(ScreenPoint, y) == 4);
     assert!(offset_of!(ScreenPoint, x) == 0 && size_of::<RunEdges>() == 36);
+    // The long edge's side, 4 where it lies on the left, is the lower edge's `slot` there.
+    assert!(RunEdges::RIGHT == 4);
 };
 
 // The layout `depth_walk` reads: three points of two words, three words of depth, the area's
