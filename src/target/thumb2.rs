@@ -580,7 +580,7 @@ macro_rules! first_row {
 /// Where rows are left it also writes the block's `slot`, the lower edge's place: the right
 /// edge's (`RunEdges::RIGHT`) where the long edge lies on the left, else the left's (0),
 /// from the long edge's side (in Rust from `Runs::lower_is_left`, which this core's runs do
-/// not have: the reference frame 0.5% fewer instructions).
+/// not have: the reference frame 1.0% fewer instructions, 1.018 M → 1.007 M).
 ///
 /// # Safety
 /// `block` is valid for writes of a `RowBlock` (its memory need not hold one) and borrowed
