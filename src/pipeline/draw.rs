@@ -477,7 +477,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             normal_matrix,
             normalize: self.frame.precision.normalize(),
             vertices: v,
-            colors,
+            // Read by per-vertex shading only: for the others the argument is dead, and the
+            // compiler drops it from the call (the Cortex-M4F's frame 0.19% fewer instructions
+            // and 100 bytes less flash, the M0's 0.08% and 92 bytes; x86-64 the same).
+            colors: if S::PER_VERTEX { colors } else { &NO_COLORS },
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
         };
