@@ -262,9 +262,17 @@ impl Frame {
             // With `asm` on Cortex-M3/M4, an object known inside in words without lit colours
             // takes the vertex loop in assembly (`target::thumb2::project_known_in_words`).
             #[cfg(all(feature = "asm", fixed3d_thumb2))]
-            if fits && known == Known::InWords && normals.is_none() {
-                let halves = map.half_sizes();
-                crate::target::project_known_in_words(&clip_from_model, halves, positions, these);
+            // (It declines only matrices and meshes near `fits_32_bits`' bound.)
+            if fits
+                && known == Known::InWords
+                && normals.is_none()
+                && crate::target::project_known_in_words(
+                    &clip_from_model,
+                    map.half_sizes(),
+                    (positions, extent),
+                    these,
+                )
+            {
                 if k < 64 {
                     inside |= 1 << k;
                 }

@@ -97,7 +97,11 @@
 //! `fraction_by_digits`, step by step; checked under emulation by every preset's hash (the
 //! tori of `full`, `variants`, `bands`, `display`), the `variants` preset's `front` with its
 //! depths: the reference frame on the Cortex-M4F 4.1% fewer instructions (1.219 M →
-//! 1.170 M), 420 bytes more flash.
+//! 1.170 M), 420 bytes more flash. Since then 61 instructions a vertex: the block's rows are
+//! scaled by `2^(16 − shift)` and each point by `2^shift` as it is loaded (three shifts), so
+//! that each clip coordinate is its sum's high word where it took two instructions to take
+//! the sum's bits 16 to 47 (`ProjectBlock`; the same values for every shift, which a
+//! mutation of the shift confirms under emulation): 0.57% fewer (1.0055 M → 0.9999 M).
 
 use core::mem::{align_of, offset_of, size_of};
 
@@ -1037,25 +1041,23 @@ fn pair_to_i64(lo: u32, hi: u32) -> i64 {
     ((u64::from(hi) << 32) | u64::from(lo)) as i64
 }
 
-/// One clip coordinate for `project_rows`: the row's coefficients (r3 to r5) and sum (r6, r7)
-/// loaded by `$load`, the point's products (r0 to r2) accumulated onto the sum, its bits 16
-/// to 47 into `$to`.
+/// One clip coordinate for `project_rows`: the row's coefficients (r3 to r5) and sum (r6 and
+/// `$hi`) loaded by `$load`, the point's products (r0 to r2) accumulated onto the sum, whose
+/// high word `$hi` is the coordinate (the block's rows and the points scaled for it).
 macro_rules! clip_row {
-    ($load:literal, $to:literal) => {
+    ($load:literal, $hi:literal) => {
         concat!(
             $load,
             "\n",
-            "smlal r6, r7, r3, r0\n",
-            "smlal r6, r7, r4, r1\n",
-            "smlal r6, r7, r5, r2\n",
-            "lsr ",
-            $to,
-            ", r6, #16\n",
-            "orr ",
-            $to,
-            ", ",
-            $to,
-            ", r7, lsl #16",
+            "smlal r6, ",
+            $hi,
+            ", r3, r0\n",
+            "smlal r6, ",
+            $hi,
+            ", r4, r1\n",
+            "smlal r6, ",
+            $hi,
+            ", r5, r2",
         )
     };
 }
@@ -1067,13 +1069,13 @@ macro_rules! clip_row {
 macro_rules! screen_axis {
     ($place:literal, $at:literal) => {
         concat!(
-            clip_row!("ldm lr!, {{r3, r4, r5, r6, r7, r8}}", "r6"),
+            clip_row!("ldm lr!, {{r3, r4, r5, r6, r7, r8}}", "r7"),
             "\n",
-            "mul r6, r6, r8\n",
+            "mul r6, r7, r8\n",
             "cmp r6, #0\n",
             "it mi\n",
             "rsbmi r6, r6, #0\n",
-            "add r6, r6, r10\n",
+            "add r6, r6, r9, lsr #1\n",
             "udiv r6, r6, r9\n",
             "it mi\n",
             "rsbmi r6, r6, #0\n",
@@ -1087,10 +1089,14 @@ macro_rules! screen_axis {
 }
 
 /// What [`project_known_in_words`]'s loop reads for each vertex: the clip-from-model matrix'
-/// rows w, x, y and z, each as its three coefficients and the sum its products accumulate
-/// onto (`((t << 16) + 2¹⁵)`, `t` the row's translation, as two words, low first), x's and y's
-/// followed by the viewport's half width and height in sub-pixels, z's by the end of the
-/// positions.
+/// rows w, x, y and z, each as its three coefficients shifted left by `16 − shift` and the
+/// sum its products accumulate onto (`(t << 32) + 2³¹`, `t` the row's translation, as two
+/// words, low first), x's and y's followed by the viewport's half width and height in
+/// sub-pixels, z's by the end of the positions; then the shift of the points, `shift`. A
+/// point shifted left by `shift` times those coefficients, summed onto that start, is
+/// `2¹⁶·(s + 2¹⁵)` for `transform_short`'s sum `s` (its products onto `t << 16`): its high
+/// word is `⌊(s + 2¹⁵) / 2¹⁶⌋`, the sum's bits 16 to 47 that `transform_short` takes, with no
+/// shift of the sum (two instructions a row, eight a vertex, for the points' three shifts).
 #[repr(C)]
 struct ProjectBlock {
     w: [u32; 5],
@@ -1098,23 +1104,43 @@ struct ProjectBlock {
     y: [u32; 6],
     z: [u32; 5],
     end: *const Vec3,
+    shift: u32,
 }
 
-/// One row of [`ProjectBlock`]: the coefficients and the accumulator's start of `r`.
-fn project_row(r: [i32; 4]) -> [u32; 5] {
-    let start = ((r[3] as i64) << 16) + (1 << 15);
+/// One row of [`ProjectBlock`]: the coefficients of `r` shifted left by `16 − shift` (each
+/// below 2³¹ in magnitude after it: `shift_for`) and the accumulator's start.
+fn project_row(r: [i32; 4], shift: u32) -> [u32; 5] {
+    let start = ((r[3] as i64) << 32) + (1 << 31);
+    let c = |v: i32| v.wrapping_shl(16 - shift) as u32;
     [
-        r[0] as u32,
-        r[1] as u32,
-        r[2] as u32,
+        c(r[0]),
+        c(r[1]),
+        c(r[2]),
         start as u32,
         (start >> 32) as u32,
     ]
 }
 
+/// The points' shift for [`ProjectBlock`] of the rows `m` (coefficients, then translation) and
+/// points within ±`extent`: the largest up to 16 that keeps every shifted coordinate within
+/// ±2³¹ (`extent·2^shift < 2³¹`), if every coefficient shifted left by `16 − shift` stays
+/// within ±2³¹ too; `None` otherwise (a matrix and an extent within a factor of about 4 of
+/// `fits_32_bits`' bound).
+fn shift_for(m: &[[i32; 4]; 4], extent: u32) -> Option<u32> {
+    // 31 less the extent's bits: extent < 2^(32 − zeros) ≤ 2^(31 − shift).
+    let shift = extent.leading_zeros().saturating_sub(1).min(16);
+    let largest = m
+        .iter()
+        .flat_map(|r| r.iter().take(3))
+        .map(|v| v.unsigned_abs())
+        .max()
+        .unwrap_or(0);
+    (u64::from(largest) << (16 - shift) < 1 << 31).then_some(shift)
+}
+
 /// The row of a [`ProjectBlock`] with one more word after it.
-fn project_row_and(r: [i32; 4], word: u32) -> [u32; 6] {
-    let [a, b, c, lo, hi] = project_row(r);
+fn project_row_and(r: [i32; 4], shift: u32, word: u32) -> [u32; 6] {
+    let [a, b, c, lo, hi] = project_row(r, shift);
     [a, b, c, lo, hi, word]
 }
 
@@ -1124,40 +1150,50 @@ fn project_row_and(r: [i32; 4], word: u32) -> [u32; 6] {
 /// 32 bits, `Mat4::fits_32_bits`) into the vertex of `out` at its index, as the vertex loop
 /// in Rust computes it, in one loop of assembly (`project_words`): the clip coordinates as
 /// `transform_short` takes them (three multiply-accumulates a row onto its start, the sum's
-/// bits 16 to 47), `x·half_w` and `y·half_h` in words, their rounded quotients by `w`
-/// (`div_round_word`: the magnitude plus half of w, divided, the sign put back), the depth
-/// `z·2³⁰/w` rounded by three divisions (`fraction_by_digits`), the position from the
-/// viewport's centre, no outcode and no colour. 65 instructions a vertex, where the compiled
-/// loop took about 125, loading the matrix from the stack for each vertex.
+/// bits 16 to 47: here the high word, see [`ProjectBlock`]), `x·half_w` and `y·half_h` in
+/// words, their rounded quotients by `w` (`div_round_word`: the magnitude plus half of w,
+/// divided, the sign put back), the depth `z·2³⁰/w` rounded by three divisions
+/// (`fraction_by_digits`), the position from the viewport's centre, no outcode and no colour.
+/// 61 instructions a vertex (65 with the sums' bits 16 to 47 shifted into a word, the
+/// reference frame 0.57% more), where the compiled loop took about 125, loading the matrix
+/// from the stack for each vertex. False, with nothing written, where the points' positions
+/// (within ±`extent`) and the matrix leave no shift for the block (see `shift_for`).
 #[allow(unsafe_code)]
 pub(crate) fn project_known_in_words(
     m: &Mat4,
     (half_w, half_h): (i32, i32),
-    positions: &[Vec3],
+    (positions, extent): (&[Vec3], u32),
     out: &mut [ScreenVertex],
-) {
+) -> bool {
     let n = positions.len().min(out.len());
-    let [x, y, z, w] = m.to_bits();
+    let rows = m.to_bits();
+    let Some(shift) = shift_for(&rows, extent) else {
+        return false;
+    };
+    let [x, y, z, w] = rows;
     let block = ProjectBlock {
-        w: project_row(w),
-        x: project_row_and(x, half_w as u32),
-        y: project_row_and(y, half_h as u32),
-        z: project_row(z),
+        w: project_row(w, shift),
+        x: project_row_and(x, shift, half_w as u32),
+        y: project_row_and(y, shift, half_h as u32),
+        z: project_row(z, shift),
         end: positions.as_ptr().wrapping_add(n),
+        shift,
     };
     // SAFETY: `project_rows` keeps the calling convention (see its documentation) and reads
     // `block` (borrowed for the call), the `n` positions from `positions` up to `block.end`
     // (within the slice), and writes the `n` vertices from `out` (borrowed mutably, at least
     // `n` long): 16 bytes each, x, y, z and a zero word over `rgb` and `outcode` at 0, 4, 8
     // and 12 (asserted below), valid values of every field (any `i32`, bytes 0).
-    unsafe { project_rows(&block, positions.as_ptr(), out.as_mut_ptr()) }
+    unsafe { project_rows(&block, positions.as_ptr(), out.as_mut_ptr()) };
+    true
 }
 
 /// [`project_known_in_words`]' loop, from the block's address (r0), the first position (r1)
 /// and the first vertex (r2) to the positions' end (the block's `end`). Registers: the point
-/// in r0 to r2, a row's coefficients in r3 to r5 and its sum in r6 and r7, its extra word in
-/// r8, w in r9 and half of it in r10, the positions in r11, the vertices in r12, the block in
-/// lr. Each result is stored as it is found.
+/// in r0 to r2 (shifted left by the block's `shift`), a row's coefficients in r3 to r5 and its
+/// sum in r6 and r7 (w's in r6 and r9), its extra word in r8, w in r9, the shift in r10, the
+/// positions in r11, the vertices in r12, the block in lr. Each result is stored as it is
+/// found.
 ///
 /// # Safety
 /// `block` points to a [`ProjectBlock`] whose `end` lies at or after `positions` (within one
@@ -1176,28 +1212,32 @@ unsafe extern "C" fn project_rows(
         "mov r11, r1",
         "mov r12, r2",
         "ldr r8, [lr, #{end}]",
+        "ldr r10, [lr, #{shift}]",
         "cmp r11, r8",
         "bhs 9f",
         "2:",
         "ldm r11!, {{r0, r1, r2}}",
-        // w, at least 1 (as `NonZeroU32::new(w).unwrap_or(MIN)`), and half of it.
-        clip_row!("ldm lr!, {{r3, r4, r5, r6, r7}}", "r9"),
+        "lsl r0, r0, r10",
+        "lsl r1, r1, r10",
+        "lsl r2, r2, r10",
+        // w, at least 1 (as `NonZeroU32::new(w).unwrap_or(MIN)`).
+        clip_row!("ldm lr!, {{r3, r4, r5, r6, r9}}", "r9"),
         "cmp r9, #1",
         "it lo",
         "movlo r9, #1",
-        "lsr r10, r9, #1",
         // x: half_w + round(x·half_w / w); y: half_h − round(y·half_h / w).
         screen_axis!("add r6, r8, r6", 0),
         screen_axis!("sub r6, r8, r6", 4),
         // The depth: z·2³⁰/w rounded, by the digits q1·2¹⁷ + q2·2⁴ + q3; the end in r8.
-        clip_row!("ldm lr, {{r3, r4, r5, r6, r7, r8}}", "r6"),
-        "lsl r6, r6, #13",
+        clip_row!("ldm lr, {{r3, r4, r5, r6, r7, r8}}", "r7"),
+        "lsl r6, r7, #13",
         "udiv r3, r6, r9",
         "mls r6, r3, r9, r6",
         "lsl r6, r6, #13",
         "udiv r4, r6, r9",
         "mls r6, r4, r9, r6",
-        "add r6, r10, r6, lsl #4",
+        "lsl r6, r6, #4",
+        "add r6, r6, r9, lsr #1",
         "udiv r6, r6, r9",
         "add r6, r6, r4, lsl #4",
         "add r6, r6, r3, lsl #17",
@@ -1211,6 +1251,7 @@ unsafe extern "C" fn project_rows(
         "pop.w {{r8, r9, r10, r11}}",
         "pop {{r4, r5, r6, r7, pc}}",
         end = const offset_of!(ProjectBlock, end),
+        shift = const offset_of!(ProjectBlock, shift),
         rows = const offset_of!(ProjectBlock, z),
     )
 }
