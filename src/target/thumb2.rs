@@ -85,9 +85,9 @@
 //! triangle to draw (its corners copied for the call that fills it) or one of zero area. The
 //! same classification as the Rust walk's (the same area, the same sign and zero tests),
 //! checked under emulation by the `variants` preset's `front` (random triangles of both
-//! windings and of zero area, every count in its hash): 22 instructions a back face where the
-//! compiled walk took about 49, the reference frame on the Cortex-M4F 3.4% fewer
-//! instructions (1.262 M → 1.219 M), 370 bytes more flash.
+//! windings and of zero area, every count in its hash): 22 instructions a back face (21 since
+//! its area is taken in words) where the compiled walk took about 49, the reference frame on
+//! the Cortex-M4F 3.4% fewer instructions (1.262 M → 1.219 M), 370 bytes more flash.
 //!
 //! The vertex loop of an object known inside every clip plane with its projection in words
 //! ([`project_known_in_words`], a naked function): the transform, the projection and the
@@ -951,10 +951,14 @@ macro_rules! corner {
     };
 }
 
-/// The walk on ARMv7-M: a back face takes 22 instructions (its three indices loaded, its
-/// three points loaded in pairs, the area by one widening multiply and one multiply-accumulate
-/// as `cross_words` takes it, its sign and its zero tested), where the compiled walk took
-/// about 49, keeping its state on the stack around the call it makes for the faces it draws.
+/// The walk on ARMv7-M: a back face takes 21 instructions (its three indices loaded, its
+/// three points loaded in pairs, the area by a multiply and a multiply-accumulate in words as
+/// `short_sides_area` takes it, its sign and its zero from one comparison), where the compiled
+/// walk took about 49, keeping its state on the stack around the call it makes for the faces
+/// it draws. The walk takes only objects inside every clip plane, whose sides lie within
+/// ±2¹⁵ (see `inside_area2`): each product within ±2³⁰, the area within ±2³¹. (In 64 bits, by
+/// a widening multiply and a multiply-accumulate, the zero test took one more instruction a
+/// back face; the reference frame 0.04% more.)
 impl<'t> FrontFaces<'t, '_> {
     /// The next triangle that is not a back face, or [`FaceStop::End`]; for a front face its
     /// vertices' positions and depths written to `out`.
@@ -962,7 +966,7 @@ impl<'t> FrontFaces<'t, '_> {
     #[allow(unsafe_code)]
     pub(crate) fn next_stop(&mut self, out: &mut [(ScreenPoint, i32); 3]) -> FaceStop<'t> {
         let stop: u32;
-        let (lo, hi): (u32, u32);
+        let area: i32;
         // SAFETY:
         // - Memory: the block reads the three indices of each of the `left` triangles from
         //   `next` (within `triangles`: `next` lies within it or at its end, `left` triangles
@@ -1000,11 +1004,10 @@ impl<'t> FrontFaces<'t, '_> {
                 "sub {ic}, {ic}, {ia}",
                 "sub {yc}, {yc}, {ya}",
                 "sub {yb}, {ya}, {yb}",
-                "smull {ia}, {ya}, {ib}, {yc}",
-                "smlal {ia}, {ya}, {ic}, {yb}",
-                "cmp {ya}, #0",
+                "mul {ia}, {ib}, {yc}",
+                "mla {ia}, {ic}, {yb}, {ia}",
+                "cmp {ia}, #0",
                 "blt 3f",
-                "orrs {ib}, {ia}, {ya}",
                 "bne 2b",
                 "movs {ib}, #{degenerate}",
                 "b 9f",
@@ -1022,7 +1025,7 @@ impl<'t> FrontFaces<'t, '_> {
                 t = inout(reg) self.next,
                 left = inout(reg) self.left,
                 v = in(reg) self.vertices.as_ptr(),
-                ia = out(reg) lo, ya = out(reg) hi, ib = out(reg) stop,
+                ia = out(reg) area, ya = out(reg) _, ib = out(reg) stop,
                 out = in(reg) out.as_mut_ptr(),
                 ic = out(reg) _, yb = out(reg) _, yc = out(reg) _,
                 front = const FaceStop::FRONT,
@@ -1031,14 +1034,8 @@ impl<'t> FrontFaces<'t, '_> {
                 options(nostack),
             );
         }
-        self.stopped(stop, pair_to_i64(lo, hi))
+        self.stopped(stop, i64::from(area))
     }
-}
-
-/// A 64-bit value from its low and high words.
-#[inline(always)]
-fn pair_to_i64(lo: u32, hi: u32) -> i64 {
-    ((u64::from(hi) << 32) | u64::from(lo)) as i64
 }
 
 /// One clip coordinate for `project_rows`: the row's coefficients (r3 to r5) and sum (r6 and
