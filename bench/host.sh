@@ -120,7 +120,7 @@ $timing
 
 | renderer | x86-64 instructions per frame | Cortex-M4F | Cortex-M0 class |
 |---|---:|---:|---:|
-| fixed3d today | $(awk -v d="$headline" -v n="$frames" 'BEGIN { printf "%.2f M", d / n / 1e6 }') | $(grep -E '^\| .full. \| \| thumbv7em' docs/footprint.md | awk -F'|' '{v=$8; gsub(/[ ,]/,"",v); printf "%.2f M", v/1e6}') | $(grep -E '^\| .full. \|.*\| thumbv6m \|' docs/footprint.md | awk -F'|' '{v=$8; gsub(/[ ,]/,"",v); printf "%.2f M", v/1e6}') |
+| fixed3d today | $(awk -v d="$headline" -v n="$frames" 'BEGIN { printf "%.3f M", d / n / 1e6 }') | $(grep -E '^\| .full. \| \| thumbv7em' docs/footprint.md | awk -F'|' '{v=$8; gsub(/[ ,]/,"",v); printf "%.3f M", v/1e6}') | $(grep -E '^\| .full. \|.*\| thumbv6m \|' docs/footprint.md | awk -F'|' '{v=$8; gsub(/[ ,]/,"",v); printf "%.3f M", v/1e6}') |
 | goal | 1.0 M | 1.0 M | 2.0 M |
 | best C++ MCU library measured | 2.17 M | 2.03 M | 43.3 M |
 | best C fixed-point MCU library | about 3.6 M | 3.61 M | 8.94 M |
@@ -214,13 +214,17 @@ $stages
   \`DivideStepper\`), where the arithmetic needs about 25: the rest moves the row's state (the edges, the depth walk, the clip column, the
   buffers) between registers and the stack around the pixel loop. With the \`asm\` feature
   (the firmware presets have it) the M4's whole row loop is Thumb-2 too, for a solid colour
-  into u16 depth: 17 instructions a row (22 for a triangle that crosses the target's left
+  into u16 depth: 13 instructions a row (18 for a triangle that crosses the target's left
   or right side, whose spans are clamped) and 6 more to enter a span (20 a row while each
   edge had a base to add, to keep its numerator unsigned: now the numerator is signed and
   divided so, and the loop without the clamps keeps the run's end in the register the other
-  loop gives the width; the frame 2.8% and 0.6% fewer instructions, 1.097 M → 1.059 M). It reads the edges and
+  loop gives the width; the frame 2.8% and 0.6% fewer instructions, 1.097 M → 1.059 M; 17 a
+  row until both edges' numerators, steps and denominators were interleaved in the block,
+  \`RunEdges\`, and loaded by one \`ldm\` into r0 to r5, which the loop then names itself:
+  6 instructions for both span ends instead of 10, 2.9% fewer, 1.059 M → 1.029 M). It reads
   the triangle's constants in pairs (\`ldrd\`) from one block in memory and stores the two
-  numerators back, which leaves twelve registers for the row and the pixel loop together;
+  numerators back with one \`strd\`, which leaves thirteen registers for the row and the
+  pixel loop together;
   the runs above and below the middle vertex go through it in one call, the lower short
   edge set up beforehand and copied over its side by the loop. The three edges are set up
   from the triangle's rows (\`TriangleRows::runs\`) as the block is built, where they were
@@ -299,7 +303,11 @@ $stages
   turn; the flatter lines of a wireframe try 2: 16 cost the \`wire\` preset 3.6%; with the
   \`asm\` feature Cortex-M3/M4 sort the corners, find the rows and set up the three edges in one
   block of Thumb-2, \`thumb2::triangle_runs\`, about 150 instructions (139 since its edges
-  have no base), and the depth walk in
+  have no base; about 120 since it loads the corners' x once for all three edges and takes
+  the long edge's side from the area's high word, 0.5% and 0.3% fewer; and it writes the
+  lower edge's place into the row loop's block itself, where the Rust read a flag back and
+  stored it: 1.0% fewer, more than those five instructions a triangle, as fewer values wait
+  around the assembly, 1.018 M → 1.007 M), and the depth walk in
   line right after it: the M4's frame 1.9% fewer instructions, about 1.1 KB, and no fewer
   with the depth walk's set-up out of line, 0.2% more with the row loop's block kept by the
   target instead of made for each triangle, and 1.2% fewer again with that block not
@@ -386,7 +394,8 @@ $stages
   each core's module, its state in \`target/asm_faces.rs\`): each triangle's indices
   (unchecked: \`Mesh::new\` checked every one), points and doubled area in one loop that
   stops only on a face to draw, whose corners it copies for \`fill_face\`, or one of zero
-  area: 22 instructions a back face on the M4, where the compiled walk took about 49, 29 on
+  area: 22 instructions a back face on the M4 (21 with the area in words, every side of
+  such an object within ±2¹⁵: 0.04% fewer), where the compiled walk took about 49, 29 on
   the M0 (about 65), 24 on x86-64 (about 50), each keeping its state on the stack around
   the call it makes for the faces it draws: the frames 3.4%, 2.8% and 3.3% fewer
   instructions, 300 to 450 bytes; that walk out of line (its loop its own registers) 0.24%
@@ -450,7 +459,12 @@ $stages
   the two rounded quotients and the depth's three digits in 65 instructions a vertex, each
   row of the matrix read from a block by one \`ldm\`, each result stored as it is found,
   where the compiled loop took about 125, reloading the matrix from the stack for each
-  vertex: the frame 4.1% fewer instructions (1.219 M → 1.170 M), about 420 bytes. The
+  vertex: the frame 4.1% fewer instructions (1.219 M → 1.170 M), about 420 bytes. Now 61:
+  the block's rows scaled by \`2^(16 − shift)\` and each point by \`2^shift\` as it is
+  loaded, each clip coordinate is its sum's high word, where taking the sum's bits 16 to
+  47 took two instructions a row (0.57% fewer, 1.0055 M → 0.9999 M; the shift the largest
+  up to 16 that keeps points and coefficients in words, declined near \`fits_32_bits\`'
+  bound, where the Rust loop takes the object). The
   stage is about a sixth of the M0's frame, about 380 instructions a vertex
   with the frame's matrices (about 345 in its loop), most of them the transform (about 135)
   and the divisions (about 135 with the reciprocal). Not kept: Lambert's rounded dot product in
@@ -471,10 +485,22 @@ $stages
   through a call (the M0 0.3% more, the M4 0.4%), and the first row's edges set up where
   they go, their vertices chosen first, instead of swapped after (the M0 0.5% more, the M4
   0.9%).
-- **The goals**: with the pixels at what they take now (0.22 M on the M4), 1.0 M leaves
+- **The goals**: the Cortex-M4F's is reached, 999,475 instructions a frame (\`.ci/run\`
+  fails above 1.0 M), the last 5.6% from the row loop's edges by one \`ldm\` (2.9%),
+  \`triangle_runs\` loading the corners' x once, finding the long edge's side from the
+  area's high word and writing the lower edge's place itself (1.8%), the vertex loop's
+  coordinates as their sums' high words (0.57%), the kept face normals as a slice and the
+  vertex colours that flat shading never reads dropped from \`fill_face\`'s call (0.47%),
+  and the back faces' area in words (0.04%). Not kept in that round: the triangle's corners
+  interleaved with their depths and written in place by the walk in assembly, read in
+  place by the target (the M4 0.34% fewer, the M0 1% more), the depth walk's result written
+  into the row loop's block by the assembly (0.02%), the count of drawn triangles kept in a
+  register (the M0 0.13% fewer, the M4 0.66% more). x86-64 (1.175 M) and the Cortex-M0
+  (2.278 M) are not reached: before that round, with the pixels at what they took (0.22 M on
+  the M4), 1.0 M left
   0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 93% of what they take now (on x86-64, whose rows and pixels with the \`asm\` loop take
-  about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 takes about 490
+  rows, 93% of what they took then (on x86-64, whose rows and pixels with the \`asm\` loop
+  take about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 took about 490
   instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
   rows and of its depth walk, 0.47 M). That is not the compiler's moves between registers
   and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of
@@ -501,7 +527,7 @@ $stages
   in proportion, a few per cent. The M4's rows and pixels are already hand-written (the \`asm\`
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve, and
-  13 for two in an uncounted span; 17 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
+  13 for two in an uncounted span; 13 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10). On the M0 the vertex
   stage (0.43 M, about 375
   a vertex, of which the transform takes about 135 and the divisions by w about 135) and the depth
