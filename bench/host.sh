@@ -395,7 +395,8 @@ $stages
   (unchecked: \`Mesh::new\` checked every one), points and doubled area in one loop that
   stops only on a face to draw, whose corners it copies for \`fill_face\`, or one of zero
   area: 22 instructions a back face on the M4 (21 with the area in words, every side of
-  such an object within ±2¹⁵: 0.04% fewer), where the compiled walk took about 49, 29 on
+  such an object within ±2¹⁵: 0.04% fewer; a front face's corners copied since by one
+  \`ldm\` and one \`stm\` each, 0.48% fewer), where the compiled walk took about 49, 29 on
   the M0 (about 65), 24 on x86-64 (about 50), each keeping its state on the stack around
   the call it makes for the faces it draws: the frames 3.4%, 2.8% and 3.3% fewer
   instructions, 300 to 450 bytes; that walk out of line (its loop its own registers) 0.24%
@@ -485,13 +486,14 @@ $stages
   through a call (the M0 0.3% more, the M4 0.4%), and the first row's edges set up where
   they go, their vertices chosen first, instead of swapped after (the M0 0.5% more, the M4
   0.9%).
-- **The goals**: the Cortex-M4F's is reached, 999,475 instructions a frame (\`.ci/run\`
-  fails above 1.0 M), the last 5.6% from the row loop's edges by one \`ldm\` (2.9%),
+- **The goals**: the Cortex-M4F's is reached, 994,697 instructions a frame (\`.ci/run\`
+  fails above 1.0 M), the last 6.1% from the row loop's edges by one \`ldm\` (2.9%),
   \`triangle_runs\` loading the corners' x once, finding the long edge's side from the
   area's high word and writing the lower edge's place itself (1.8%), the vertex loop's
   coordinates as their sums' high words (0.57%), the kept face normals as a slice and the
   vertex colours that flat shading never reads dropped from \`fill_face\`'s call (0.47%),
-  and the back faces' area in words (0.04%). Not kept in that round: the triangle's corners
+  the back faces' area in words (0.04%) and a front face's corners copied by one \`ldm\`
+  and one \`stm\` each (0.48%). Not kept in that round: the triangle's corners
   interleaved with their depths and written in place by the walk in assembly, read in
   place by the target (the M4 0.34% fewer, the M0 1% more), the depth walk's result written
   into the row loop's block by the assembly (0.02%), the count of drawn triangles kept in a

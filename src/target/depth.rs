@@ -521,7 +521,7 @@ impl DepthTest for LessOrEqual {
 /// A type, chosen when the target is built
 /// ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)): a frame that does not need the
 /// counts does not pay for them (on the reference torus, 5.5% of the Cortex-M4's instructions
-/// (11.3% with the `asm` feature, whose uncounted spans take their pixels in pairs), 4.1% of
+/// (11.4% with the `asm` feature, whose uncounted spans take their pixels in pairs), 4.1% of
 /// the Cortex-M0's (3.0% with it), 1.6% of
 /// x86-64's (2.9% with it): a count per span and one per failed fragment, and the registers
 /// they hold in the row loop).
