@@ -265,11 +265,11 @@ unsafe fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
     // cells long (`run_cells`), borrowed mutably here until the call returns; `C` has 2 bytes
     // and alignment 2 (checked); `rows ≥ upper ≥ 1` and `width > 0` (checked); `row`,
     // `delta`, `stride`, `end` and `last` are set from them just above; `slot` is 0 or an
-    // edge's size; `bits` came from `color_bits` of a valid `C` (the caller's); without the
-    // clamps, `within_columns` holds for `width` and the triangle whose rows the edges in
-    // `runs` walk (set up by `TriangleRows::runs`, or on Cortex-M3/M4 by
-    // `thumb2::triangle_runs`, which computes the same walks with no base, the numerator
-    // signed: see its documentation).
+    // edge's size (on Cortex-M3/M4 0 or `RunEdges::RIGHT`, from `triangle_runs`); `bits`
+    // came from `color_bits` of a valid `C` (the caller's); without the clamps,
+    // `within_columns` holds for `width` and the triangle whose rows the edges in `runs` walk
+    // (set up by `TriangleRows::runs`, or on Cortex-M3/M4 by `thumb2::triangle_runs`, which
+    // computes the same walks with no base, the numerator signed: see its documentation).
     unsafe { core_rows::rows::<T, K>(block, clamp) };
     if K::COUNTED {
         stats.fragments = stats.fragments.saturating_add(block.fragments);

@@ -32,10 +32,11 @@
 //!
 //! The set-up of those rows ([`triangle_runs`]): the sort of the corners, the rows and the three
 //! edges of a triangle written into the same block, about 150 instructions a triangle in one block
-//! of assembly (about 139 since its edges have no base, below; about 120 since the corners' x
-//! are loaded once for all three edges and the long edge's side comes from the area's high
-//! word in the block: the reference frame on the Cortex-M4F 0.28% and 0.50% fewer
-//! instructions, 1.026 M → 1.023 M → 1.018 M), where the compiler's code took
+//! of assembly (about 139 since its edges have no base, below; about 120 since it loads the
+//! corners' x once for all three edges and takes the long edge's side from the area's high
+//! word: the reference frame on the Cortex-M4F 0.28% and 0.50% fewer instructions, 1.026 M →
+//! 1.023 M → 1.018 M; it also writes the lower edge's place into the row loop's block, 1.0%
+//! fewer, 1.018 M → 1.007 M), where the compiler's code took
 //! about as many but, with the depth walk's set-up
 //! beside it, kept more values on the stack: with it the reference frame on the Cortex-M4F took
 //! 1.9% fewer instructions (1.301 M → 1.276 M), for about 1.1 KB of flash (the depth walk's set-up
@@ -473,10 +474,9 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(block: &mut RowBlock, 
 /// One edge of [`triangle_runs`]: the walk of a [`DivideStepper`](crate::raster::DivideStepper)
 /// of the edge from the point of key `$p` and x `$xp` to that of key `$q` and x `$xq` (sorted:
 /// `p.y ≤ q.y`) at the row whose sample line is `$r` (16·row + 8), its numerator in `t2`,
-/// its step in `t3` and its
-/// denominator in `t4`, which the instructions `$store` store (they may use `ye`, free by
-/// then; see [`RunEdges`] for where), as `edge_by_division` computes it with its base `b`
-/// taken as 0: `dx = q.x − p.x`, `dy = q.y − p.y`, the numerator
+/// its step in `t3` and its denominator in `t4`, which the instructions `$store` store (they
+/// may use `ye`, free by then; see [`RunEdges`] for where), as `edge_by_division` computes it
+/// with its base `b` taken as 0: `dx = q.x − p.x`, `dy = q.y − p.y`, the numerator
 /// `(p.x − 8)·dy + dx·t + D − 1` (as `p.x·dy + dx·t + 8·dy − 1`) with `t = r − p.y` and
 /// `D = 16·dy`, the step `16·dx`, modulo 2³². That is `N + D − 1` for the edge's own numerator
 /// `N` (`ceil(N / D)` its span end on the row), and it lies in a word, signed, on every row
@@ -553,8 +553,8 @@ macro_rules! first_row {
 /// `TriangleRows::runs` (the other cores') of [`rows_in_range`] in one block of
 /// assembly, for the points `p` (within ±[`PIPELINE_LIMIT`], a [`ScreenTriangle`]'s), whose
 /// doubled signed area `area` is not 0 (so its sign is its high word's), in the rows
-/// `y0..y1`: written into `runs`, every field of it, and the first row returned; `rows` is 0
-/// (and nothing else written) where the triangle covers none of those rows. About 120
+/// `y0..y1`: written into `block`'s runs, every field of them, and the first row returned;
+/// `rows` is 0 (and nothing else written) where the triangle covers none of those rows. About 120
 /// instructions a triangle (the sort 28 with the long edge's side, the rows 21, the split row
 /// 15, the corners' x 6, an edge 15 with its stores; with an edge of 27, about 150, it took
 /// the reference frame 1.9% fewer instructions than the compiler's set-up, with the depth
