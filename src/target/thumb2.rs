@@ -166,22 +166,21 @@ macro_rules! pixels {
 /// fragment that loses writes back the cells' own bytes.
 #[cfg(fixed3d_dsp)]
 macro_rules! pixel_pairs {
+    // `usub16 b, x, y` sets each half's GE flag where x ≥ y, and each `sel` takes there the
+    // value paired with y (the depth, or its colour), elsewhere the one paired with x. For `lo`
+    // x is the new depth and y the stored one: the stored depth and colour stay where the new
+    // depth is not nearer. For `ls` x is the stored depth and y the new one: the new depth and
+    // the colour win where the new depth is nearer or equal.
     ($l:literal, [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal, $b:literal],
      $it:literal, "lo", []) => {
-        pixel_pairs!(@ [$z, $o, $st, $d, $c], $it, "lo",
-            concat!("usub16 ", $b, ", ", $z, ", ", $o, "\n"),
-            concat!("sel ", $z, ", ", $o, ", ", $z, "\n"),
-            concat!("sel ", $o, ", ", $o, ", {col}\n"))
+        pixel_pairs!(@ [$z, $o, $st, $d, $c, $b], $it, "lo", [$z, $o], ["{col}", $o])
     };
     ($l:literal, [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal, $b:literal],
      $it:literal, "ls", []) => {
-        pixel_pairs!(@ [$z, $o, $st, $d, $c], $it, "ls",
-            concat!("usub16 ", $b, ", ", $o, ", ", $z, "\n"),
-            concat!("sel ", $z, ", ", $z, ", ", $o, "\n"),
-            concat!("sel ", $o, ", {col}, ", $o, "\n"))
+        pixel_pairs!(@ [$z, $o, $st, $d, $c, $b], $it, "ls", [$o, $z], [$o, "{col}"])
     };
-    (@ [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal], $it:literal,
-     $pass:literal, $flags:expr, $depths:expr, $colors:expr) => {
+    (@ [$z:literal, $o:literal, $st:literal, $d:literal, $c:literal, $b:literal], $it:literal,
+     $pass:literal, [$x:literal, $y:literal], [$cx:literal, $cy:literal]) => {
         concat!(
             "tst {i}, #1\n",
             "beq 6f\n",
@@ -194,11 +193,11 @@ macro_rules! pixel_pairs {
             "pkhbt ", $z, ", ", $z, ", {acc}, lsl #1\n",
             "add {acc}, ", $st, "\n",
             "ldr ", $o, ", [", $d, ", {i}, lsl #1]\n",
-            $flags,
-            $depths,
+            "usub16 ", $b, ", ", $x, ", ", $y, "\n",
+            "sel ", $z, ", ", $y, ", ", $x, "\n",
             "str ", $z, ", [", $d, ", {i}, lsl #1]\n",
             "ldr ", $o, ", [", $c, ", {i}, lsl #1]\n",
-            $colors,
+            "sel ", $o, ", ", $cy, ", ", $cx, "\n",
             "str ", $o, ", [", $c, ", {i}, lsl #1]\n",
             "adds {i}, {i}, #2\n",
             "bne 6b\n",
