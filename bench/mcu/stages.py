@@ -81,22 +81,26 @@ CUTS = [
         "    unsafe { core_rows::rows::<T, K>(block, clamp) };",
     )]),
     ("span set-up (sorting, edge steppers)", "no fill set-up", [(
-        # The rows and edges as the build sets them up (for the `asm` row loops as runs: on the
-        # M4F in assembly, from the corners), then nothing of the colour or the depth walk.
+        # The rows and edges as the build sets them up (for the `asm` row loops as runs: on both
+        # cores in assembly, from the corners), then nothing of the colour or the depth walk.
         "src/target/surface.rs",
         "        match paint.solid() {\n            Some(rgb) if Q::UNIFORM => {",
         f"        if {BB}(true) {{\n"
-        "            #[cfg(all(feature = \"asm\", fixed3d_thumb2))]\n"
+        "            #[cfg(all(feature = \"asm\", fixed3d_thumb))]\n"
         "            #[allow(unsafe_code)]\n"
         "            {\n"
+        "                #[cfg(fixed3d_thumb1)]\n"
+        "                use super::thumb1 as core_rows;\n"
+        "                #[cfg(fixed3d_thumb2)]\n"
+        "                use super::thumb2 as core_rows;\n"
         "                let mut block = core::mem::MaybeUninit::<super::asm_rows::RowBlock>::uninit();\n"
         "                let (p, area) = (&triangle.p, triangle.area);\n"
         "                let rows = (self.clip.y0, self.clip.y1);\n"
         "                let out = block.as_mut_ptr();\n"
-        f"                {BB}(unsafe {{ super::thumb2::triangle_runs(p, area, rows, out) }});\n"
+        f"                {BB}(unsafe {{ core_rows::triangle_runs(p, area, rows, out) }});\n"
         f"                {BB}(&block);\n"
         "            }\n"
-        "            #[cfg(not(all(feature = \"asm\", fixed3d_thumb2)))]\n"
+        "            #[cfg(not(all(feature = \"asm\", fixed3d_thumb)))]\n"
         "            if let Some(rows) = rows_in_range(triangle.p, self.clip, triangle.area) {\n"
         "                #[cfg(all(feature = \"asm\", fixed3d_asm_rows))]\n"
         f"                {BB}(rows.runs());\n"

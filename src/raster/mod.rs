@@ -29,7 +29,7 @@ pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
 pub(crate) use triangle::columns_bound;
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
+#[cfg(all(feature = "asm", fixed3d_thumb))]
 pub(crate) use triangle::within_columns;
 #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
 pub(crate) use triangle::EdgeWalk;
@@ -37,7 +37,7 @@ pub(crate) use triangle::EdgeWalk;
 pub(crate) use triangle::RunEdges;
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
 pub(crate) use triangle::Runs;
-#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
+#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
 pub(crate) use triangle::TriangleRows;
 pub(crate) use triangle::{rows_in_range, spans_in_range};
 pub use triangle::{triangle_spans, Span, TriangleSpans};

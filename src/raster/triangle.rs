@@ -97,14 +97,14 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
-/// A triangle's rows for a target's own row loop (`TriangleRows::runs`, or on Cortex-M3/M4
-/// `thumb2::triangle_runs` in assembly): from its first row
+/// A triangle's rows for a target's own row loop (`TriangleRows::runs`, or on Cortex-M
+/// `thumb1::triangle_runs` and `thumb2::triangle_runs` in assembly): from its first row
 /// with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's span
 /// `max(left, x0)..min(right, x1)` for the clip rectangle's columns `x0..x1`, both edges stepped
 /// after each row; after the first `upper` rows (at least one; `rows` when no edge changes),
 /// `edges[2]`, the lower short edge set up at that row, takes the place of the left edge if
-/// `lower_is_left`, else the right one (on Cortex-M3/M4, whose edges are `RunEdges`, the
-/// assembly writes that place straight into its row loop's block instead).
+/// `lower_is_left`, else the right one (on Cortex-M the assembly writes that place straight
+/// into its row loop's block instead).
 #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
@@ -115,7 +115,7 @@ pub(crate) struct Runs {
     pub(crate) edges: RunEdges,
     pub(crate) upper: u32,
     pub(crate) rows: u32,
-    #[cfg(not(fixed3d_thumb2))]
+    #[cfg(not(fixed3d_thumb))]
     pub(crate) lower_is_left: bool,
 }
 
@@ -306,7 +306,7 @@ impl TriangleRows {
     /// ends are `ceil((x − 8) / 16)` of points on its edges (the exact values every edge walk
     /// steps through), whose x lie between their edge's vertices', and the ceiling is
     /// monotonic: from `ceil(−15 / 16) = 0` to `ceil(16·width / 16) = width`.
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))))]
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))))]
     #[inline(always)]
     pub(crate) fn within_columns(&self, bound: u32) -> bool {
         within_columns(&self.v, bound)
@@ -318,9 +318,9 @@ impl TriangleRows {
     /// of rows; `None` where the edges would be set up again on the way down (x86-64's
     /// [`FractionStepper`] for a triangle of more than 2¹² rows of edges beyond 2¹⁶
     /// sub-pixels: none of the pipeline's). Without a split the lower edge is only a
-    /// placeholder: a copy of the left edge on Cortex-M0, where clearing it is a library call
-    /// a triangle (0.9% of the frame), zero elsewhere (a copy cost x86-64 0.6%).
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))))]
+    /// placeholder, zero (a copy of the left edge cost x86-64 0.6%). (The Cortex-M cores set
+    /// their runs up in assembly instead, `triangle_runs`.)
+    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))))]
     #[cfg_attr(
         all(target_pointer_width = "32", target_has_atomic = "32"),
         inline(always)
@@ -356,8 +356,6 @@ impl TriangleRows {
         let split = y < y_split && y_split < y_end;
         let lower = if split {
             edge(b, c, y_split, u32::MAX)
-        } else if crate::math::NARROW_CORE {
-            left
         } else {
             EdgeWalk::ZERO
         };
@@ -417,7 +415,7 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
 /// 0.9% fewer instructions than through its call, for 160 bytes of flash; in line for the
 /// lower edge too, 0.7% more than that).
 #[cfg(all(
-    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))),
+    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))),
     all(target_pointer_width = "32", target_has_atomic = "32")
 ))]
 #[inline(always)]
@@ -427,7 +425,7 @@ fn edge_to_end(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
 
 /// [`edge_to_end`] on the other cores: `edge` itself.
 #[cfg(all(
-    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2))),
+    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))),
     not(all(target_pointer_width = "32", target_has_atomic = "32"))
 ))]
 #[inline(always)]

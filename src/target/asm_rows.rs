@@ -15,11 +15,13 @@ use super::thumb2 as core_rows;
 #[cfg(target_arch = "x86_64")]
 use super::x86_64 as core_rows;
 use crate::pipeline::Stats;
-use crate::raster::{columns_bound, Runs};
-#[cfg(fixed3d_thumb2)]
-use crate::raster::{within_columns, ScreenPoint};
 #[cfg(not(fixed3d_thumb2))]
-use crate::raster::{EdgeWalk, TriangleRows};
+use crate::raster::EdgeWalk;
+#[cfg(not(fixed3d_thumb))]
+use crate::raster::TriangleRows;
+use crate::raster::{columns_bound, Runs};
+#[cfg(fixed3d_thumb)]
+use crate::raster::{within_columns, ScreenPoint};
 
 /// One edge's size in [`RowBlock`] (on ARMv6-M its value, remainder, denominator and two
 /// steps; on x86-64 its walk and step; on ARMv7-M the edges' words are interleaved, see
@@ -33,7 +35,7 @@ pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 /// called pairs below are read together by the Cortex-M loops (`ldrd`, `ldm`).
 ///
 /// Contract of the loops (`thumb1::rows`, `thumb2::rows`, `x86_64::rows`), which
-/// `solid_rows` (on Cortex-M3/M4 `solid_triangle`) establishes and checks before it calls them:
+/// `solid_rows` (on Cortex-M `solid_triangle`) establishes and checks before it calls them:
 /// - `row` is the address of the first of `rows · width` cells of a colour buffer (2 bytes a
 ///   cell, aligned to 2) and `row + delta` that of the same cells of a u16 depth buffer, both
 ///   borrowed mutably for the call, with `runs.rows ≥ 1` and `width > 0`;
@@ -98,7 +100,7 @@ const _: () = {
 /// buffers do not hold the triangle's rows (never, for rows clipped to the target).
 #[inline(always)]
 #[allow(unsafe_code, clippy::too_many_arguments)]
-#[cfg(not(fixed3d_thumb2))]
+#[cfg(not(fixed3d_thumb))]
 pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     triangle: &TriangleRows,
     depth: &RoundedRows<W>,
@@ -145,7 +147,7 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
 /// by `triangle_runs` in assembly, its depth walk by `depth` from its first row. False, with
 /// nothing drawn, where `solid_rows` declines the triangle or `depth` gives no walk; true
 /// where it covers none of the rows.
-#[cfg(fixed3d_thumb2)]
+#[cfg(fixed3d_thumb)]
 #[inline(always)]
 #[allow(unsafe_code, clippy::too_many_arguments)]
 pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
@@ -214,7 +216,7 @@ fn block_width(width: u32) -> Option<i32> {
 /// # Safety
 /// `block` is valid for reads and writes of a `RowBlock` and borrowed by nothing else for
 /// the call, and every field of it but `row`, `stride`, `end`, `last`, `delta`, `fragments`
-/// and `failed` holds a valid value (on Cortex-M3/M4 the caller writes the others into
+/// and `failed` holds a valid value (on Cortex-M the caller writes the others into
 /// memory never cleared: only those are read before this writes the rest).
 #[inline(always)]
 #[allow(unsafe_code)]
@@ -265,11 +267,12 @@ unsafe fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
     // cells long (`run_cells`), borrowed mutably here until the call returns; `C` has 2 bytes
     // and alignment 2 (checked); `rows ≥ upper ≥ 1` and `width > 0` (checked); `row`,
     // `delta`, `stride`, `end` and `last` are set from them just above; `slot` is 0 or an
-    // edge's size (on Cortex-M3/M4 0 or `RunEdges::RIGHT`, from `triangle_runs`); `bits`
-    // came from `color_bits` of a valid `C` (the caller's); without the clamps,
+    // edge's size (on Cortex-M from `triangle_runs`, on Cortex-M3/M4 0 or `RunEdges::RIGHT`);
+    // `bits` came from `color_bits` of a valid `C` (the caller's); without the clamps,
     // `within_columns` holds for `width` and the triangle whose rows the edges in `runs` walk
-    // (set up by `TriangleRows::runs`, or on Cortex-M3/M4 by `thumb2::triangle_runs`, which
-    // computes the same walks with no base, the numerator signed: see its documentation).
+    // (set up by `TriangleRows::runs`, on Cortex-M0 by `thumb1::triangle_runs`, which
+    // computes the same walks, or on Cortex-M3/M4 by `thumb2::triangle_runs`, which computes
+    // them with no base, the numerator signed: see its documentation).
     unsafe { core_rows::rows::<T, K>(block, clamp) };
     if K::COUNTED {
         stats.fragments = stats.fragments.saturating_add(block.fragments);

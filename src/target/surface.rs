@@ -17,7 +17,7 @@ use super::grid::BufferError;
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
 use super::thumb2;
 use crate::pipeline::Stats;
-#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
+#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
 use crate::raster::TriangleRows;
 use crate::raster::{
     rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans,
@@ -242,8 +242,8 @@ where
         solid: Option<SolidColor<C>>,
         colors_for: impl FnMut(Span) -> G,
     ) {
-        // On Cortex-M3/M4 with the `asm` feature the same, its rows set up in assembly too.
-        #[cfg(all(feature = "asm", fixed3d_thumb2))]
+        // On Cortex-M with the `asm` feature the same, its rows set up in assembly too.
+        #[cfg(all(feature = "asm", fixed3d_thumb))]
         if let Some(bits) = solid.and_then(|s| s.bits()) {
             if D::unclamped(triangle.max()) && self.solid_triangle(triangle, bits, stats) {
                 return;
@@ -268,7 +268,7 @@ where
                 // With the `asm` feature, a solid colour of 2 bytes into u16 depth takes the
                 // row loop in assembly (rows the pipeline's triangles always have), its edges
                 // set up in the loop's block.
-                #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
+                #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
                 if let Some(bits) = solid.and_then(|s| s.bits()) {
                     if self.solid_rows(&rows, &walk, bits, stats) {
                         return;
@@ -296,7 +296,7 @@ where
 
     /// The row loop in assembly ([`asm_rows::solid_rows`]) into these
     /// buffers, when the depth format is u16: false where it declines the triangle.
-    #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
+    #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
     #[inline(always)]
     fn solid_rows(
         &mut self,
@@ -325,7 +325,7 @@ where
     /// [`asm_rows::solid_triangle`] into these buffers (the triangle's rows and its depth
     /// walk set up there), when the depth format is u16: false where it declines the
     /// triangle, which then takes the general path.
-    #[cfg(all(feature = "asm", fixed3d_thumb2))]
+    #[cfg(all(feature = "asm", fixed3d_thumb))]
     #[inline(always)]
     fn solid_triangle(&mut self, triangle: &ScreenTriangle, bits: u32, stats: &mut Stats) -> bool {
         let width = self.color.width();
@@ -339,11 +339,15 @@ where
             p,
             area,
             (self.clip.y0, self.clip.y1),
-            // Small triangles' walks in assembly, the others' in Rust (the same walks).
+            // On Cortex-M3/M4 small triangles' walks in assembly, the others' in Rust (the
+            // same walks).
+            #[cfg(fixed3d_thumb2)]
             |y| match thumb2::depth_walk(triangle, y) {
                 Some(walk) => Some((walk, walk.step_x)),
                 None => rounded_rows(p, z, area, y, short_sides),
             },
+            #[cfg(fixed3d_thumb1)]
+            |y| rounded_rows(p, z, area, y, short_sides),
             colors,
             depths,
             width,

@@ -24,6 +24,20 @@
 //! (depth test × counted), on ties too, and spans clamped to the target's columns (its
 //! `clipped` configuration).
 //!
+//! The set-up of those rows ([`triangle_runs`], a naked function with an edge routine of its
+//! own): the sort of the corners, the rows and the three edges written into the same block,
+//! with the place the lower edge takes (`slot`), as `thumb2::triangle_runs` does on the M3/M4
+//! but with the M0's exact walks: each edge's quotient and remainder by subtraction (a few
+//! turns for the usual edge, a long division past sixteen). About 257 instructions a
+//! triangle (an edge 32 and two divisions of about 13 each), about 87 fewer than the
+//! compiled `rows_in_range` and `TriangleRows::runs` with their edges' calls and the runs'
+//! copy into the block (written in place here): the reference frame on the Cortex-M0 3.65%
+//! fewer instructions (2.278 M → 2.195 M), 304 bytes more flash. Its
+//! output is checked under emulation by every preset's hash: the `bands` preset and the
+//! `variants` preset's `clipped` and `triangles` take its edges set up below their first row
+//! (started by a band's or the clip's first row), its long division and both signs of each
+//! numerator and step.
+//!
 //! The triangle walk's skip of back faces (`FrontFaces::next_stop`, on the walk's state in
 //! asm_faces.rs): for an object inside every clip plane culled to its front faces, each
 //! triangle's indices, points and signed area in one loop of assembly that stops only on a
@@ -227,6 +241,364 @@ const _: () = {
 /// This core's loop tests every span against the columns at two comparisons a row: no loop
 /// without the clamps (see `asm_rows::solid_rows`).
 pub(super) const WITHOUT_CLAMPS: bool = false;
+
+/// In [`runs_of`], the keys in `$a` and `$b` swapped (by three exclusive ors) where `$a`'s is
+/// the greater, and the long edge's side (r7) turned with them.
+#[rustfmt::skip]
+macro_rules! swap_if_greater {
+    ($a:literal, $b:literal) => {
+        concat!(
+            "cmp ", $a, ", ", $b, "\n",
+            "ble 1f\n",
+            "eors ", $a, ", ", $b, "\n",
+            "eors ", $b, ", ", $a, "\n",
+            "eors ", $a, ", ", $b, "\n",
+            "mvns r7, r7\n",
+            "1:\n",
+        )
+    };
+}
+
+/// In [`runs_of`], the first row at or below the point of key `$k` into r0: `(y + 7) >> 4` of
+/// its `y = k >> 2` (`first_centre_from32`).
+#[rustfmt::skip]
+macro_rules! first_row {
+    ($k:literal) => {
+        concat!(
+            "asrs r0, ", $k, ", #2\n",
+            "adds r0, #7\n",
+            "asrs r0, r0, #4\n",
+        )
+    };
+}
+
+/// In [`runs_of`]'s division (at `40:`), one subtraction of the divisor (r7) from the
+/// numerator (r0), counted in the quotient (r1), unless the numerator is below it: then the
+/// division ends (at `49:`).
+#[rustfmt::skip]
+macro_rules! subtract {
+    () => {
+        concat!(
+            "cmp r0, r7\n",
+            "blo 49f\n",
+            "subs r0, r0, r7\n",
+            "adds r1, #1\n",
+        )
+    };
+}
+
+/// `TriangleRows::runs` of `rows_in_range` (the same edges, `CeilStepper`s as the row loop
+/// steps them) in one naked function, for the points at `p` (a [`ScreenTriangle`]'s, within
+/// ±[`PIPELINE_LIMIT`]) whose doubled signed area is not 0 and has the high word `side`, in
+/// the rows `y0..y1`: written into the block's runs with its `slot`, the first row returned
+/// (see [`triangle_runs`]).
+///
+/// What it computes, as the Rust does:
+/// - The sort and the rows as `thumb2::triangle_runs` takes them (keys `4·y + i`, three
+///   compare-and-swaps in `sort_by_y`'s order, each turning the long edge's side; the first
+///   row, the end and the split row by `first_centre_from32`).
+/// - An edge from `p` to `q` (sorted, `p.y < q.y`) at the row whose sample line is `s`
+///   (16·row + 8), at `20:`: `dx`, `dy`, `x = p.x − 8`, `t = s − p.y` and `D = 16·dy` as
+///   `edge_terms`; for `0 ≤ t < 16` (an edge set up at its first row) the whole pixels
+///   `k = x >> 4` apart and the numerator `N = (x & 15)·dy + dx·t`, otherwise `k = 0` and
+///   `N = x·dy + dx·t`, both exact in a word (the first within ±2²¹, the second within
+///   ±(2¹¹ + 1)·D, its ceiling over `D` a span end within ±2¹¹ + 1 for corners within
+///   ±2¹⁵); the value `k + ⌈N / D⌉` and the remainder `value·D − (N + k·D)` in `[0, D)`, from
+///   one unsigned division (of `N + D − 1` for `N ≥ 0`, of `−N` otherwise); the step's
+///   floor quotient and remainder by `D` of `16·dx` (of `−16·dx + D − 1` for a negative
+///   one, as `small_floor_divmod32` takes it). Every quotient and remainder is the one
+///   `floor_divmod32` finds, whatever the path.
+/// - The edges: the long one (a, c) and the short one, (a, b) above the split or (b, c) where
+///   the split row is the first, at the first row, on their sides (the short one at `slot`);
+///   the lower one (b, c) at the split row where it lies strictly between the first row and
+///   the end, else the words of six registers (any words: the row loop reads the lower edge
+///   only after `upper` rows, and `upper` is then `rows`).
+///
+/// Every denominator is positive, as in `thumb2::triangle_runs`.
+///
+/// [`ScreenTriangle`]: super::ScreenTriangle
+/// [`PIPELINE_LIMIT`]: crate::raster::PIPELINE_LIMIT
+///
+/// # Safety
+/// `p` points to three [`ScreenPoint`]s and `block` is valid for writes of a [`RowBlock`],
+/// borrowed by nothing else for the call.
+#[unsafe(naked)]
+#[allow(unsafe_code)]
+unsafe extern "C" fn runs_of(
+    p: *const ScreenPoint,
+    block: *mut RowBlock,
+    y0: i32,
+    y1: i32,
+    side: i32,
+) -> i32 {
+    core::arch::naked_asm!(
+        "push {{r4, r5, r6, r7, lr}}",
+        // The points in r12; the long edge's side in r7: −1 where it lies on the left (an
+        // area of 0 or more, its high word's sign), else 0.
+        "mov r12, r0",
+        "ldr r7, [sp, #20]",
+        "asrs r7, r7, #31",
+        "mvns r7, r7",
+        // Keys 4·y + i in r4 to r6, sorted.
+        "ldr r4, [r0, #4]",
+        "ldr r5, [r0, #12]",
+        "ldr r6, [r0, #20]",
+        "lsls r4, r4, #2",
+        "lsls r5, r5, #2",
+        "adds r5, #1",
+        "lsls r6, r6, #2",
+        "adds r6, #2",
+        swap_if_greater!("r4", "r5"),
+        swap_if_greater!("r5", "r6"),
+        swap_if_greater!("r4", "r5"),
+        // The first row y (r2) and the row past the last (r3); none unless rows > 0.
+        first_row!("r4"),
+        "cmp r0, r2",
+        "ble 1f",
+        "movs r2, r0",
+        "1:",
+        first_row!("r6"),
+        "cmp r0, r3",
+        "bge 1f",
+        "movs r3, r0",
+        "1:",
+        "subs r0, r3, r2",
+        "bgt 1f",
+        "movs r0, #0",
+        "1:",
+        "str r0, [r1, #{rows}]",
+        "ble 9f",
+        "str r0, [r1, #{upper}]",
+        // The short edge's place: the right edge's where the long edge lies on the left.
+        "movs r0, #{right}",
+        "ands r0, r7",
+        "str r0, [r1, #{slot}]",
+        // The split row (r0).
+        first_row!("r5"),
+        "cmp r0, r2",
+        "bge 1f",
+        "movs r0, r2",
+        "1:",
+        "cmp r0, r3",
+        "ble 1f",
+        "movs r0, r3",
+        "1:",
+        // The sorted points' addresses in r4 to r6 (p + 8·(key & 3)), the block in r7, the
+        // first row's sample line 16·y + 8 and y itself on the stack.
+        "lsls r4, r4, #30",
+        "lsrs r4, r4, #27",
+        "add r4, r12",
+        "lsls r5, r5, #30",
+        "lsrs r5, r5, #27",
+        "add r5, r12",
+        "lsls r6, r6, #30",
+        "lsrs r6, r6, #27",
+        "add r6, r12",
+        "movs r7, r1",
+        "lsls r1, r2, #4",
+        "adds r1, #8",
+        "push {{r1, r2}}",
+        "cmp r0, r2",
+        "beq 3f",
+        "cmp r0, r3",
+        "beq 4f",
+        // A split: upper = split − y, and the lower edge (b, c) at the split row.
+        "subs r1, r0, r2",
+        "str r1, [r7, #{upper}]",
+        "lsls r2, r0, #4",
+        "adds r2, #8",
+        "movs r0, r5",
+        "movs r1, r6",
+        "movs r3, r7",
+        "adds r3, #{lower}",
+        "bl 20f",
+        "b 5f",
+        // No split: the lower edge's words any (never read); the short edge (a, b) where the
+        // split row is the end, (b, c) where it is the first.
+        "4:",
+        "movs r3, r7",
+        "adds r3, #{lower}",
+        "stm r3!, {{r0, r1, r2, r4, r5}}",
+        "5:",
+        "movs r0, r4",
+        "movs r1, r5",
+        "b 6f",
+        "3:",
+        "movs r3, r7",
+        "adds r3, #{lower}",
+        "stm r3!, {{r0, r1, r2, r4, r5}}",
+        "movs r0, r5",
+        "movs r1, r6",
+        "6:",
+        "ldr r2, [sp]",
+        "ldr r3, [r7, #{slot}]",
+        "adds r3, r3, r7",
+        "bl 20f",
+        // The long edge (a, c) on the other side.
+        "movs r0, r4",
+        "movs r1, r6",
+        "ldr r2, [sp]",
+        "ldr r3, [r7, #{slot}]",
+        "subs r3, r7, r3",
+        "adds r3, #{right}",
+        "bl 20f",
+        "pop {{r1, r2}}",
+        "9:",
+        "movs r0, r2",
+        "pop {{r4, r5, r6, r7, pc}}",
+        // The edge from the point at r0 to the point at r1 at sample line r2, its five words
+        // (value, remainder, denominator, whole step, remainder's step) stored from r3; r4 to
+        // r7 kept. The usual paths fall through: an edge set up at its first row, a
+        // numerator of 0 or more, a step of 0 or more.
+        "20:",
+        "push {{r4, r5, r6, r7, lr}}",
+        "ldm r0!, {{r4, r5}}",
+        "ldm r1!, {{r6, r7}}",
+        // dx (r6), dy (r7), t (r5), x (r4); k (r2) and N's first factor.
+        "subs r6, r6, r4",
+        "subs r7, r7, r5",
+        "subs r5, r2, r5",
+        "subs r4, #8",
+        "asrs r2, r4, #4",
+        "cmp r5, #16",
+        "bhs 21f",
+        "lsls r4, r4, #28",
+        "lsrs r4, r4, #28",
+        "22:",
+        "muls r4, r7, r4",
+        "muls r5, r6, r5",
+        "lsls r7, r7, #4",
+        "adds r0, r4, r5",
+        "bmi 23f",
+        // N ≥ 0: the quotient and remainder of N + D − 1; value k + q, remainder D − 1 − r.
+        "adds r0, r0, r7",
+        "subs r0, #1",
+        "bl 40f",
+        "adds r4, r2, r1",
+        "subs r5, r7, #1",
+        "subs r5, r5, r0",
+        "24:",
+        "stm r3!, {{r4, r5}}",
+        // The step 16·dx by D, floored.
+        "lsls r0, r6, #4",
+        "bmi 25f",
+        "bl 40f",
+        "26:",
+        "str r7, [r3]",
+        "str r1, [r3, #4]",
+        "str r0, [r3, #8]",
+        "pop {{r4, r5, r6, r7, pc}}",
+        // Not at its first row: k = 0, N from x itself.
+        "21:",
+        "movs r2, #0",
+        "b 22b",
+        // N < 0: the quotient and remainder of −N; value k − q, remainder r.
+        "23:",
+        "rsbs r0, r0, #0",
+        "bl 40f",
+        "subs r4, r2, r1",
+        "movs r5, r0",
+        "b 24b",
+        // A negative step: those of −16·dx + D − 1, the quotient negated and the remainder
+        // D − 1 − r (as `small_floor_divmod32` takes it).
+        "25:",
+        "rsbs r0, r0, #0",
+        "adds r0, r0, r7",
+        "subs r0, #1",
+        "bl 40f",
+        "rsbs r1, r1, #0",
+        "subs r2, r7, #1",
+        "subs r0, r2, r0",
+        "b 26b",
+        // ⌊n / d⌋ into r1 and n mod d into r0 for n in r0 and d in r7 (unsigned, d > 0):
+        // sixteen subtractions at most, in fours (the quotients of the usual edge are a
+        // few), then the long division at `30:` for the rest.
+        "40:",
+        "movs r1, #0",
+        "41:",
+        subtract!(),
+        subtract!(),
+        subtract!(),
+        subtract!(),
+        "cmp r1, #16",
+        "bne 41b",
+        "b 30f",
+        "49:",
+        "bx lr",
+        // The rest of a quotient beyond sixteen (r1 holds 16 of it, r0 what is left of the
+        // numerator): the largest multiple d·2^j not above half of it in r4 (its bit in r5),
+        // then one subtraction tried for each bit down to d; r2 kept.
+        "30:",
+        "push {{r2}}",
+        "movs r4, r7",
+        "movs r5, #1",
+        "lsrs r2, r0, #1",
+        "31:",
+        "cmp r4, r2",
+        "bhi 32f",
+        "lsls r4, r4, #1",
+        "lsls r5, r5, #1",
+        "b 31b",
+        "32:",
+        "cmp r0, r4",
+        "blo 33f",
+        "subs r0, r0, r4",
+        "adds r1, r1, r5",
+        "33:",
+        "lsrs r4, r4, #1",
+        "lsrs r5, r5, #1",
+        "bne 32b",
+        "pop {{r2}}",
+        "bx lr",
+        rows = const offset_of!(Runs, rows),
+        upper = const offset_of!(Runs, upper),
+        slot = const offset_of!(RowBlock, slot),
+        right = const EDGE,
+        lower = const 2 * EDGE,
+    )
+}
+
+/// `TriangleRows::runs` of `rows_in_range` for the points `p` (a `ScreenTriangle`'s), whose
+/// doubled signed area `area` is not 0, in the rows `y0..y1`, set up by [`runs_of`]: written
+/// into `block`'s runs, every field of them, and its `slot` (the lower edge's place: the right
+/// edge's where the long edge lies on the left, else the left's), the first row returned;
+/// `rows` is 0 (and nothing else written) where the triangle covers none of those rows.
+///
+/// # Safety
+/// `block` is valid for writes of a `RowBlock` (its memory need not hold one) and borrowed
+/// by nothing else for the call.
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(super) unsafe fn triangle_runs(
+    p: &[ScreenPoint; 3],
+    area: i64,
+    (y0, y1): (i32, i32),
+    block: *mut RowBlock,
+) -> i32 {
+    // SAFETY:
+    // - Calling convention: `runs_of` is `extern "C"` (AAPCS) and keeps it: it saves r4 to
+    //   r7 and the return address on entry (its edge routine too, for the calls it makes
+    //   itself) and restores them on return (r0 to r3, r12 and the flags are the caller's to
+    //   lose), uses the stack only for that and two words of its own (balanced), and returns
+    //   with `pop {.., pc}`; its arguments come in r0 to r3 and the fifth on the stack.
+    // - Memory: it reads the six words of `p` (borrowed; at offsets 0 to 20 by its layout,
+    //   asserted below), each point at `p + 8·i` for an index `i = key & 3` of keys made from
+    //   the indices 0, 1 and 2 and only moved about, and writes words of `block` (valid for
+    //   writes and unshared, the caller's contract): its runs' three edges (15 words),
+    //   `upper` and `rows`, and its `slot`; nothing else.
+    // - Values: every field written is an i32 or u32 (any word), `slot` 0 or `EDGE`.
+    // - Termination: the subtractions stop after sixteen; the long division's doubling stops
+    //   below half the numerator (below 2³¹, so never wraps), its halving after as many
+    //   steps.
+    unsafe { runs_of(p.as_ptr(), block, y0, y1, (area >> 32) as i32) }
+}
+
+// The layouts `runs_of` reads and writes: points of two words (x, y); the runs' edges of
+// five words from the block's start, then `upper` and `rows` within reach of its loads.
+const _: () = {
+    assert!(size_of::<ScreenPoint>() == 8 && offset_of!(ScreenPoint, y) == 4);
+    assert!(offset_of!(ScreenPoint, x) == 0 && EDGE == 20);
+};
 
 /// The rows of a triangle in `block` (see [`RowBlock`]) through the naked function of `T` and
 /// `K` (`clamp` is not read: see [`WITHOUT_CLAMPS`]).
