@@ -313,7 +313,12 @@ $stages
   target instead of made for each triangle, and 1.2% fewer again with that block not
   cleared before each triangle (its runs from the assembly, every other field written once
   into uninitialised memory); checked on random triangles of every case by the
-  \`variants\` preset), then flat shading. By \`FlatKept\`, as here, from the face's normal
+  \`variants\` preset; on the M0 the same in one naked function of Thumb-1,
+  \`thumb1::triangle_runs\`, with the exact walks its row loop steps, each edge's quotients
+  by subtraction and past sixteen by a long division of its own: about 257 instructions a
+  triangle, 87 fewer than the compiled set-up with its edges' calls and the runs' copy into
+  the row loop's block, the M0's frame 3.65% fewer, 2.278 M → 2.195 M, for 304 bytes), then
+  flat shading. By \`FlatKept\`, as here, from the face's normal
   kept in the mesh
   (\`Mesh::with_face_normals\`, once: its direction at 15 bits and the reciprocal of its
   length, 12 bytes a triangle): a product with each light, which decides whether the face
@@ -497,8 +502,14 @@ $stages
   interleaved with their depths and written in place by the walk in assembly, read in
   place by the target (the M4 0.34% fewer, the M0 1% more), the depth walk's result written
   into the row loop's block by the assembly (0.02%), the count of drawn triangles kept in a
-  register (the M0 0.13% fewer, the M4 0.66% more). x86-64 (1.175 M) and the Cortex-M0
-  (2.278 M) are not reached: before that round, with the pixels at what they took (0.22 M on
+  register (the M0 0.13% fewer, the M4 0.66% more). Since, on the M0, a triangle's rows set
+  up in Thumb-1 (\`thumb1::triangle_runs\`, above: 3.65%); not kept there: the depth walk's
+  set-up in line beside it (1.0% fewer for 1.27 KB more flash, the set-up then in two
+  copies), or out of line taking the triangle itself (0.06% more), the numerators' test of
+  short sides made once for all four products (0.37% more, 190 bytes), and the transform's
+  high parts rounded with the low parts' sum taken from the whole coordinates' (2.1% more:
+  more values live at once). x86-64 (1.175 M) and the Cortex-M0
+  (2.195 M) are not reached: before that round, with the pixels at what they took (0.22 M on
   the M4), 1.0 M left
   0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 93% of what they took then (on x86-64, whose rows and pixels with the \`asm\` loop

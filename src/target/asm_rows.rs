@@ -85,6 +85,46 @@ const _: () = {
     assert!(offset_of!(RowBlock, failed) == offset_of!(RowBlock, fragments) + 4);
 };
 
+/// In `triangle_runs` (both Cortex-M cores'), the corners' keys `4·y + i` loaded from the
+/// points at `$p` (two words each, x then y) into `$ka`, `$kb` and `$kc` (register names, or
+/// operands as `"{ka}"`), for the sort that follows: flag-setting forms, which Thumb-1 has
+/// and Thumb-2 takes too (the flags are set again by the sort's first comparison).
+#[cfg(fixed3d_thumb)]
+#[rustfmt::skip]
+macro_rules! corner_keys {
+    ($p:literal, $ka:literal, $kb:literal, $kc:literal) => {
+        concat!(
+            "ldr ", $ka, ", [", $p, ", #4]\n",
+            "ldr ", $kb, ", [", $p, ", #12]\n",
+            "ldr ", $kc, ", [", $p, ", #20]\n",
+            "lsls ", $ka, ", ", $ka, ", #2\n",
+            "lsls ", $kb, ", ", $kb, ", #2\n",
+            "adds ", $kb, ", ", $kb, ", #1\n",
+            "lsls ", $kc, ", ", $kc, ", #2\n",
+            "adds ", $kc, ", ", $kc, ", #2\n",
+        )
+    };
+}
+#[cfg(fixed3d_thumb)]
+pub(super) use corner_keys;
+
+/// In `triangle_runs`, the first row at or below the point of key `$k` into `$row`:
+/// `(y + 7) >> 4` of its `y = k >> 2` (`first_centre_from32`), in flag-setting forms (see
+/// [`corner_keys`]).
+#[cfg(fixed3d_thumb)]
+#[rustfmt::skip]
+macro_rules! first_row {
+    ($row:literal, $k:literal) => {
+        concat!(
+            "asrs ", $row, ", ", $k, ", #2\n",
+            "adds ", $row, ", ", $row, ", #7\n",
+            "asrs ", $row, ", ", $row, ", #4\n",
+        )
+    };
+}
+#[cfg(fixed3d_thumb)]
+pub(super) use first_row;
+
 /// Fills the rows `triangle` of a triangle whose every pixel has the colour whose two bytes
 /// [`color_bits`] gave as `bits`, clipped to the columns `0..width` (those of a
 /// [`ColorDepth`](super::ColorDepth)'s clip rectangle, always its buffers': not compared here,

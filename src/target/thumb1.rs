@@ -51,7 +51,7 @@
 use core::mem::{offset_of, size_of};
 
 use super::asm_faces::FrontFaces;
-use super::asm_rows::{RowBlock, EDGE};
+use super::asm_rows::{corner_keys, first_row, RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount};
 use crate::pipeline::FaceStop;
 use crate::raster::{Runs, ScreenPoint};
@@ -259,19 +259,6 @@ macro_rules! swap_if_greater {
     };
 }
 
-/// In [`runs_of`], the first row at or below the point of key `$k` into r0: `(y + 7) >> 4` of
-/// its `y = k >> 2` (`first_centre_from32`).
-#[rustfmt::skip]
-macro_rules! first_row {
-    ($k:literal) => {
-        concat!(
-            "asrs r0, ", $k, ", #2\n",
-            "adds r0, #7\n",
-            "asrs r0, r0, #4\n",
-        )
-    };
-}
-
 /// In [`runs_of`]'s division (at `40:`), one subtraction of the divisor (r7) from the
 /// numerator (r0), counted in the quotient (r1), unless the numerator is below it: then the
 /// division ends (at `49:`).
@@ -340,24 +327,17 @@ unsafe extern "C" fn runs_of(
         "asrs r7, r7, #31",
         "mvns r7, r7",
         // Keys 4·y + i in r4 to r6, sorted.
-        "ldr r4, [r0, #4]",
-        "ldr r5, [r0, #12]",
-        "ldr r6, [r0, #20]",
-        "lsls r4, r4, #2",
-        "lsls r5, r5, #2",
-        "adds r5, #1",
-        "lsls r6, r6, #2",
-        "adds r6, #2",
+        corner_keys!("r0", "r4", "r5", "r6"),
         swap_if_greater!("r4", "r5"),
         swap_if_greater!("r5", "r6"),
         swap_if_greater!("r4", "r5"),
         // The first row y (r2) and the row past the last (r3); none unless rows > 0.
-        first_row!("r4"),
+        first_row!("r0", "r4"),
         "cmp r0, r2",
         "ble 1f",
         "movs r2, r0",
         "1:",
-        first_row!("r6"),
+        first_row!("r0", "r6"),
         "cmp r0, r3",
         "bge 1f",
         "movs r3, r0",
@@ -374,7 +354,7 @@ unsafe extern "C" fn runs_of(
         "ands r0, r7",
         "str r0, [r1, #{slot}]",
         // The split row (r0).
-        first_row!("r5"),
+        first_row!("r0", "r5"),
         "cmp r0, r2",
         "bge 1f",
         "movs r0, r2",

@@ -109,7 +109,7 @@
 use core::mem::{align_of, offset_of, size_of};
 
 use super::asm_faces::FrontFaces;
-use super::asm_rows::RowBlock;
+use super::asm_rows::{corner_keys, first_row, RowBlock};
 use super::depth::{DepthTest, FragmentCount, RoundedRows, LOOP_HALF_STEP};
 use super::surface::ScreenTriangle;
 use crate::math::{Mat4, Vec3};
@@ -536,19 +536,6 @@ macro_rules! swap_if_greater {
     };
 }
 
-/// In [`triangle_runs`], the first row at or below the point of key `$k` into `t1`:
-/// `(y + 7) >> 4` of its `y = k >> 2` (`first_centre_from32`).
-#[rustfmt::skip]
-macro_rules! first_row {
-    ($k:literal) => {
-        concat!(
-            "asr {t1}, {", $k, "}, #2\n",
-            "add {t1}, {t1}, #7\n",
-            "asr {t1}, {t1}, #4\n",
-        )
-    };
-}
-
 /// `TriangleRows::runs` (the other cores') of [`rows_in_range`] in one block of
 /// assembly, for the points `p` (within ±[`PIPELINE_LIMIT`], a [`ScreenTriangle`]'s), whose
 /// doubled signed area `area` is not 0 (so its sign is its high word's), in the rows
@@ -618,23 +605,16 @@ pub(super) unsafe fn triangle_runs(
             "mvn {side}, {side}, asr #31",
             "and {side}, {side}, #4",
             // Keys 4·y + i, sorted.
-            "ldr {ka}, [{p}, #4]",
-            "ldr {kb}, [{p}, #12]",
-            "ldr {kc}, [{p}, #20]",
-            "lsl {ka}, {ka}, #2",
-            "lsl {kb}, {kb}, #2",
-            "add {kb}, {kb}, #1",
-            "lsl {kc}, {kc}, #2",
-            "add {kc}, {kc}, #2",
+            corner_keys!("{p}", "{ka}", "{kb}", "{kc}"),
             swap_if_greater!("ka", "kb"),
             swap_if_greater!("kb", "kc"),
             swap_if_greater!("ka", "kb"),
             // The first row and the row past the last; none unless rows > 0.
-            first_row!("ka"),
+            first_row!("{t1}", "{ka}"),
             "cmp {t1}, {y}",
             "it gt",
             "movgt {y}, {t1}",
-            first_row!("kc"),
+            first_row!("{t1}", "{kc}"),
             "cmp {t1}, {ye}",
             "it lt",
             "movlt {ye}, {t1}",
@@ -647,7 +627,7 @@ pub(super) unsafe fn triangle_runs(
             "and {t1}, {side}, #4",
             "str {t1}, [{s}, #{slot}]",
             // The split row.
-            first_row!("kb"),
+            first_row!("{t1}", "{kb}"),
             "cmp {t1}, {y}",
             "it lt",
             "movlt {t1}, {y}",
