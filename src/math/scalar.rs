@@ -53,20 +53,23 @@ pub(crate) const fn leading_zeros32(v: u32) -> u32 {
     }
 }
 
+/// `BYTE_ZEROS[i]` is `(i as u8).leading_zeros()`: the top byte's count for
+/// [`leading_zeros_by_halves`] (and the Cortex-M0's vertex loop in assembly).
+pub(crate) const BYTE_ZEROS: [u8; 256] = {
+    let mut t = [0u8; 256];
+    let mut i = 0;
+    while i < 256 {
+        t[i] = (i as u8).leading_zeros() as u8;
+        i += 1;
+    }
+    t
+};
+
 /// `v.leading_zeros()` by two comparisons and shifts (binary search, written out), then the top
 /// byte's own count from a table of 256 bytes (the Cortex-M0's frame 0.46% fewer instructions
 /// than a third step and a word of 2-bit counts for the top nibble, 190 bytes more).
 #[inline(always)]
 const fn leading_zeros_by_halves(v: u32) -> u32 {
-    const BYTE_ZEROS: [u8; 256] = {
-        let mut t = [0u8; 256];
-        let mut i = 0;
-        while i < 256 {
-            t[i] = (i as u8).leading_zeros() as u8;
-            i += 1;
-        }
-        t
-    };
     if v == 0 {
         return 32;
     }

@@ -278,6 +278,16 @@ impl Frame {
                 }
                 continue;
             }
+            // On Cortex-M0 the same with the split transform in assembly
+            // (`target::thumb1::project_split_in_words`).
+            #[cfg(all(feature = "asm", fixed3d_thumb1))]
+            if let (Some(h), Known::InWords, None) = (&split, known, normals) {
+                crate::target::project_split_in_words(h, map.half_sizes(), positions, these);
+                if k < 64 {
+                    inside |= 1 << k;
+                }
+                continue;
+            }
             for (i, (p, slot)) in positions.iter().zip(these).enumerate() {
                 let (code, pt, z) = if !NARROW_CORE && fits {
                     // Known short (`fits` implies the extent below 2²⁹): where products are

@@ -42,5 +42,7 @@ pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;
 pub use surface::{ColorDepth, Direct, RasterTarget, ScreenTriangle};
+#[cfg(all(feature = "asm", fixed3d_thumb1))]
+pub(crate) use thumb1::project_split_in_words;
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
 pub(crate) use thumb2::project_known_in_words;

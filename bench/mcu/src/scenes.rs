@@ -253,8 +253,9 @@ pub fn full_per_frame(
 /// `clipped`, the strict counted target with the eye so close that the tori cross the near
 /// plane and every side of the screen (spans clamped to the target's columns, polygons cut by
 /// the near plane), then [`random_mesh`] drawn whole (`triangles`) and, shrunk inside every
-/// clip plane, culled to its front faces (`front`).
-pub const VARIANTS: [&str; 7] = [
+/// clip plane, culled to its front faces (`front`), and last `full`'s vertex stage alone
+/// (`vertices`, see [`torus_vertices`]).
+pub const VARIANTS: [&str; 8] = [
     "less",
     "less-counted",
     "less-or-equal",
@@ -262,6 +263,7 @@ pub const VARIANTS: [&str; 7] = [
     "clipped",
     "triangles",
     "front",
+    "vertices",
 ];
 
 /// Triangles of the `triangles` variant's mesh ([`random_mesh`]), three vertices each.
@@ -353,6 +355,9 @@ pub fn variant(
     if name == "front" {
         return random_front_faces(random, f, cache, color, depth);
     }
+    if name == "vertices" {
+        return torus_vertices(mesh, f, cache);
+    }
     let objects = [
         Object::new(mesh, torus_model(f), ORANGE),
         Object::new(mesh, torus_model(f), Rgb888::new(40, 90, 255)),
@@ -385,6 +390,24 @@ pub fn variant(
         },
     )?;
     Some(stats.fragments.rotate_left(16) ^ stats.written)
+}
+
+/// The `vertices` variant: `full`'s torus in frame `f` through the vertex stage alone, the
+/// word a hash of every vertex it left in the cache (its screen position and its depth):
+/// the vertex loop's exact output (with `asm`, in assembly on both cores), of which the
+/// frame's colours show only part (a vertex's depth one unit off changes no colour).
+fn torus_vertices(mesh: &Mesh<'_>, f: u32, cache: &mut [ScreenVertex]) -> Option<u32> {
+    let objects = [Object::new(mesh, torus_model(f), ORANGE)];
+    let scene = Scene::new(&objects, sun());
+    frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
+    let mut h = Fnv::new();
+    for v in cache.iter().take(mesh.positions().len()) {
+        let p = v.point();
+        h.write(p.x as u32);
+        h.write(p.y as u32);
+        h.write(v.depth() as u32);
+    }
+    Some(h.0)
 }
 
 /// The `triangles` variant: [`random_mesh`] turned by frame `f` about x, both windings drawn

@@ -7,7 +7,9 @@
 //! row set-up on the Cortex-M4F, its Thumb-1 loop on the M0) checked against the host's
 //! (`tests/firmware.rs`); and the same random triangles shrunk inside every clip plane and
 //! culled to their front faces (`front`, every count in its hash), the triangle walk each
-//! core takes in assembly with `asm`. Not in footprint.md's table.
+//! core takes in assembly with `asm`; and `full`'s vertex stage alone (`vertices`, a hash
+//! of every vertex's position and depth), its vertex loop on either core in assembly with
+//! `asm`. Not in footprint.md's table.
 #![no_std]
 #![no_main]
 
