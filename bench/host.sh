@@ -471,9 +471,15 @@ $stages
   47 took two instructions a row (0.57% fewer, 1.0055 M → 0.9999 M; the shift the largest
   up to 16 that keeps points and coefficients in words, declined near \`fits_32_bits\`'
   bound, where the Rust loop takes the object). The
-  stage is about a sixth of the M0's frame, about 380 instructions a vertex
-  with the frame's matrices (about 345 in its loop), most of them the transform (about 135)
-  and the divisions (about 135 with the reciprocal). Not kept: Lambert's rounded dot product in
+  stage was about a sixth of the M0's frame, about 380 instructions a vertex
+  with the frame's matrices (about 330 in its loop), most of them the transform (about 135)
+  and the divisions (about 135 with the reciprocal); with the \`asm\` feature the M0 takes
+  such an object's vertices in a naked Thumb-1 function too
+  (\`thumb1::project_split_in_words\`: \`SplitTransform\`'s rows, each read by one \`ldm\`,
+  the high parts' sums pushed and the low parts' rounded onto them, then w's
+  \`ShortQuotients\` and the three rounded quotients), about 263 instructions a vertex: the
+  frame 3.6% fewer instructions (2.195 M → 2.115 M), about 870 bytes (checked by the
+  \`variants\` preset's \`vertices\`, a hash of every vertex's position and depth). Not kept: Lambert's rounded dot product in
   32-bit parts (no fewer instructions than three calls of the four-multiply product, 310
   bytes more); \`NewtonDirection\` on Cortex-M0 alone, with the reciprocal found only when
   a light first faces and no test before (1.7% there, 224 bytes less, the M4 unchanged),
@@ -503,13 +509,16 @@ $stages
   place by the target (the M4 0.34% fewer, the M0 1% more), the depth walk's result written
   into the row loop's block by the assembly (0.02%), the count of drawn triangles kept in a
   register (the M0 0.13% fewer, the M4 0.66% more). Since, on the M0, a triangle's rows set
-  up in Thumb-1 (\`thumb1::triangle_runs\`, above: 3.65%); not kept there: the depth walk's
+  up in Thumb-1 (\`thumb1::triangle_runs\`, above: 3.65%), and its vertex loop
+  (\`thumb1::project_split_in_words\`, above: 3.6%, 2.195 M → 2.115 M); not kept there: the depth walk's
   set-up in line beside it (1.0% fewer for 1.27 KB more flash, the set-up then in two
   copies), or out of line taking the triangle itself (0.06% more), the numerators' test of
   short sides made once for all four products (0.37% more, 190 bytes), and the transform's
   high parts rounded with the low parts' sum taken from the whole coordinates' (2.1% more:
-  more values live at once). x86-64 (1.175 M) and the Cortex-M0
-  (2.195 M) are not reached: before that round, with the pixels at what they took (0.22 M on
+  more values live at once), and the depth walk's set-up in line with the other paths'
+  walks by the reciprocal alone (1.4% fewer, 580 bytes, but \`gouraud\` 1.1% more and
+  \`display\` 0.7%). x86-64 (1.175 M) and the Cortex-M0
+  (2.115 M) are not reached: before that round, with the pixels at what they took (0.22 M on
   the M4), 1.0 M left
   0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 93% of what they took then (on x86-64, whose rows and pixels with the \`asm\` loop
@@ -541,9 +550,9 @@ $stages
   feature, which the firmware presets have: nine instructions a pixel, both stores
   predicated in one IT block, one index for both buffers, against the compiler's twelve, and
   13 for two in an uncounted span; 13 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
-  pixel against 10). On the M0 the vertex
-  stage (0.43 M, about 375
-  a vertex, of which the transform takes about 135 and the divisions by w about 135) and the depth
+  pixel against 10), and so is its vertex loop (about 263 a vertex, of which the transform
+  about 118 and the divisions by w about 140). On the M0 the vertex
+  stage and the depth
   walk's two divisions (8.3% of its frame, their reciprocal included) come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
