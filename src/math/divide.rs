@@ -663,7 +663,7 @@ fn reciprocal16(den: u32) -> u32 {
 /// `RECIPROCALS[i] = ⌊2⁴⁷ / ((128.5 + i) · 2²⁴)⌋`: `2⁴⁷ / d` to 8 bits for a normalised `d`
 /// by its top byte (256 bytes), the seed of both [`newton_reciprocal`] and
 /// [`reciprocal16`].
-pub(crate) const RECIPROCALS: [u16; 128] = {
+pub(crate) static RECIPROCALS: [u16; 128] = {
     let mut t = [0u16; 128];
     let mut i = 0;
     while i < 128 {

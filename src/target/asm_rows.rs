@@ -9,6 +9,8 @@ use core::ptr::{addr_of, addr_of_mut};
 
 use super::depth::{DepthTest, FragmentCount, LoopWord, RoundedRows};
 #[cfg(fixed3d_thumb1)]
+use super::surface::ScreenTriangle;
+#[cfg(fixed3d_thumb1)]
 use super::thumb1 as core_rows;
 #[cfg(fixed3d_thumb2)]
 use super::thumb2 as core_rows;
@@ -182,15 +184,17 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     true
 }
 
-/// `solid_rows` of the triangle `p` (a [`ScreenTriangle`](super::ScreenTriangle)'s points,
+/// `solid_rows` of the triangle `p` (a [screen triangle](super::ScreenTriangle)'s points,
 /// `area` its doubled signed area) in the rows `y0..y1`, the buffers' first: its runs set up
-/// by `triangle_runs` in assembly, its depth walk by `depth` from its first row. False, with
-/// nothing drawn, where `solid_rows` declines the triangle or `depth` gives no walk; true
-/// where it covers none of the rows.
+/// by `triangle_runs` in assembly, its depth walk by `depth` from its first row (on
+/// Cortex-M0 by `thumb1::walk_into` of `triangle` first, which writes a small triangle's walk
+/// into the block itself). False, with nothing drawn, where `solid_rows` declines the
+/// triangle or `depth` gives no walk; true where it covers none of the rows.
 #[cfg(fixed3d_thumb)]
 #[inline(always)]
 #[allow(unsafe_code, clippy::too_many_arguments)]
 pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
+    #[cfg(fixed3d_thumb1)] triangle: &ScreenTriangle,
     p: &[ScreenPoint; 3],
     area: i64,
     (y0, y1): (i32, i32),
@@ -218,25 +222,47 @@ pub(super) fn solid_triangle<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWor
     if rows == 0 {
         return true;
     }
-    let Some((walk, _)) = depth(y) else {
-        return false;
-    };
+    // SAFETY: `block` as above (`walk_into` writes three of its fields, or none).
+    #[cfg(fixed3d_thumb1)]
+    let written = unsafe { core_rows::walk_into(triangle, y, block) };
+    #[cfg(not(fixed3d_thumb1))]
+    let written = false;
+    if !written {
+        let Some((walk, _)) = depth(y) else {
+            return false;
+        };
+        // SAFETY: `block` as above.
+        unsafe { write_walk(block, &walk) };
+    }
     // This core has a loop without the clamps: spans that cannot cross the columns take it
     // (the reference frame's triangles all do: 4 instructions a row fewer, the frame 1.05%
     // fewer instructions, for about 200 bytes of flash).
     let clamp = !(core_rows::WITHOUT_CLAMPS && within_columns(p, columns_bound(w)));
     let first = y.wrapping_sub(y0) as u32;
-    // SAFETY: as above; with these and the runs (all of them written, rows being left) every
-    // field but the seven `run_block` writes holds a valid value, as it requires.
+    // SAFETY: as above; with these, the walk's and the runs (all of them written, rows being
+    // left) every field but the seven `run_block` writes holds a valid value, as it requires.
     unsafe {
-        addr_of_mut!((*block).step_x).write(walk.step_x.to_i32());
-        addr_of_mut!((*block).step_y).write(walk.step_y.to_i32());
-        addr_of_mut!((*block).row_z).write(walk.row.to_i32());
         addr_of_mut!((*block).width).write(w);
         addr_of_mut!((*block).bits).write(bits);
         run_block::<C, T, K>(block, clamp, colors, depths, first, width, stats);
     }
     true
+}
+
+/// Writes `walk` into the row loop's block at `block` (its `step_x`, `step_y` and `row_z`).
+///
+/// # Safety
+/// `block` is valid for writes of a `RowBlock` (its memory need not hold one), unshared.
+#[cfg(fixed3d_thumb)]
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(super) unsafe fn write_walk<W: LoopWord>(block: *mut RowBlock, walk: &RoundedRows<W>) {
+    // SAFETY: writes of three fields in place, as the caller's contract allows.
+    unsafe {
+        addr_of_mut!((*block).step_x).write(walk.step_x.to_i32());
+        addr_of_mut!((*block).step_y).write(walk.step_y.to_i32());
+        addr_of_mut!((*block).row_z).write(walk.row.to_i32());
+    }
 }
 
 /// The block's width for buffers of `width` columns: rows of fewer than 2¹⁶ pixels (every

@@ -378,8 +378,8 @@ impl<W: LoopWord> RoundedRows<W> {
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
     /// nearly edge-on, which the general loop takes). `short_sides`: every side known to lie
     /// within ±2¹⁵ (see [`Plane::numerators_given`]).
-    #[cfg_attr(fixed3d_thumb2, inline(always))]
-    #[cfg_attr(not(fixed3d_thumb2), inline)]
+    #[cfg_attr(fixed3d_thumb, inline(always))]
+    #[cfg_attr(not(fixed3d_thumb), inline)]
     pub(crate) fn new(
         p: &[ScreenPoint; 3],
         z: [i32; 3],

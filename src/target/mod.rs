@@ -41,6 +41,8 @@ pub use depth::{
 pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
 pub use grid::BufferError;
+#[doc(hidden)]
+pub use surface::solid_depth_walk;
 pub use surface::{ColorDepth, Direct, RasterTarget, ScreenTriangle};
 #[cfg(all(feature = "asm", fixed3d_thumb1))]
 pub(crate) use thumb1::project_split_in_words;

@@ -8,19 +8,23 @@ use embedded_graphics::primitives::Rectangle;
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
 use super::asm_rows;
 use super::depth::{
-    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
-    SolidColor, Uncounted,
+    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LoopWord, NativeWord,
+    RoundedRows, SolidColor, Uncounted,
 };
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
+#[cfg(all(feature = "asm", fixed3d_thumb1))]
+use super::thumb1 as core_walk;
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
-use super::thumb2;
+use super::thumb2 as core_walk;
+use crate::math::is_short;
 use crate::pipeline::Stats;
 #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
 use crate::raster::TriangleRows;
 use crate::raster::{
-    rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans,
+    doubled_area, rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span,
+    TriangleSpans, PIPELINE_LIMIT,
 };
 use crate::shade::Paint;
 
@@ -32,7 +36,7 @@ pub struct ScreenTriangle {
     pub(super) z: [i32; 3],
     pub(super) area: i64,
     /// Every side known to lie within ±2¹⁵ (its vertices inside every clip plane).
-    short_sides: bool,
+    pub(super) short_sides: bool,
 }
 
 impl ScreenTriangle {
@@ -75,8 +79,8 @@ impl ScreenTriangle {
 /// (`solid_triangle`), so that only the triangles of other paints and those it declines come
 /// here (in line there too, the M4's frame measured 0.28% more instructions, for 70 bytes
 /// less).
-#[cfg_attr(all(feature = "asm", fixed3d_thumb2), inline(never))]
-#[cfg_attr(not(all(feature = "asm", fixed3d_thumb2)), inline(always))]
+#[cfg_attr(all(feature = "asm", fixed3d_thumb), inline(never))]
+#[cfg_attr(not(all(feature = "asm", fixed3d_thumb)), inline(always))]
 fn rounded_rows(
     p: &[ScreenPoint; 3],
     z: [i32; 3],
@@ -85,6 +89,49 @@ fn rounded_rows(
     short_sides: bool,
 ) -> Option<(RoundedRows<NativeWord>, i32)> {
     RoundedRows::<NativeWord>::new(p, z, area, y, short_sides)
+}
+
+/// The depth walk of a solid triangle into u16 depth on row `y`, as
+/// [`ColorDepth`]'s row loops in assembly take it: with the `asm` feature on Cortex-M a small
+/// triangle's set up in assembly (`depth_walk`), the others' (and every core's without it) in
+/// Rust, the same walks.
+#[cfg_attr(not(all(feature = "asm", fixed3d_thumb)), allow(dead_code))]
+#[inline(always)]
+fn solid_walk(triangle: &ScreenTriangle, y: i32) -> Option<(RoundedRows<NativeWord>, i32)> {
+    #[cfg(all(feature = "asm", fixed3d_thumb))]
+    if let Some(walk) = core_walk::depth_walk(triangle, y) {
+        return Some((walk, walk.step_x));
+    }
+    let (p, z, area) = (&triangle.p, triangle.z, triangle.area);
+    rounded_rows(p, z, area, y, triangle.short_sides)
+}
+
+/// The depth walk a solid triangle's pixels take in a u16 target (with the `asm` feature on
+/// Cortex-M set up in assembly where it can), for the triangle `p` with depths `z` (Q1.30) on
+/// row `y`: its value at column 0 and its steps along a row and down a column, as words;
+/// `None` for a triangle the pipeline never hands a target (a point beyond its range, a
+/// depth outside [0, 2³⁰], zero area) or whose steps do not fit words. Not a stable API: the
+/// firmware benchmark's check of the assembly against the host's walks, bit for bit.
+#[doc(hidden)]
+#[must_use]
+pub fn solid_depth_walk(p: [ScreenPoint; 3], z: [i32; 3], y: i32) -> Option<[i32; 3]> {
+    let within = |q: &ScreenPoint| {
+        q.x.unsigned_abs() <= PIPELINE_LIMIT as u32 && q.y.unsigned_abs() <= PIPELINE_LIMIT as u32
+    };
+    if !p.iter().all(within) || !z.iter().all(|v| (0..=1 << 30).contains(v)) {
+        return None;
+    }
+    let [a, b, c] = p;
+    let area = doubled_area(a, b, c);
+    if area == 0 {
+        return None;
+    }
+    let short = |u: ScreenPoint, v: ScreenPoint| {
+        is_short(v.x.wrapping_sub(u.x)) && is_short(v.y.wrapping_sub(u.y))
+    };
+    let triangle = ScreenTriangle::new(p, z, area, short(a, b) && short(b, c) && short(a, c));
+    let (walk, _) = solid_walk(&triangle, y)?;
+    Some([walk.row, walk.step_x, walk.step_y].map(LoopWord::to_i32))
 }
 
 /// Something the triangle filler can write spans into: [`ColorDepth`] or [`Direct`].
@@ -333,21 +380,26 @@ where
             return false;
         };
         let colors = self.color.cells_all_mut();
-        let (p, z, area) = (&triangle.p, triangle.z, triangle.area);
-        let short_sides = triangle.short_sides;
         asm_rows::solid_triangle::<C, T, K, _>(
-            p,
-            area,
-            (self.clip.y0, self.clip.y1),
-            // On Cortex-M3/M4 small triangles' walks in assembly, the others' in Rust (the
-            // same walks).
-            #[cfg(fixed3d_thumb2)]
-            |y| match thumb2::depth_walk(triangle, y) {
-                Some(walk) => Some((walk, walk.step_x)),
-                None => rounded_rows(p, z, area, y, short_sides),
-            },
             #[cfg(fixed3d_thumb1)]
-            |y| rounded_rows(p, z, area, y, short_sides),
+            triangle,
+            &triangle.p,
+            triangle.area,
+            (self.clip.y0, self.clip.y1),
+            // On Cortex-M0 the walk of a small triangle is written into the row loop's block
+            // by the assembly itself, and this is the others'.
+            #[cfg(fixed3d_thumb1)]
+            |y| {
+                rounded_rows(
+                    &triangle.p,
+                    triangle.z,
+                    triangle.area,
+                    y,
+                    triangle.short_sides,
+                )
+            },
+            #[cfg(fixed3d_thumb2)]
+            |y| solid_walk(triangle, y),
             colors,
             depths,
             width,

@@ -32,7 +32,8 @@
 //! triangle (an edge 32 and two divisions of about 13 each), about 87 fewer than the
 //! compiled `rows_in_range` and `TriangleRows::runs` with their edges' calls and the runs'
 //! copy into the block (written in place here): the reference frame on the Cortex-M0 3.65%
-//! fewer instructions (2.278 M → 2.195 M), 304 bytes more flash. Its
+//! fewer instructions (2.278 M → 2.195 M), 304 bytes more flash; 244 since the divisions
+//! are in line and an edge keeps the sample line for the next (0.55% fewer). Its
 //! output is checked under emulation by every preset's hash: the `bands` preset and the
 //! `variants` preset's `clipped` and `triangles` take its edges set up below their first row
 //! (started by a band's or the clip's first row), its long division and both signs of each
@@ -46,9 +47,24 @@
 //! each row read by one `ldm` from a block of the object's constants, where the compiled loop
 //! reloads them from the stack: about 260 instructions a vertex where it took about 330,
 //! the reference frame on the Cortex-M0 3.6% fewer instructions (2.195 M → 2.115 M), about
-//! 870 bytes more flash. Checked under emulation by the `variants` preset's `vertices` (every
-//! vertex's position and depth, which the frames' colours show only in part) and every
-//! preset's frames.
+//! 870 bytes more flash (256 since the seed tables' addresses come from the literal pool and
+//! a half size is kept for its quotient: 0.33%). Checked under emulation by the `variants`
+//! preset's `vertices` (every vertex's position and depth, which the frames' colours show
+//! only in part) and every preset's frames.
+//!
+//! A small triangle's depth walk ([`depth_walk`], a naked function writing into the row
+//! loop's block itself): `RoundedRows::new` as the compiled code takes it on this core, its
+//! numerators' four products of a depth difference and a short side from 16-bit halves,
+//! its steps by `ShortQuotients`' two 15-bit digits from the area's 16-bit reciprocal, then
+//! the row's start; a triangle whose doubled area reaches 2²⁹, with a long side or a step
+//! beyond 2³⁰ left to the compiled set-up, the same walks. About 320 instructions a
+//! triangle where the compiled set-up took about 410 and its call: the reference frame on
+//! the Cortex-M0 3.75% fewer instructions (2.115 M → 2.036 M), about 1 KB more flash; with
+//! the trims after it (the shift of `ShortQuotients::top` taken by one branch, the division
+//! of the row set-up in line, the walk written into the block, and the others above) 1.993 M,
+//! within issue #7's goal of 2.0 M. Checked under emulation by the `variants` preset's
+//! `walks` (the walks of random triangles, every word, which the frames show only in part:
+//! a walk one unit off changes few depths).
 //!
 //! The triangle walk's skip of back faces (`FrontFaces::next_stop`, on the walk's state in
 //! asm_faces.rs): for an object inside every clip plane culled to its front faces, each
@@ -61,10 +77,12 @@
 //! (2.352 M → 2.287 M), 450 bytes more flash.
 
 use core::mem::{offset_of, size_of};
+use core::ptr::addr_of;
 
 use super::asm_faces::FrontFaces;
 use super::asm_rows::{corner_keys, first_row, RowBlock, EDGE};
-use super::depth::{DepthTest, FragmentCount};
+use super::depth::{DepthTest, FragmentCount, RoundedRows, LOOP_HALF_STEP};
+use super::surface::ScreenTriangle;
 use crate::math::{SplitTransform, Vec3, BYTE_ZEROS, RECIPROCALS};
 use crate::pipeline::{FaceStop, ScreenVertex};
 use crate::raster::{Runs, ScreenPoint};
@@ -293,7 +311,7 @@ macro_rules! swap_if_greater {
     };
 }
 
-/// In [`runs_of`]'s division (at `40:`), one subtraction of the divisor (r7) from the
+/// In [`runs_of`]'s division (`divide!`), one subtraction of the divisor (r7) from the
 /// numerator (r0), counted in the quotient (r1), unless the numerator is below it: then the
 /// division ends (at `49:`).
 #[rustfmt::skip]
@@ -304,6 +322,28 @@ macro_rules! subtract {
             "blo 49f\n",
             "subs r0, r0, r7\n",
             "adds r1, #1\n",
+        )
+    };
+}
+
+/// In [`runs_of`]'s edge, ⌊n / d⌋ into r1 and n mod d into r0 for n in r0 and d in r7
+/// (unsigned, d > 0), in line: sixteen subtractions at most, in fours (the quotients of the
+/// usual edge are a few), then the long division at `30:` for the rest (a call: the edge
+/// keeps its return address on the stack).
+#[rustfmt::skip]
+macro_rules! divide {
+    () => {
+        concat!(
+            "movs r1, #0\n",
+            "41:\n",
+            subtract!(),
+            subtract!(),
+            subtract!(),
+            subtract!(),
+            "cmp r1, #16\n",
+            "bne 41b\n",
+            "bl 30f\n",
+            "49:\n",
         )
     };
 }
@@ -448,10 +488,9 @@ unsafe extern "C" fn runs_of(
         "ldr r3, [r7, #{slot}]",
         "adds r3, r3, r7",
         "bl 20f",
-        // The long edge (a, c) on the other side.
+        // The long edge (a, c) on the other side, at the same sample line (r2, kept).
         "movs r0, r4",
         "movs r1, r6",
-        "ldr r2, [sp]",
         "ldr r3, [r7, #{slot}]",
         "subs r3, r7, r3",
         "adds r3, #{right}",
@@ -461,11 +500,11 @@ unsafe extern "C" fn runs_of(
         "movs r0, r2",
         "pop {{r4, r5, r6, r7, pc}}",
         // The edge from the point at r0 to the point at r1 at sample line r2, its five words
-        // (value, remainder, denominator, whole step, remainder's step) stored from r3; r4 to
-        // r7 kept. The usual paths fall through: an edge set up at its first row, a
+        // (value, remainder, denominator, whole step, remainder's step) stored from r3; r2 and
+        // r4 to r7 kept. The usual paths fall through: an edge set up at its first row, a
         // numerator of 0 or more, a step of 0 or more.
         "20:",
-        "push {{r4, r5, r6, r7, lr}}",
+        "push {{r2, r4, r5, r6, r7, lr}}",
         "ldm r0!, {{r4, r5}}",
         "ldm r1!, {{r6, r7}}",
         // dx (r6), dy (r7), t (r5), x (r4); k (r2) and N's first factor.
@@ -487,7 +526,7 @@ unsafe extern "C" fn runs_of(
         // N ≥ 0: the quotient and remainder of N + D − 1; value k + q, remainder D − 1 − r.
         "adds r0, r0, r7",
         "subs r0, #1",
-        "bl 40f",
+        divide!(),
         "adds r4, r2, r1",
         "subs r5, r7, #1",
         "subs r5, r5, r0",
@@ -496,12 +535,12 @@ unsafe extern "C" fn runs_of(
         // The step 16·dx by D, floored.
         "lsls r0, r6, #4",
         "bmi 25f",
-        "bl 40f",
+        divide!(),
         "26:",
         "str r7, [r3]",
         "str r1, [r3, #4]",
         "str r0, [r3, #8]",
-        "pop {{r4, r5, r6, r7, pc}}",
+        "pop {{r2, r4, r5, r6, r7, pc}}",
         // Not at its first row: k = 0, N from x itself.
         "21:",
         "movs r2, #0",
@@ -509,7 +548,7 @@ unsafe extern "C" fn runs_of(
         // N < 0: the quotient and remainder of −N; value k − q, remainder r.
         "23:",
         "rsbs r0, r0, #0",
-        "bl 40f",
+        divide!(),
         "subs r4, r2, r1",
         "movs r5, r0",
         "b 24b",
@@ -519,26 +558,11 @@ unsafe extern "C" fn runs_of(
         "rsbs r0, r0, #0",
         "adds r0, r0, r7",
         "subs r0, #1",
-        "bl 40f",
+        divide!(),
         "rsbs r1, r1, #0",
         "subs r2, r7, #1",
         "subs r0, r2, r0",
         "b 26b",
-        // ⌊n / d⌋ into r1 and n mod d into r0 for n in r0 and d in r7 (unsigned, d > 0):
-        // sixteen subtractions at most, in fours (the quotients of the usual edge are a
-        // few), then the long division at `30:` for the rest.
-        "40:",
-        "movs r1, #0",
-        "41:",
-        subtract!(),
-        subtract!(),
-        subtract!(),
-        subtract!(),
-        "cmp r1, #16",
-        "bne 41b",
-        "b 30f",
-        "49:",
-        "bx lr",
         // The rest of a quotient beyond sixteen (r1 holds 16 of it, r0 what is left of the
         // numerator): the largest multiple d·2^j not above half of it in r4 (its bit in r5),
         // then one subtraction tried for each bit down to d; r2 kept.
@@ -819,9 +843,6 @@ struct SplitBlock {
     end: *const Vec3,
     half_w: i32,
     half_h: i32,
-    /// `RECIPROCALS` and `BYTE_ZEROS` (their first entries).
-    reciprocals: *const u16,
-    zeros: *const u8,
     high: [[i32; 4]; 4],
     low: [[i32; 4]; 4],
 }
@@ -844,21 +865,95 @@ macro_rules! low_row {
     };
 }
 
-/// In [`project_split`], `ShortQuotients::top` of `$v` in place (`(v << up) >> down`, from
-/// `below` in r5: a shift right by `below − 15`, or left by `15 − below`), `$t` a temporary.
+/// `ShortQuotients::top` of `$v` in place (`(v << up) >> down`, from `below` in r5: a shift
+/// right by `below − 15`, or left by `15 − below`), `$t` a temporary, the right shift taken
+/// by one branch and the left one falling through past it: four instructions for the usual
+/// divisor of [`project_split`] (a vertex's w, from 2¹⁵ up), six for the other.
 #[rustfmt::skip]
-macro_rules! top {
+macro_rules! top_right {
     ($v:literal, $t:literal) => {
         concat!(
             "movs ", $t, ", r5\n",
             "subs ", $t, ", #15\n",
-            "bmi 1f\n",
+            "bpl 1f\n",
+            "rsbs ", $t, ", ", $t, ", #0\n",
+            "lsls ", $v, ", ", $t, "\n",
+            "b 2f\n",
+            "1:\n",
+            "lsrs ", $v, ", ", $t, "\n",
+            "2:\n",
+        )
+    };
+}
+
+/// [`top_right`] with the left shift by one branch instead: four instructions for the usual
+/// divisor of [`walk_of`] (a triangle's doubled area, below 2¹⁵).
+#[rustfmt::skip]
+macro_rules! top_left {
+    ($v:literal, $t:literal) => {
+        concat!(
+            "movs ", $t, ", #15\n",
+            "subs ", $t, ", ", $t, ", r5\n",
+            "bpl 1f\n",
+            "rsbs ", $t, ", ", $t, ", #0\n",
             "lsrs ", $v, ", ", $t, "\n",
             "b 2f\n",
             "1:\n",
-            "rsbs ", $t, ", ", $t, ", #0\n",
             "lsls ", $v, ", ", $t, "\n",
             "2:\n",
+        )
+    };
+}
+
+/// `ShortQuotients::new` of the divisor d in r0 and r7 (kept in r7): the index of its top
+/// bit (`below`) into r5, by two halving steps and the top byte's count from `BYTE_ZEROS`,
+/// then the reciprocal ⌊2³¹ / (top(d) + 1)⌋ into r6 (`reciprocal16`: the seed from
+/// `RECIPROCALS`, its index masked to the table, one Newton step, one test), `$top` the
+/// `top` of the usual divisor's size; r0 to r3 clobbered. The tables' addresses come from
+/// the literal pool (the operands `zeros` and `reciprocals`).
+#[rustfmt::skip]
+macro_rules! divisor {
+    ($top:ident) => {
+        concat!(
+            "movs r5, #0\n",
+            "lsrs r1, r0, #16\n",
+            "beq 1f\n",
+            "movs r0, r1\n",
+            "movs r5, #16\n",
+            "1:\n",
+            "lsrs r1, r0, #8\n",
+            "beq 1f\n",
+            "movs r0, r1\n",
+            "adds r5, #8\n",
+            "1:\n",
+            "ldr r1, ={zeros}\n",
+            "ldrb r1, [r1, r0]\n",
+            "subs r5, r5, r1\n",
+            "adds r5, #7\n",
+            "movs r0, r7\n",
+            $top!("r0", "r1"),
+            "lsls r1, r0, #17\n",
+            "lsrs r1, r1, #25\n",
+            "lsls r1, r1, #1\n",
+            "ldr r2, ={reciprocals}\n",
+            "ldrh r2, [r2, r1]\n",
+            "adds r0, #1\n",
+            "movs r1, r0\n",
+            "muls r1, r2, r1\n",
+            "movs r3, #1\n",
+            "lsls r3, r3, #31\n",
+            "subs r1, r3, r1\n",
+            "asrs r1, r1, #8\n",
+            "muls r1, r2, r1\n",
+            "asrs r1, r1, #23\n",
+            "adds r6, r2, r1\n",
+            "movs r1, r6\n",
+            "muls r1, r0, r1\n",
+            "subs r1, r3, r1\n",
+            "cmp r1, r0\n",
+            "blo 1f\n",
+            "adds r6, #1\n",
+            "1:\n",
         )
     };
 }
@@ -910,14 +1005,12 @@ macro_rules! screen_axis {
             "lsrs r1, r5\n",
             "muls r1, r6, r1\n",
             "lsrs r1, r1, #16\n",
-            "movs r3, r1\n",
-            "muls r3, r7, r3\n",
-            "subs r0, r0, r3\n",
+            "movs r4, r1\n",
+            "muls r4, r7, r4\n",
+            "subs r0, r0, r4\n",
             corrections!("r1", "r0"),
             "eors r1, r2\n",
             "subs r1, r1, r2\n",
-            "mov r3, r11\n",
-            "ldr r3, [r3, #{", $half, "}]\n",
             $op, " r1, r3, r1\n",
             "mov r3, r10\n",
             "str r1, [r3, #", $at, "]\n",
@@ -957,8 +1050,6 @@ pub(crate) fn project_split_in_words(
         end: positions.as_ptr().wrapping_add(n),
         half_w,
         half_h,
-        reciprocals: RECIPROCALS.as_ptr(),
-        zeros: BYTE_ZEROS.as_ptr(),
         high: [high(w, tw), high(x, tx), high(y, ty), high(z, tz)],
         low: [low(z), low(y), low(x), low(w)],
     };
@@ -1057,48 +1148,7 @@ unsafe extern "C" fn project_split(
         // w's `ShortQuotients`: d in r7, below (its top bit's index) in r5.
         "movs r7, r4",
         "movs r0, r4",
-        "movs r5, #0",
-        "lsrs r1, r0, #16",
-        "beq 1f",
-        "movs r0, r1",
-        "movs r5, #16",
-        "1:",
-        "lsrs r1, r0, #8",
-        "beq 1f",
-        "movs r0, r1",
-        "adds r5, #8",
-        "1:",
-        "mov r1, r11",
-        "ldr r1, [r1, #{zeros}]",
-        "ldrb r1, [r1, r0]",
-        "subs r5, r5, r1",
-        "adds r5, #7",
-        // The reciprocal ⌊2³¹ / (top(d) + 1)⌋ into r6 (`reciprocal16`).
-        "movs r0, r7",
-        top!("r0", "r1"),
-        "lsls r1, r0, #17",
-        "lsrs r1, r1, #25",
-        "lsls r1, r1, #1",
-        "mov r2, r11",
-        "ldr r2, [r2, #{reciprocals}]",
-        "ldrh r2, [r2, r1]",
-        "adds r0, #1",
-        "movs r1, r0",
-        "muls r1, r2, r1",
-        "movs r3, #1",
-        "lsls r3, r3, #31",
-        "subs r1, r3, r1",
-        "asrs r1, r1, #8",
-        "muls r1, r2, r1",
-        "asrs r1, r1, #23",
-        "adds r6, r2, r1",
-        "movs r1, r6",
-        "muls r1, r0, r1",
-        "subs r1, r3, r1",
-        "cmp r1, r0",
-        "blo 1f",
-        "adds r6, #1",
-        "1:",
+        divisor!(top_right),
         // x: half_w + round(x·half_w / w); y: half_h − round(y·half_h / w).
         screen_axis!("0", "half_w", "adds"),
         screen_axis!("4", "half_h", "subs"),
@@ -1106,7 +1156,7 @@ unsafe extern "C" fn project_split(
         "mov r3, r10",
         "ldr r0, [r3, #8]",
         "movs r1, r0",
-        top!("r1", "r2"),
+        top_right!("r1", "r2"),
         "lsls r0, r0, #15",
         "muls r1, r6, r1",
         "lsrs r1, r1, #16",
@@ -1115,7 +1165,7 @@ unsafe extern "C" fn project_split(
         "subs r0, r0, r3",
         corrections!("r1", "r0"),
         "movs r2, r0",
-        top!("r2", "r3"),
+        top_right!("r2", "r3"),
         "lsls r0, r0, #15",
         "muls r2, r6, r2",
         "lsrs r2, r2, #16",
@@ -1149,8 +1199,8 @@ unsafe extern "C" fn project_split(
         end = const offset_of!(SplitBlock, end),
         half_w = const offset_of!(SplitBlock, half_w),
         half_h = const offset_of!(SplitBlock, half_h),
-        reciprocals = const offset_of!(SplitBlock, reciprocals),
-        zeros = const offset_of!(SplitBlock, zeros),
+        zeros = sym BYTE_ZEROS,
+        reciprocals = sym RECIPROCALS,
         high = const offset_of!(SplitBlock, high),
     )
 }
@@ -1160,9 +1210,345 @@ unsafe extern "C" fn project_split(
 // z and a word of `rgb` and `outcode`; every field within reach of a word load.
 const _: () = {
     assert!(offset_of!(SplitBlock, low) == offset_of!(SplitBlock, high) + 64);
-    assert!(offset_of!(SplitBlock, high) <= 255 && offset_of!(SplitBlock, zeros) <= 124);
+    assert!(offset_of!(SplitBlock, high) <= 255 && offset_of!(SplitBlock, half_h) <= 124);
     assert!(size_of::<Vec3>() == 12 && offset_of!(Vec3, y) == 4 && offset_of!(Vec3, z) == 8);
     assert!(offset_of!(ScreenVertex, rgb) == 12 && offset_of!(ScreenVertex, outcode) == 15);
     assert!(size_of::<ScreenVertex>() == 16 && offset_of!(ScreenVertex, z) == 8);
     assert!(offset_of!(ScreenVertex, x) == 0 && offset_of!(ScreenVertex, y) == 4);
 };
+
+/// In [`walk_of`], the exact product `v·s` into `$lo`, `$hi` (64 bits) of a word `$v` within
+/// ±2³⁰ and a short `$s` (within ±2¹⁵, kept): its halves' products, each a word, the high
+/// one's shifted in (`mul_short`'s halves); `$v` and `$t` clobbered.
+#[rustfmt::skip]
+macro_rules! product {
+    ($v:literal, $s:literal, $lo:literal, $hi:literal, $t:literal) => {
+        concat!(
+            "uxth ", $lo, ", ", $v, "\n",
+            "asrs ", $v, ", ", $v, ", #16\n",
+            "muls ", $lo, ", ", $s, ", ", $lo, "\n",
+            "muls ", $v, ", ", $s, ", ", $v, "\n",
+            "asrs ", $hi, ", ", $lo, ", #31\n",
+            "lsls ", $t, ", ", $v, ", #16\n",
+            "asrs ", $v, ", ", $v, ", #16\n",
+            "adds ", $lo, ", ", $lo, ", ", $t, "\n",
+            "adcs ", $hi, ", ", $v, "\n",
+        )
+    };
+}
+
+/// In [`walk_of`], a numerator `u·(c₁ − a) − v·(c₂ − a)` stored at `$at` on the stack (two
+/// words, low first): the corner coordinates at offsets `$a`, `$c1` and `$c2` of the triangle's
+/// points (r7), the depth differences `u` in r1 and `v` in r2 (after the instructions
+/// `$load`), each product exact ([`product`]).
+#[rustfmt::skip]
+macro_rules! numerator {
+    ($a:literal, $c1:literal, $c2:literal, $at:literal, [$($load:literal),*]) => {
+        concat!(
+            "ldr r0, [r7, #{p} + ", $a, "]\n",
+            "ldr r3, [r7, #{p} + ", $c1, "]\n",
+            "subs r3, r3, r0\n",
+            "ldr r4, [r7, #{p} + ", $c2, "]\n",
+            "subs r4, r4, r0\n",
+            $($load, "\n",)*
+            product!("r1", "r3", "r0", "r5", "r6"),
+            product!("r2", "r4", "r1", "r3", "r6"),
+            "subs r0, r0, r1\n",
+            "sbcs r5, r3\n",
+            "str r0, [sp, #", $at, "]\n",
+            "str r5, [sp, #", $at, " + 4]\n",
+        )
+    };
+}
+
+/// In [`walk_of`], the side from the point at offset `$a` to the one at `$b` in the triangle
+/// (r7) tested short (within ±2¹⁵): the walk is declined otherwise (r0 and r1 clobbered).
+#[rustfmt::skip]
+macro_rules! short_side {
+    ($a:literal, $b:literal) => {
+        concat!(
+            "ldr r0, [r7, #{p} + ", $a, "]\n",
+            "ldr r1, [r7, #{p} + ", $b, "]\n",
+            "subs r1, r1, r0\n",
+            "lsls r0, r1, #16\n",
+            "asrs r0, r0, #16\n",
+            "cmp r0, r1\n",
+            "bne 90f\n",
+        )
+    };
+}
+
+/// In [`walk_of`], one step, `ShortQuotients::round_below_2_30` of 32 times the numerator whose
+/// words lie at `$at` on the stack, into r0: the magnitude times 32 plus d/2 (d in r7), its
+/// bits from 30 up below d (else declined), two 15-bit digits by the reciprocal (r6) from
+/// `below` (r5), corrected, the sign put back (kept at sp + 0 meanwhile).
+#[rustfmt::skip]
+macro_rules! step {
+    ($at:literal) => {
+        concat!(
+            "ldr r0, [sp, #", $at, "]\n",
+            "ldr r1, [sp, #", $at, " + 4]\n",
+            "lsls r1, r1, #5\n",
+            "lsrs r2, r0, #27\n",
+            "orrs r1, r2\n",
+            "lsls r0, r0, #5\n",
+            "asrs r4, r1, #31\n",
+            "eors r0, r4\n",
+            "eors r1, r4\n",
+            "subs r0, r0, r4\n",
+            "sbcs r1, r4\n",
+            "str r4, [sp, #0]\n",
+            "lsrs r2, r7, #1\n",
+            "adds r0, r0, r2\n",
+            "movs r2, #0\n",
+            "adcs r1, r2\n",
+            // a >> 30, below d, the first digit's remainder to start from.
+            "lsls r1, r1, #2\n",
+            "lsrs r2, r0, #30\n",
+            "orrs r1, r2\n",
+            "cmp r1, r7\n",
+            "blo 4f\n",
+            "b 90f\n",
+            "4:\n",
+            // The first digit: c = bits 15 to 29 of a.
+            "lsls r2, r0, #2\n",
+            "lsrs r2, r2, #17\n",
+            "movs r3, r1\n",
+            top_left!("r3", "r4"),
+            "movs r4, r2\n",
+            "lsrs r4, r5\n",
+            "adds r3, r3, r4\n",
+            "lsls r1, r1, #15\n",
+            "orrs r1, r2\n",
+            "muls r3, r6, r3\n",
+            "lsrs r3, r3, #16\n",
+            "movs r4, r3\n",
+            "muls r4, r7, r4\n",
+            "subs r1, r1, r4\n",
+            corrections!("r3", "r1"),
+            // The second: c = a's low 15 bits.
+            "lsls r2, r0, #17\n",
+            "lsrs r2, r2, #17\n",
+            "movs r0, r1\n",
+            top_left!("r0", "r4"),
+            "movs r4, r2\n",
+            "lsrs r4, r5\n",
+            "adds r0, r0, r4\n",
+            "lsls r1, r1, #15\n",
+            "orrs r1, r2\n",
+            "muls r0, r6, r0\n",
+            "lsrs r0, r0, #16\n",
+            "movs r4, r0\n",
+            "muls r4, r7, r4\n",
+            "subs r1, r1, r4\n",
+            corrections!("r0", "r1"),
+            "lsls r3, r3, #15\n",
+            "orrs r0, r3\n",
+            "ldr r4, [sp, #0]\n",
+            "eors r0, r4\n",
+            "subs r0, r0, r4\n",
+        )
+    };
+}
+
+/// `RoundedRows::new` of `triangle`'s depth walk on row `y` (the first row of its runs) by
+/// [`walk_of`], for a triangle whose doubled area's magnitude lies below 2²⁹ and whose sides
+/// are short (every triangle of an object inside every clip plane): `None` where it declines
+/// (a larger triangle, a long side, or a step of 2³⁰ or more), and the caller then sets the
+/// walk up in Rust, which returns the same walk or `None`.
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(super) fn depth_walk(triangle: &ScreenTriangle, y: i32) -> Option<RoundedRows<i32>> {
+    let mut out = core::mem::MaybeUninit::<RowBlock>::uninit();
+    let block = out.as_mut_ptr();
+    // SAFETY: `block` is a local's, valid for writes of a `RowBlock`; the three fields are
+    // read only where `walk_into` wrote them.
+    unsafe {
+        if !walk_into(triangle, y, block) {
+            return None;
+        }
+        Some(RoundedRows {
+            row: addr_of!((*block).row_z).read(),
+            step_x: addr_of!((*block).step_x).read(),
+            step_y: addr_of!((*block).step_y).read(),
+        })
+    }
+}
+
+/// [`depth_walk`] written into the row loop's block at `block` (its `row_z`, `step_x` and
+/// `step_y`): true, or false with nothing written where it declines.
+///
+/// # Safety
+/// `block` is valid for writes of a `RowBlock` (its memory need not hold one), unshared.
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(super) unsafe fn walk_into(triangle: &ScreenTriangle, y: i32, block: *mut RowBlock) -> bool {
+    // SAFETY: `walk_of` keeps the calling convention (see its documentation), reads words of
+    // `triangle` (borrowed) at their `offset_of!` and its `short_sides` byte, and writes the
+    // block's three fields (at their `offset_of!`, the caller's contract) when it returns 1.
+    unsafe { walk_of(triangle, y, block) != 0 }
+}
+
+/// [`depth_walk`]'s naked function: the walk into the row loop's block at `out` (its row at
+/// column 0, `row_z`, and its steps along a row and down a column, `step_x` and `step_y`) and
+/// 1 returned, or 0 (nothing written) where it declines. What it computes, step by
+/// step as `RoundedRows::new` does it on Cortex-M0 (`numerators_as` with differences,
+/// `ShortQuotients`, `rounded_offset_in_words`):
+/// - `d = |area|`, declined unless `0 < d < 2²⁹`; the depth differences `z₁ − z₀`, `z₂ − z₀`
+///   negated where the area is negative, so that the numerators `dv₁·dy₂ − dv₂·dy₁` and
+///   `dv₂·dx₁ − dv₁·dx₂` are those over `d` (`over_positive_area`: the products are linear
+///   in the differences), each product exact in 64 bits from the halves of its depth
+///   difference (its side within ±2¹⁵, tested unless the triangle's sides are known short).
+/// - d's `ShortQuotients`, as the vertex loop finds w's (`below`, the reciprocal).
+/// - Each step by [`step`]'s digits (`round_below_2_30` of 32 times the numerator).
+/// - The reference pixel `x_r = x₀ >> 4`, `y_r = (y₀ + 7) >> 4`, the offsets `dx = 8 −
+///   (x₀ & 15)`, `dy = 16·y_r + 8 − y₀`, the offset in words (`(sx >> 4)·dx + (sy >> 4)·dy`
+///   and the low parts' products rounded), and the row at column 0
+///   `2·z₀ + LOOP_HALF_STEP + offset + sy·(y − y_r) − sx·x_r`, modulo 2³².
+///
+/// Its stack: the 40-byte frame below the saved registers (from sp: `d` then the sign, the
+/// depth differences then the first step and the reference pixel, both numerators, then the
+/// arguments: the triangle, `y` and `out`, pushed).
+///
+/// # Safety
+/// `triangle` points to a [`ScreenTriangle`] and `out` is valid for writes of a [`RowBlock`].
+#[unsafe(naked)]
+#[allow(unsafe_code)]
+unsafe extern "C" fn walk_of(triangle: *const ScreenTriangle, y: i32, out: *mut RowBlock) -> u32 {
+    core::arch::naked_asm!(
+        "push {{r4, r5, r6, r7, lr}}",
+        "push {{r0, r1, r2}}",
+        "sub sp, #28",
+        "movs r7, r0",
+        // d = |area| in [sp + 0]; the area's sign mask in r6.
+        "ldr r0, [r7, #{area}]",
+        "ldr r1, [r7, #{area} + 4]",
+        "asrs r6, r1, #31",
+        "eors r0, r6",
+        "eors r1, r6",
+        "subs r0, r0, r6",
+        "sbcs r1, r6",
+        "cmp r1, #0",
+        "beq 1f",
+        "b 90f",
+        "1:",
+        "subs r2, r0, #1",
+        "movs r3, #1",
+        "lsls r3, r3, #29",
+        "subs r3, #1",
+        "cmp r2, r3",
+        "blo 1f",
+        "b 90f",
+        "1:",
+        "str r0, [sp, #0]",
+        // Unless the triangle's sides are known short, the four the numerators take are
+        // tested (out of line).
+        "movs r0, #{short}",
+        "ldrb r0, [r7, r0]",
+        "cmp r0, #0",
+        "bne 81f",
+        "b 80f",
+        "81:",
+        // The depth differences, signed as the area.
+        "ldr r0, [r7, #{z}]",
+        "ldr r1, [r7, #{z} + 4]",
+        "ldr r2, [r7, #{z} + 8]",
+        "subs r1, r1, r0",
+        "subs r2, r2, r0",
+        "eors r1, r6",
+        "subs r1, r1, r6",
+        "eors r2, r6",
+        "subs r2, r2, r6",
+        "str r1, [sp, #4]",
+        "str r2, [sp, #8]",
+        // nx = dv₁·dy₂ − dv₂·dy₁ at sp + 12, ny = dv₂·dx₁ − dv₁·dx₂ at sp + 20.
+        numerator!("4", "20", "12", "12", []),
+        numerator!("0", "8", "16", "20", ["ldr r1, [sp, #8]", "ldr r2, [sp, #4]"]),
+        // d in r7, below in r5, the reciprocal in r6 (`ShortQuotients::new`).
+        "ldr r7, [sp, #0]",
+        "movs r0, r7",
+        divisor!(top_left),
+        // sx at sp + 4, sy in r0.
+        step!("12"),
+        "str r0, [sp, #4]",
+        step!("20"),
+        // The reference pixel and the row: r1 = sx, r0 = sy.
+        "ldr r1, [sp, #4]",
+        "ldr r7, [sp, #28]",
+        "ldr r2, [r7, #{p}]",
+        "ldr r3, [r7, #{p} + 4]",
+        // dx = 8 − (x₀ & 15) in r4, x_r in r2; y_r in r3, dy = 16·y_r + 8 − y₀ in r5.
+        "lsls r4, r2, #28",
+        "lsrs r4, r4, #28",
+        "rsbs r4, r4, #0",
+        "adds r4, #8",
+        "asrs r2, r2, #4",
+        "movs r5, r3",
+        "adds r3, #7",
+        "asrs r3, r3, #4",
+        "lsls r6, r3, #4",
+        "adds r6, #8",
+        "subs r5, r6, r5",
+        "str r2, [sp, #8]",
+        "str r3, [sp, #12]",
+        // whole = (sx >> 4)·dx + (sy >> 4)·dy in r6, low = (sx & 15)·dx + (sy & 15)·dy in r7.
+        "asrs r6, r1, #4",
+        "muls r6, r4, r6",
+        "asrs r7, r0, #4",
+        "muls r7, r5, r7",
+        "adds r6, r6, r7",
+        "lsls r7, r1, #28",
+        "lsrs r7, r7, #28",
+        "muls r4, r7, r4",
+        "lsls r7, r0, #28",
+        "lsrs r7, r7, #28",
+        "muls r5, r7, r5",
+        "adds r4, r4, r5",
+        "adds r4, #8",
+        "asrs r4, r4, #4",
+        "adds r6, r6, r4",
+        // row = 2·z₀ + LOOP_HALF_STEP + offset + sy·(y − y_r) − sx·x_r.
+        "ldr r7, [sp, #28]",
+        "ldr r4, [r7, #{z}]",
+        "lsls r4, r4, #1",
+        "adds r6, r6, r4",
+        "ldr r4, ={half_step}",
+        "adds r6, r6, r4",
+        "ldr r4, [sp, #32]",
+        "ldr r5, [sp, #12]",
+        "subs r4, r4, r5",
+        "muls r4, r0, r4",
+        "adds r6, r6, r4",
+        "ldr r4, [sp, #8]",
+        "muls r4, r1, r4",
+        "subs r6, r6, r4",
+        "ldr r2, [sp, #36]",
+        "str r6, [r2, #{row_z}]",
+        "str r1, [r2, #{step_x}]",
+        "str r0, [r2, #{step_y}]",
+        "movs r0, #1",
+        "add sp, #40",
+        "pop {{r4, r5, r6, r7, pc}}",
+        "80:",
+        short_side!("0", "8"),
+        short_side!("4", "12"),
+        short_side!("0", "16"),
+        short_side!("4", "20"),
+        "b 81b",
+        "90:",
+        "movs r0, #0",
+        "add sp, #40",
+        "pop {{r4, r5, r6, r7, pc}}",
+        ".ltorg",
+        area = const offset_of!(ScreenTriangle, area),
+        z = const offset_of!(ScreenTriangle, z),
+        p = const offset_of!(ScreenTriangle, p),
+        short = const offset_of!(ScreenTriangle, short_sides),
+        zeros = sym BYTE_ZEROS,
+        reciprocals = sym RECIPROCALS,
+        half_step = const LOOP_HALF_STEP,
+        row_z = const offset_of!(RowBlock, row_z),
+        step_x = const offset_of!(RowBlock, step_x),
+        step_y = const offset_of!(RowBlock, step_y),
+    )
+}
