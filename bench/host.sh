@@ -497,8 +497,11 @@ $stages
   through a call (the M0 0.3% more, the M4 0.4%), and the first row's edges set up where
   they go, their vertices chosen first, instead of swapped after (the M0 0.5% more, the M4
   0.9%).
-- **The goals**: the Cortex-M4F's is reached, 994,697 instructions a frame (\`.ci/run\`
-  fails above 1.0 M), the last 6.1% from the row loop's edges by one \`ldm\` (2.9%),
+- **The goals**: the Cortex-M0's is reached, 1,993,013 instructions a frame (\`.ci/run\`
+  fails above 2.0 M), the last 12.5% (2.278 M before) from the set-up of a triangle's rows,
+  the vertex loop and a small triangle's depth walk in Thumb-1 (below and above), and their
+  trims. The Cortex-M4F's is reached too, 994,697 instructions a frame (\`.ci/run\` fails
+  above 1.0 M), the last 6.1% from the row loop's edges by one \`ldm\` (2.9%),
   \`triangle_runs\` loading the corners' x once, finding the long edge's side from the
   area's high word and writing the lower edge's place itself (1.8%), the vertex loop's
   coordinates as their sums' high words (0.57%), the kept face normals as a slice and the
@@ -517,8 +520,16 @@ $stages
   high parts rounded with the low parts' sum taken from the whole coordinates' (2.1% more:
   more values live at once), and the depth walk's set-up in line with the other paths'
   walks by the reciprocal alone (1.4% fewer, 580 bytes, but \`gouraud\` 1.1% more and
-  \`display\` 0.7%). x86-64 (1.175 M) and the Cortex-M0
-  (2.115 M) are not reached: before that round, with the pixels at what they took (0.22 M on
+  \`display\` 0.7%). Then a small triangle's depth walk in Thumb-1
+  (\`thumb1::depth_walk\`, writing into the row loop's block: about 320 instructions a
+  triangle where the compiled set-up took about 410 and its call, 3.75%, 2.115 M → 2.036 M;
+  where the compiled set-up in line had measured 1.0% for 1.27 KB, this takes 1 KB for
+  3.75%, the compiled one kept for the rest), and trims of all three: \`ShortQuotients::top\`'s
+  usual shift by one branch (0.37%), the row set-up's divisions in line (0.53%), the seed
+  tables' addresses from the literal pool and a half size kept (0.34%), the walk's output
+  not cleared first (0.19%) and written into the block (0.33%), its sides tested once and
+  only where not known short (0.19%): 1.993 M. x86-64 (1.175 M) is not reached: before
+  that round, with the pixels at what they took (0.22 M on
   the M4), 1.0 M left
   0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
   rows, 93% of what they took then (on x86-64, whose rows and pixels with the \`asm\` loop
@@ -541,9 +552,11 @@ $stages
   bytes less flash (the compiled set-up for every size left out of line). The same for
   x86-64 took about 100, as many as the compiled code, and the registers it held cost the
   code around it more: the frame 3.1% more, not kept; in Thumb-1 for the M0 (a naked
-  function, its digits as \`ShortQuotients\` finds them) about 340 where the compiled code
-  takes about 357: the frame 0.7% fewer instructions for about 1 KB more flash, above the
-  preset's budget, not kept. A set-up and shading of about 250 instructions a
+  function, its digits as \`ShortQuotients\` finds them) a first form took about 340 where
+  the compiled code, then in line, took about 357: the frame 0.7% fewer instructions for
+  about 1 KB more flash, not kept; since the compiled set-up went out of line (a call:
+  about 410 with it), \`thumb1::depth_walk\` takes about 320, written into the row loop's
+  block: 3.75% for about 1 KB, kept (see the goals). A set-up and shading of about 250 instructions a
   triangle, once estimated from the arithmetic, leaves out what that arithmetic takes in
   instructions; hand-writing the rest (the depth walk's divisions, the colour) would gain
   in proportion, a few per cent. The M4's rows and pixels are already hand-written (the \`asm\`
@@ -552,8 +565,7 @@ $stages
   13 for two in an uncounted span; 13 a row against about 49), and so are the M0's (Thumb-1: 25 a row against about 60, 9 a
   pixel against 10), and so is its vertex loop (about 263 a vertex, of which the transform
   about 118 and the divisions by w about 140). On the M0 the vertex
-  stage and the depth
-  walk's two divisions (8.3% of its frame, their reciprocal included) come first. The rest would need less work per
+  stage and the depth walk's set-up, both in assembly now, come first. The rest would need less work per
   stage rather than tighter code: a cheaper rule (lighting in 16-bit arithmetic, coarser
   sub-pixels: each a change of image that \`docs/accuracy.md\` would have to show costs
   nothing), or more of what a rigid mesh keeps from frame to frame, as its face normals now

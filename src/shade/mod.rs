@@ -117,7 +117,7 @@ pub struct Flat;
 
 /// [`Flat`] from the face normals a mesh keeps ([`Mesh::with_face_normals`]): the same colours,
 /// without each drawn face's cross product and square root every frame (the reference torus:
-/// 8.3% of the Cortex-M4F's frame, 8.1% of the M0's, 8.0% of x86-64's). Faces of a mesh that
+/// 8.3% of the Cortex-M4F's frame, 8.6% of the M0's, 8.0% of x86-64's). Faces of a mesh that
 /// keeps none, faces lit in world space (a model matrix that is not a rotation times a uniform
 /// scale), faces under another [`Normalize`] method than the default and faces the kept normal
 /// cannot decide (see [`FaceNormal`]) are lit as [`Flat`] lights them. A type of its own:
