@@ -615,10 +615,11 @@ pub(super) unsafe fn triangle_runs(
 ) -> i32 {
     // SAFETY:
     // - Calling convention: `runs_of` is `extern "C"` (AAPCS) and keeps it: it saves r4 to
-    //   r7 and the return address on entry (its edge routine too, for the calls it makes
-    //   itself) and restores them on return (r0 to r3, r12 and the flags are the caller's to
-    //   lose), uses the stack only for that and two words of its own (balanced), and returns
-    //   with `pop {.., pc}`; its arguments come in r0 to r3 and the fifth on the stack.
+    //   r7 and the return address on entry (its edge routine r2 and r4 to r7 with its own
+    //   return address, for the call it makes to the long division, which saves r2) and
+    //   restores them on return (r0 to r3, r12 and the flags are the caller's to lose), uses
+    //   the stack only for that and two words of its own (balanced), and returns with
+    //   `pop {.., pc}`; its arguments come in r0 to r3 and the fifth on the stack.
     // - Memory: it reads the six words of `p` (borrowed; at offsets 0 to 20 by its layout,
     //   asserted below), each point at `p + 8·i` for an index `i = key & 3` of keys made from
     //   the indices 0, 1 and 2 and only moved about, and writes words of `block` (valid for
@@ -1054,8 +1055,9 @@ pub(crate) fn project_split_in_words(
         low: [low(z), low(y), low(x), low(w)],
     };
     // SAFETY: `project_split` keeps the calling convention (see its documentation) and reads
-    // `block` (borrowed for the call), the two tables its pointers address (constants: the
-    // indices are masked to their lengths, see its documentation), the `n` positions from
+    // `block` (borrowed for the call), the statics `RECIPROCALS` and `BYTE_ZEROS` (their
+    // addresses from the literal pool, the indices masked to their lengths, see its
+    // documentation), the `n` positions from
     // `positions` up to `block.end` (within the slice), and writes the `n` vertices from
     // `out` (borrowed mutably, at least `n` long): 16 bytes each, x, y, z and a zero word
     // over `rgb` and `outcode` at 0, 4, 8 and 12 (asserted below), valid values of every
@@ -1074,8 +1076,7 @@ pub(crate) fn project_split_in_words(
 ///
 /// # Safety
 /// `block` points to a [`SplitBlock`] whose `end` lies at or after `positions` (within one
-/// slice of `Vec3`) and whose table pointers address `RECIPROCALS` and `BYTE_ZEROS`, and `out`
-/// to as many writable vertices.
+/// slice of `Vec3`), and `out` to as many writable vertices.
 #[unsafe(naked)]
 #[allow(unsafe_code)]
 unsafe extern "C" fn project_split(
@@ -1406,9 +1407,13 @@ pub(super) unsafe fn walk_into(triangle: &ScreenTriangle, y: i32, block: *mut Ro
 ///   and the low parts' products rounded), and the row at column 0
 ///   `2·z₀ + LOOP_HALF_STEP + offset + sy·(y − y_r) − sx·x_r`, modulo 2³².
 ///
-/// Its stack: the 40-byte frame below the saved registers (from sp: `d` then the sign, the
-/// depth differences then the first step and the reference pixel, both numerators, then the
-/// arguments: the triangle, `y` and `out`, pushed).
+/// Calling convention (AAPCS, `extern "C"`): it saves r4 to r7 and the return address on
+/// entry and restores them on return (`pop {.., pc}` on both paths), using the stack only for
+/// that and its 40-byte frame (balanced: from sp, `d` then the sign, the depth differences
+/// then the first step and the reference pixel, both numerators, then the arguments pushed:
+/// the triangle, `y` and `out`). Memory: it reads the triangle's points, depths, area and
+/// `short_sides` at their `offset_of!`, the two seed tables at masked indices (as
+/// [`project_split`]), and writes the block's three fields only on success. No loop: it ends.
 ///
 /// # Safety
 /// `triangle` points to a [`ScreenTriangle`] and `out` is valid for writes of a [`RowBlock`].
