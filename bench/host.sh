@@ -296,7 +296,8 @@ $stages
   and three edge steppers (two
   divisions each; neither the area, which the pipeline never draws at zero, nor the clip
   rectangle, empty of spans when it has no rows or columns, tested there: x86-64's frame
-  0.9%, the M4's 0.5%, the M0's 0.3%; on the M0 an edge's quotients from −16 to 15 found
+  0.9%, the M4's 0.5%, the M0's 0.3%; on the M0 without \`asm\` (with it in
+  \`thumb1::triangle_runs\`, below) an edge's quotients from −16 to 15 found
   by subtraction before a library division, one loop of a test, a subtraction and a count
   for both signs (a negative numerator counts the subtractions of ⌈−n / d⌉): 0.4% against
   quotients to 8, and the loop 1% against one that told the signs apart at 9 instructions a

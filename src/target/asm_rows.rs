@@ -89,12 +89,14 @@ const _: () = {
 
 /// In `triangle_runs` (both Cortex-M cores'), the corners' keys `4·y + i` loaded from the
 /// points at `$p` (two words each, x then y) into `$ka`, `$kb` and `$kc` (register names, or
-/// operands as `"{ka}"`), for the sort that follows: flag-setting forms, which Thumb-1 has
-/// and Thumb-2 takes too (the flags are set again by the sort's first comparison).
+/// operands as `"{ka}"`) and sorted by three compare-and-swaps in `sort_by_y`'s order, each
+/// by the core's own `$swap` (which turns the long edge's side with the keys): the loads in
+/// flag-setting forms, which Thumb-1 has and Thumb-2 takes too (the flags are set again by
+/// the first comparison).
 #[cfg(fixed3d_thumb)]
 #[rustfmt::skip]
-macro_rules! corner_keys {
-    ($p:literal, $ka:literal, $kb:literal, $kc:literal) => {
+macro_rules! sorted_keys {
+    ($swap:ident, $p:literal, $ka:literal, $kb:literal, $kc:literal) => {
         concat!(
             "ldr ", $ka, ", [", $p, ", #4]\n",
             "ldr ", $kb, ", [", $p, ", #12]\n",
@@ -104,15 +106,18 @@ macro_rules! corner_keys {
             "adds ", $kb, ", ", $kb, ", #1\n",
             "lsls ", $kc, ", ", $kc, ", #2\n",
             "adds ", $kc, ", ", $kc, ", #2\n",
+            $swap!($ka, $kb),
+            $swap!($kb, $kc),
+            $swap!($ka, $kb),
         )
     };
 }
 #[cfg(fixed3d_thumb)]
-pub(super) use corner_keys;
+pub(super) use sorted_keys;
 
 /// In `triangle_runs`, the first row at or below the point of key `$k` into `$row`:
 /// `(y + 7) >> 4` of its `y = k >> 2` (`first_centre_from32`), in flag-setting forms (see
-/// [`corner_keys`]).
+/// [`sorted_keys`]).
 #[cfg(fixed3d_thumb)]
 #[rustfmt::skip]
 macro_rules! first_row {

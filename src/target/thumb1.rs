@@ -1,6 +1,8 @@
 //! The u16 depth loops of solid-coloured triangles in hand-written Thumb-1, for Cortex-M0 and
 //! M0+ (ARMv6-M), with the `asm` feature (with thumb2.rs, x86_64.rs and asm_rows.rs the only
-//! `unsafe` code of the crate; without the feature the crate forbids it).
+//! `unsafe` code of the crate; without the feature the crate forbids it), and what sets them
+//! up: each triangle's rows and small triangles' depth walks, the triangle walk's skip of
+//! back faces and the vertex loop of an object inside every clip plane.
 //!
 //! A whole triangle's rows, both runs (above and below its middle vertex), in one naked
 //! function: inline assembly on ARMv6-M gets six registers, and the pixel loop alone needs
@@ -80,7 +82,7 @@ use core::mem::{offset_of, size_of};
 use core::ptr::addr_of;
 
 use super::asm_faces::FrontFaces;
-use super::asm_rows::{corner_keys, first_row, RowBlock, EDGE};
+use super::asm_rows::{first_row, sorted_keys, RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount, RoundedRows, LOOP_HALF_STEP};
 use super::surface::ScreenTriangle;
 use crate::math::{SplitTransform, Vec3, BYTE_ZEROS, RECIPROCALS};
@@ -401,10 +403,7 @@ unsafe extern "C" fn runs_of(
         "asrs r7, r7, #31",
         "mvns r7, r7",
         // Keys 4·y + i in r4 to r6, sorted.
-        corner_keys!("r0", "r4", "r5", "r6"),
-        swap_if_greater!("r4", "r5"),
-        swap_if_greater!("r5", "r6"),
-        swap_if_greater!("r4", "r5"),
+        sorted_keys!(swap_if_greater, "r0", "r4", "r5", "r6"),
         // The first row y (r2) and the row past the last (r3); none unless rows > 0.
         first_row!("r0", "r4"),
         "cmp r0, r2",
@@ -867,42 +866,40 @@ macro_rules! low_row {
 }
 
 /// `ShortQuotients::top` of `$v` in place (`(v << up) >> down`, from `below` in r5: a shift
-/// right by `below − 15`, or left by `15 − below`), `$t` a temporary, the right shift taken
-/// by one branch and the left one falling through past it: four instructions for the usual
-/// divisor of [`project_split`] (a vertex's w, from 2¹⁵ up), six for the other.
+/// right by `below − 15`, or left by `15 − below`), `$t` a temporary: `$t` is set to `$from`
+/// less `$minus` (one of them r5, the other 15), and where that is 0 or more the shift
+/// `$usual` by it is taken by one branch, else the other one (`$other`, by its negation)
+/// falls through: four instructions for the usual size of divisor, six for the other.
 #[rustfmt::skip]
-macro_rules! top_right {
-    ($v:literal, $t:literal) => {
+macro_rules! top_by {
+    ($v:literal, $t:literal, $from:literal, $minus:literal, $usual:literal, $other:literal) => {
         concat!(
-            "movs ", $t, ", r5\n",
-            "subs ", $t, ", #15\n",
+            "movs ", $t, ", ", $from, "\n",
+            "subs ", $t, ", ", $t, ", ", $minus, "\n",
             "bpl 1f\n",
             "rsbs ", $t, ", ", $t, ", #0\n",
-            "lsls ", $v, ", ", $t, "\n",
+            $other, " ", $v, ", ", $t, "\n",
             "b 2f\n",
             "1:\n",
-            "lsrs ", $v, ", ", $t, "\n",
+            $usual, " ", $v, ", ", $t, "\n",
             "2:\n",
         )
     };
 }
 
-/// [`top_right`] with the left shift by one branch instead: four instructions for the usual
-/// divisor of [`walk_of`] (a triangle's doubled area, below 2¹⁵).
-#[rustfmt::skip]
+/// [`top_by`] for [`project_split`]'s divisor, a vertex's w (from 2¹⁵ up, usually): the
+/// right shift by `below − 15` the usual one.
+macro_rules! top_right {
+    ($v:literal, $t:literal) => {
+        top_by!($v, $t, "r5", "#15", "lsrs", "lsls")
+    };
+}
+
+/// [`top_by`] for [`walk_of`]'s divisor, a triangle's doubled area (below 2¹⁵, usually): the
+/// left shift by `15 − below` the usual one.
 macro_rules! top_left {
     ($v:literal, $t:literal) => {
-        concat!(
-            "movs ", $t, ", #15\n",
-            "subs ", $t, ", ", $t, ", r5\n",
-            "bpl 1f\n",
-            "rsbs ", $t, ", ", $t, ", #0\n",
-            "lsrs ", $v, ", ", $t, "\n",
-            "b 2f\n",
-            "1:\n",
-            "lsls ", $v, ", ", $t, "\n",
-            "2:\n",
-        )
+        top_by!($v, $t, "#15", "r5", "lsls", "lsrs")
     };
 }
 

@@ -109,7 +109,7 @@
 use core::mem::{align_of, offset_of, size_of};
 
 use super::asm_faces::FrontFaces;
-use super::asm_rows::{corner_keys, first_row, RowBlock};
+use super::asm_rows::{first_row, sorted_keys, RowBlock};
 use super::depth::{DepthTest, FragmentCount, RoundedRows, LOOP_HALF_STEP};
 use super::surface::ScreenTriangle;
 use crate::math::{Mat4, Vec3};
@@ -520,17 +520,17 @@ macro_rules! sorted_xs {
     };
 }
 
-/// In [`triangle_runs`], the keys in `$a` and `$b` swapped where `$a`'s is the greater, and the
-/// long edge's side (`side`) turned with them.
+/// In [`triangle_runs`], the keys in `$a` and `$b` (operands, as `"{ka}"`) swapped where
+/// `$a`'s is the greater, and the long edge's side (`side`) turned with them.
 #[rustfmt::skip]
 macro_rules! swap_if_greater {
     ($a:literal, $b:literal) => {
         concat!(
-            "cmp {", $a, "}, {", $b, "}\n",
+            "cmp ", $a, ", ", $b, "\n",
             "itttt gt\n",
-            "movgt {t1}, {", $a, "}\n",
-            "movgt {", $a, "}, {", $b, "}\n",
-            "movgt {", $b, "}, {t1}\n",
+            "movgt {t1}, ", $a, "\n",
+            "movgt ", $a, ", ", $b, "\n",
+            "movgt ", $b, ", {t1}\n",
             "eorgt {side}, {side}, #4\n",
         )
     };
@@ -605,10 +605,7 @@ pub(super) unsafe fn triangle_runs(
             "mvn {side}, {side}, asr #31",
             "and {side}, {side}, #4",
             // Keys 4·y + i, sorted.
-            corner_keys!("{p}", "{ka}", "{kb}", "{kc}"),
-            swap_if_greater!("ka", "kb"),
-            swap_if_greater!("kb", "kc"),
-            swap_if_greater!("ka", "kb"),
+            sorted_keys!(swap_if_greater, "{p}", "{ka}", "{kb}", "{kc}"),
             // The first row and the row past the last; none unless rows > 0.
             first_row!("{t1}", "{ka}"),
             "cmp {t1}, {y}",

@@ -9,7 +9,8 @@
 //! culled to their front faces (`front`, every count in its hash), the triangle walk each
 //! core takes in assembly with `asm`; and `full`'s vertex stage alone (`vertices`, a hash
 //! of every vertex's position and depth), its vertex loop on either core in assembly with
-//! `asm`. Not in footprint.md's table.
+//! `asm`; and the depth walks of random screen triangles (`walks`, every word), which each
+//! core sets up in assembly with `asm` for small ones. Not in footprint.md's table.
 #![no_std]
 #![no_main]
 
