@@ -310,17 +310,18 @@ unsafe fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
     // The rows' cells in both buffers, and the rest of the contract, checked here (constants,
     // or known to the caller: compiled away).
     let width = width as usize;
-    let Some((colors, depths)) = run_cells(colors, depths, first, rows, width) else {
+    let Some((colors, depths, windows)) = run_cells::<C, K>(colors, depths, first, rows, width)
+    else {
         return;
     };
     if !(1..=rows).contains(&upper) || size_of::<C>() != 2 || align_of::<C>() != 2 {
         return;
     }
     let row = colors.as_mut_ptr();
-    // Below the buffer's length in bytes, so no overflow; the last one past the end of
-    // `colors` (no pointer leaves its allocation).
+    // Below the buffer's length in bytes, so no overflow; the last one past the rows' last
+    // cell (within `colors`, or one past its end: no pointer leaves its allocation).
     let end = row.wrapping_add((upper as usize).wrapping_mul(width)) as usize;
-    let last = row.wrapping_add(colors.len()) as usize;
+    let last = row.wrapping_add(colors.len().wrapping_sub(spare(windows))) as usize;
     let delta = (depths.as_mut_ptr() as usize).wrapping_sub(row as usize);
     // SAFETY: writes of the seven fields the caller left (`block` valid for writes, unshared);
     // with them every field holds a valid value, so the block may be borrowed as a whole.
@@ -335,7 +336,8 @@ unsafe fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
         &mut *block
     };
     // SAFETY: the block keeps `RowBlock`'s contract. `colors` and `depths` are rows · width
-    // cells long (`run_cells`), borrowed mutably here until the call returns; `C` has 2 bytes
+    // cells long (`run_cells`), 7 more with `windows` (x86-64's loop then takes those too),
+    // borrowed mutably here until the call returns; `C` has 2 bytes
     // and alignment 2 (checked); `rows ≥ upper ≥ 1` and `width > 0` (checked); `row`,
     // `delta`, `stride`, `end` and `last` are set from them just above; `slot` is 0 or an
     // edge's size (on Cortex-M from `triangle_runs`, on Cortex-M3/M4 0 or `RunEdges::RIGHT`);
@@ -344,7 +346,14 @@ unsafe fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
     // (set up by `TriangleRows::runs`, on Cortex-M0 by `thumb1::triangle_runs`, which
     // computes the same walks, or on Cortex-M3/M4 by `thumb2::triangle_runs`, which computes
     // them with no base, the numerator signed: see its documentation).
-    unsafe { core_rows::rows::<T, K>(block, clamp) };
+    #[cfg(target_arch = "x86_64")]
+    unsafe {
+        core_rows::rows::<T, K>(block, clamp, windows)
+    };
+    #[cfg(not(target_arch = "x86_64"))]
+    unsafe {
+        core_rows::rows::<T, K>(block, clamp)
+    };
     if K::COUNTED {
         stats.fragments = stats.fragments.saturating_add(block.fragments);
         // Each failed fragment was counted among the fragments: no wrap.
@@ -381,21 +390,46 @@ pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {
 }
 
 /// The cells of `rows` rows of `width` from row `first` in both buffers, or `None` where
-/// either buffer does not hold them all (never, for spans clipped to the target).
+/// either buffer does not hold them all (never, for spans clipped to the target); on x86-64
+/// uncounted with the [`WINDOW_SPARE`] cells after them where both buffers hold those too,
+/// and then true (the loop's windows of eight cells, `x86_64::rows`).
 #[inline(always)]
-fn run_cells<'b, C>(
+fn run_cells<'b, C, K: FragmentCount>(
     colors: &'b mut [C],
     depths: &'b mut [u16],
     first: u32,
     rows: u32,
     width: usize,
-) -> Option<(&'b mut [C], &'b mut [u16])> {
+) -> Option<(&'b mut [C], &'b mut [u16], bool)> {
     // The end first: `first · width` is no larger, so it cannot overflow where the end does
     // not (one product checked rather than two and their sum: the M4's frame 0.35% fewer
     // instructions, the M0's 0.1%, x86-64's 0.27% more, from its registers' moves).
     let end = product(first.checked_add(rows)?, width)?;
-    let cells = (first as usize).wrapping_mul(width)..end;
-    Some((colors.get_mut(cells.clone())?, depths.get_mut(cells)?))
+    let windows = cfg!(target_arch = "x86_64")
+        && !K::COUNTED
+        && end
+            .checked_add(WINDOW_SPARE)
+            .is_some_and(|e| e <= colors.len());
+    let cells = (first as usize).wrapping_mul(width)..end.wrapping_add(spare(windows));
+    Some((
+        colors.get_mut(cells.clone())?,
+        depths.get_mut(cells)?,
+        windows,
+    ))
+}
+
+/// The cells x86-64's uncounted loop reads and writes back unchanged after the rows' last
+/// (its last window of eight cells may start at the last row's last cell).
+const WINDOW_SPARE: usize = 7;
+
+/// The cells after the rows that the loop takes: [`WINDOW_SPARE`] with `windows`, else none.
+#[inline(always)]
+fn spare(windows: bool) -> usize {
+    if windows {
+        WINDOW_SPARE
+    } else {
+        0
+    }
 }
 
 /// `a · b`, or `None` where it overflows: on ARMv6-M for factors below 2¹⁶ (every frame's rows
@@ -471,13 +505,13 @@ mod tests {
     /// stored depth; the fragments and writes counted.
     fn expected<T: DepthTest>(
         first_row: i32,
-        shape: Shape,
+        (v, w): ([ScreenPoint; 3], &RoundedRows<i32>),
         colors: &mut [Rgb565],
         depths: &mut [u16],
     ) -> Stats {
-        let (mut stats, w) = (Stats::default(), walk());
+        let mut stats = Stats::default();
         let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
-        let spans = triangle_spans(vertices(shape), clip);
+        let spans = triangle_spans(v, clip);
         let y0 = spans.row();
         for s in spans {
             let row = w.row.wrapping_add(w.step_y.wrapping_mul(s.y - y0));
@@ -495,71 +529,122 @@ mod tests {
         stats
     }
 
-    fn buffers() -> (Vec<Rgb565>, Vec<u16>) {
-        (vec![Rgb565::BLUE; W * H], vec![FAR; W * H])
+    /// Buffers of `H` rows, and `extra` cells more.
+    fn buffers_and(extra: usize) -> (Vec<Rgb565>, Vec<u16>) {
+        (vec![Rgb565::BLUE; W * H + extra], vec![FAR; W * H + extra])
     }
 
-    /// `solid_rows` of the triangle of `shape` clipped to `clip` in red, [`walk`]'s depths,
-    /// into buffers of `W` columns holding rows from `first_row`: whether it drew.
+    fn buffers() -> (Vec<Rgb565>, Vec<u16>) {
+        buffers_and(0)
+    }
+
+    /// `solid_rows` of the triangle `v` clipped to `clip` in red, the depths of `w`, into
+    /// buffers of `W` columns holding rows from `first_row`: whether it drew.
     fn draw<T: DepthTest, K: FragmentCount>(
-        shape: Shape,
+        (v, w): ([ScreenPoint; 3], &RoundedRows<i32>),
         clip: PixelRect,
         first_row: i32,
         (colors, depths): &mut (Vec<Rgb565>, Vec<u16>),
         stats: &mut Stats,
     ) -> bool {
-        let v = vertices(shape);
         let Some(rows) = rows_in_range(v, clip, doubled_area(v[0], v[1], v[2])) else {
             return true;
         };
         let bits = color_bits(&Rgb565::RED).unwrap_or_default();
-        solid_rows::<Rgb565, T, K, i32>(
-            &rows,
-            &walk(),
-            colors,
-            depths,
-            first_row,
-            W as u32,
-            bits,
-            stats,
-        )
+        solid_rows::<Rgb565, T, K, i32>(&rows, w, colors, depths, first_row, W as u32, bits, stats)
+    }
+
+    /// `draw` and the definition from the same `cells`, compared (colours, depths, counts).
+    fn check<T: DepthTest, K: FragmentCount>(
+        first_row: i32,
+        triangle: ([ScreenPoint; 3], &RoundedRows<i32>),
+        cells: &(Vec<Rgb565>, Vec<u16>),
+    ) -> Stats {
+        let mut drawn = cells.clone();
+        let (mut want_c, mut want_d) = cells.clone();
+        let want = expected::<T>(first_row, triangle, &mut want_c, &mut want_d);
+        let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
+        let mut stats = Stats::default();
+        assert!(draw::<T, K>(
+            triangle, clip, first_row, &mut drawn, &mut stats
+        ));
+        assert_eq!(drawn, (want_c, want_d), "{first_row}, {triangle:?}");
+        if K::COUNTED {
+            assert_eq!(
+                (stats.fragments, stats.written),
+                (want.fragments, want.written)
+            );
+        } else {
+            assert_eq!(stats, Stats::default());
+        }
+        want
     }
 
     /// The loop draws what the definition draws, for both tests, counted or not, in a band
-    /// whose first row is not 0, with spans clamped on both sides and empty ones.
+    /// whose first row is not 0, with spans clamped on both sides and empty ones; uncounted
+    /// on x86-64 in windows of eight cells where the buffers hold 7 cells after the rows
+    /// (`extra`), a pixel at a time where they do not.
     #[test]
     fn r7_t21_solid_rows_draw_the_definition() {
-        fn check<T: DepthTest, K: FragmentCount>(first_row: i32, shape: Shape) {
-            let mut cells = buffers();
-            let (mut want_c, mut want_d) = buffers();
-            let want = expected::<T>(first_row, shape, &mut want_c, &mut want_d);
-            let clip = PixelRect::new(0, first_row, W as i32, first_row + H as i32);
-            let mut stats = Stats::default();
-            assert!(draw::<T, K>(shape, clip, first_row, &mut cells, &mut stats));
-            assert_eq!(cells, (want_c, want_d), "{first_row}, {shape:?}");
-            if K::COUNTED {
-                assert_eq!(
-                    (stats.fragments, stats.written),
-                    (want.fragments, want.written)
-                );
-            } else {
-                assert_eq!(stats, Stats::default());
-            }
-            assert!(want.written > 0);
-        }
         // Fragments pass and fail, and ties occur: the tests draw differently.
         let (mut c, mut d) = buffers();
+        let wide = (vertices(Shape::Wide), &walk());
         let (less, or_equal) = (
-            expected::<Less>(0, Shape::Wide, &mut c.clone(), &mut d.clone()),
-            expected::<LessOrEqual>(0, Shape::Wide, &mut c, &mut d),
+            expected::<Less>(0, wide, &mut c.clone(), &mut d.clone()),
+            expected::<LessOrEqual>(0, wide, &mut c, &mut d),
         );
         assert!(less.written < or_equal.written && or_equal.written < or_equal.fragments);
         for (first_row, shape) in [-2, 0, 3].into_iter().flat_map(|y| SHAPES.map(|s| (y, s))) {
-            check::<Less, Counted>(first_row, shape);
-            check::<LessOrEqual, Counted>(first_row, shape);
-            check::<Less, Uncounted>(first_row, shape);
-            check::<LessOrEqual, Uncounted>(first_row, shape);
+            for extra in [0, 6, 7, W] {
+                let (triangle, cells) = ((vertices(shape), &walk()), buffers_and(extra));
+                assert!(check::<Less, Counted>(first_row, triangle, &cells).written > 0);
+                check::<LessOrEqual, Counted>(first_row, triangle, &cells);
+                check::<Less, Uncounted>(first_row, triangle, &cells);
+                check::<LessOrEqual, Uncounted>(first_row, triangle, &cells);
+            }
         }
+    }
+
+    /// Random triangles over random stored depths near their own (wins, losses and ties in
+    /// every window), spans of every length from one cell to the buffers' width, each in
+    /// windows of eight cells and a pixel at a time: what the definition draws.
+    #[test]
+    fn r7_t21_windows_draw_the_definition() {
+        let mut seed = 0x9E37_79B9_7F4A_7C15_u64;
+        let mut next = |n: u32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 32) as u32 % n
+        };
+        let mut lengths = [false; W + 1];
+        for _ in 0..400 {
+            let mut point = || {
+                let x = next(16 * (W as u32 + 8)) as i32 - 16 * 4;
+                ScreenPoint::new(x, next(16 * (H as u32 + 4)) as i32 - 32)
+            };
+            let v = [point(), point(), point()];
+            let w = RoundedRows {
+                row: (1 << 29) + next(1 << 29) as i32,
+                step_x: next(1 << 21) as i32 - (1 << 20),
+                step_y: next(1 << 21) as i32 - (1 << 20),
+            };
+            // Stored depths within 32 of the walk's at the top left, some of them equal.
+            let near = ((w.row as u32 >> 15) as u16).wrapping_sub(16);
+            let (colors, mut depths) = buffers_and(7 + next(2) as usize);
+            for d in depths.iter_mut() {
+                *d = near.wrapping_add(next(32) as u16);
+            }
+            let cells = (colors, depths);
+            let clip = PixelRect::new(0, 0, W as i32, H as i32);
+            for s in triangle_spans(v, clip) {
+                lengths[(s.x1 - s.x0) as usize] = true;
+            }
+            check::<Less, Uncounted>(0, (v, &w), &cells);
+            check::<LessOrEqual, Uncounted>(0, (v, &w), &cells);
+            check::<Less, Counted>(0, (v, &w), &cells);
+        }
+        assert!(lengths[1..].iter().all(|&seen| seen), "{lengths:?}");
     }
 
     /// Rows the buffers do not hold draw nothing.
@@ -571,7 +656,7 @@ mod tests {
         // The rows reach past the buffers' last row (the clip holds more rows): nothing drawn.
         let tall = PixelRect::new(0, 0, W as i32, 2 * H as i32);
         assert!(draw::<Less, Counted>(
-            Shape::Wide,
+            (vertices(Shape::Wide), &walk()),
             tall,
             0,
             &mut cells,
