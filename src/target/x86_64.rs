@@ -269,17 +269,19 @@ macro_rules! rows_loop {
             "mov {rowz:e}, dword ptr [{s} + {row_z}]",
             "movzx {col:e}, word ptr [{s} + {bits}]",
             "mov {delta}, qword ptr [{s} + {delta_at}]",
-            "mov {l}, qword ptr [{s}]",
-            "mov {r}, qword ptr [{s} + {right}]",
+            "movq xmm6, qword ptr [{s}]",
+            "movhps xmm6, qword ptr [{s} + {right}]",
+            "movq xmm7, qword ptr [{s} + 8]",
+            "movhps xmm7, qword ptr [{s} + {right} + 8]",
             $($setup,)*
             "2:",
-            // Each end: its walk's high half; the walk steps.
-            "mov {x0}, {l}",
-            "shr {x0}, 32",
-            "add {l}, qword ptr [{s} + 8]",
-            "mov {x1}, {r}",
-            "shr {x1}, 32",
-            "add {r}, qword ptr [{s} + {right} + 8]",
+            // Each end: its walk's high half (both walks in xmm6, left then right, their
+            // steps in xmm7); the walks step.
+            "pshufd xmm14, xmm6, 0x0D",
+            "paddq xmm6, xmm7",
+            "movd {x0:e}, xmm14",
+            "psrlq xmm14, 32",
+            "movd {x1:e}, xmm14",
             // Pixels where 0 ≤ x0 < x1 ≤ width, by two unsigned comparisons (a negative end is
             // a large unsigned one); a span that crosses a side of the buffers is clamped to
             // them out of line (the clamps in line took two instructions a row more). 32-bit
@@ -306,20 +308,19 @@ macro_rules! rows_loop {
             "cmp {cptr}, qword ptr [{s} + {end}]",
             "jne 2b",
             // The last run ends at `last`; before it, the lower short edge takes its side:
-            // its walk that side's register, its step that side's in the block.
+            // its walk and its step that side's lanes.
             "mov {x0}, qword ptr [{s} + {last}]",
             "cmp {cptr}, {x0}",
             "je 5f",
             "mov qword ptr [{s} + {end}], {x0}",
-            "mov {x0}, qword ptr [{s} + {lower} + 8]",
-            "mov {x1}, qword ptr [{s} + {slot}]",
-            "mov qword ptr [{s} + {x1} + 8], {x0}",
-            "test {x1}, {x1}",
-            "jnz 9f",
-            "mov {l}, qword ptr [{s} + {lower}]",
+            "cmp qword ptr [{s} + {slot}], 0",
+            "jne 9f",
+            "movlps xmm6, qword ptr [{s} + {lower}]",
+            "movlps xmm7, qword ptr [{s} + {lower} + 8]",
             "jmp 2b",
             "9:",
-            "mov {r}, qword ptr [{s} + {lower}]",
+            "movhps xmm6, qword ptr [{s} + {lower}]",
+            "movhps xmm7, qword ptr [{s} + {lower} + 8]",
             "jmp 2b",
             // x1 beyond the last column, or left of column 0 (then no pixels).
             "31:",
@@ -339,8 +340,7 @@ macro_rules! rows_loop {
             $($paths,)*
             "5:",
             s = in(reg) $block as *mut RowBlock, cptr = out(reg) _, rowz = out(reg) _,
-            col = out(reg) _, delta = out(reg) _, l = out(reg) _, r = out(reg) _,
-            x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _, acc = out(reg) _,
+            col = out(reg) _, delta = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _, acc = out(reg) _,
             c = out(reg) _, d = out(reg) _,
             right = const EDGE, lower = const 2 * EDGE,
             width = const offset_of!(RowBlock, width), step_x = const offset_of!(RowBlock, step_x),
@@ -349,6 +349,7 @@ macro_rules! rows_loop {
             end = const offset_of!(RowBlock, end), last = const offset_of!(RowBlock, last),
             slot = const offset_of!(RowBlock, slot), row = const offset_of!(RowBlock, row),
             row_z = const offset_of!(RowBlock, row_z), bits = const offset_of!(RowBlock, bits),
+            out("xmm6") _, out("xmm7") _, out("xmm14") _,
             $($extra)*
             options(nostack),
         )
