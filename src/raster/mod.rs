@@ -499,10 +499,13 @@ impl FractionStepper {
         let den = den.max(1);
         // ceil(N / D) = floor((N + D − 1) / D); |n0| is below 2⁵⁴ (see `edge`).
         let start = n0.wrapping_add(den - 1);
+        // Whether the start fits 32 bits, by its low word sign-extended (one comparison).
+        let low = start as i32;
         FractionStepper {
-            acc: match i32::try_from(start) {
-                Ok(v) => packed_quotient32(v, den),
-                Err(_) => packed_quotient(start, den),
+            acc: if i64::from(low) == start {
+                packed_quotient32(low, den)
+            } else {
+                packed_quotient(start, den)
             },
             // Steps fit 32 bits (see `RationalStepper::new`).
             step: packed_quotient32(step as i32, den),
