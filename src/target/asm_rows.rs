@@ -164,7 +164,7 @@ pub(super) fn solid_rows<C: Copy, T: DepthTest, K: FragmentCount, W: LoopWord>(
     let Some(runs) = triangle.runs() else {
         return false;
     };
-    // A core with a loop without the clamps would take it here (see `solid_triangle`).
+    // A loop without the clamps for a triangle within the columns (x86-64's windows).
     let clamp = !(core_rows::WITHOUT_CLAMPS && triangle.within_columns(columns_bound(w)));
     // The triangle's first row in the buffers.
     let first = triangle.row().wrapping_sub(first_row) as u32;
