@@ -5,9 +5,16 @@
 //! ARMv7-M from ARMv8-M baseline, which has the same atomics but neither IT blocks nor shifted
 //! register offsets, nor ARMv6-M's edge walk (the crate walks edges by the target's atomics):
 //! it gets neither. `fixed3d_asm_rows` marks every target with a row loop in assembly: those
-//! two and x86-64 (src/target/x86_64.rs).
+//! two and x86-64 (src/target/x86_64.rs). `fixed3d_stages`, set by the environment variable
+//! `FIXED3D_STAGES` (bench/host.sh's stage breakdown), keeps apart the functions whose
+//! instructions that breakdown counts, which the crate otherwise has in line.
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-env-changed=FIXED3D_STAGES");
+    println!("cargo:rustc-check-cfg=cfg(fixed3d_stages)");
+    if std::env::var_os("FIXED3D_STAGES").is_some() {
+        println!("cargo:rustc-cfg=fixed3d_stages");
+    }
     for cfg in [
         "fixed3d_thumb",
         "fixed3d_thumb1",

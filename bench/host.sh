@@ -17,7 +17,8 @@ if ! command -v valgrind >/dev/null; then
 fi
 # The headline count from a build made as the firmware is (one codegen unit, fat LTO: the
 # `bench-lto` profile); the stage breakdown from the default release build, whose function
-# boundaries the breakdown needs (fat LTO inlines most of them).
+# boundaries the breakdown needs (fat LTO inlines most of them), with `FIXED3D_STAGES` set
+# (build.rs: the span set-up kept out of line, which the crate otherwise has in line).
 # First the same frame into a target that counts fragments and writes (the example's
 # TORUS_BENCH_COUNTED, a constant: see examples/torus_bench.rs), for what the counts cost.
 # Every build has the `asm` feature, as the firmware presets do (on x86-64 the row loop in
@@ -31,7 +32,7 @@ TORUS_BENCH_PER_FRAME_NORMALS=1 cargo build --profile bench-lto --features asm -
 cp target/bench-lto/examples/torus_bench target/bench-lto/examples/torus_bench_per_frame
 TORUS_BENCH_COUNTED=1 cargo build --profile bench-lto --features asm --example torus_bench
 cp target/bench-lto/examples/torus_bench target/bench-lto/examples/torus_bench_counted
-cargo build --release --features asm --example torus_bench
+FIXED3D_STAGES=1 cargo build --release --features asm --example torus_bench
 cargo build --profile bench-lto --features asm --example torus_bench
 no_asm_out=target/callgrind.torus-no-asm
 NO_REFERENCE=1 valgrind --tool=callgrind --callgrind-out-file="$no_asm_out" target/bench-lto/examples/torus_bench_no_asm "$frames" >/dev/null 2>&1

@@ -495,6 +495,8 @@ impl FractionStepper {
 
     /// Starts at `ceil(n0 / den)` (`0 < den < 2³¹`, `step` within i32, the quotient and
     /// `step / den` must fit i32, as for [`RationalStepper::new`]), stepping by `step / den`.
+    // In line, as the runs that set it up are (see `TriangleRows::runs`).
+    #[inline(always)]
     pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
         let den = den.max(1);
         // ceil(N / D) = floor((N + D − 1) / D); |n0| is below 2⁵⁴ (see `edge`).

@@ -321,10 +321,12 @@ impl TriangleRows {
     /// placeholder, zero (a copy of the left edge cost x86-64 0.6%). (The Cortex-M cores set
     /// their runs up in assembly instead, `triangle_runs`.)
     #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))))]
-    #[cfg_attr(
-        all(target_pointer_width = "32", target_has_atomic = "32"),
-        inline(always)
-    )]
+    // In line, with its edges and their steppers' set-up: left to the compiler, x86-64's
+    // triangle set-up (one function, `fill_face`, with LTO) sits at the edge of its inlining
+    // budget, and a few instructions more anywhere in it took one of them out of line (the
+    // frame 1% to 4.5% more). Out of line for bench/host.sh's stage breakdown.
+    #[cfg_attr(not(fixed3d_stages), inline(always))]
+    #[cfg_attr(fixed3d_stages, inline(never))]
     pub(crate) fn runs(&self) -> Option<Runs> {
         let TriangleRows {
             v: [a, b, c],
@@ -442,6 +444,8 @@ fn edge_by_division_call(p: ScreenPoint, q: ScreenPoint, py: i32) -> DivideStepp
 
 /// [`edge`] where the walk is not a [`DivideStepper`] (which alone needs `rows`).
 #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
+// On x86-64 in line, as the runs that call it are (see `TriangleRows::runs`).
+#[cfg_attr(target_pointer_width = "64", inline(always))]
 fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, _rows: u32) -> EdgeWalk {
     // Without a hardware divide, the whole pixels of p.x − 8 come out by a shift:
     // ceil(((16k + m)·dy + …) / 16dy) = k + ceil((m·dy + …) / 16dy), a small quotient for

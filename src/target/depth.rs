@@ -1,5 +1,7 @@
 //! Depth buffers: per-pixel depth in a caller-supplied `&mut [u16]` or `&mut [u32]`.
 
+use core::num::NonZeroU64;
+
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
 use super::asm_rows;
 use super::grid::{BufferError, Grid};
@@ -388,6 +390,14 @@ impl<W: LoopWord> RoundedRows<W> {
         short_sides: bool,
     ) -> Option<(Self, i32)> {
         let (nx, ny) = Plane::numerators_given(p, z, short_sides);
+        // With 64-bit words each step by one division of its numerator's magnitude by the
+        // area's, its sign both signs' (x86-64's frame 0.34% fewer instructions than making
+        // the numerators and the area positive first, which the others do).
+        let wide = if cfg!(target_pointer_width = "64") {
+            Some(steps_over_area(nx, ny, area)?)
+        } else {
+            None
+        };
         let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
         // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area. Without a
         // divide instruction (Cortex-M0), for the usual triangle (a doubled area below 2²⁹,
@@ -399,7 +409,7 @@ impl<W: LoopWord> RoundedRows<W> {
         } else {
             None
         };
-        let (sx, sy) = if let Some(steps) = short {
+        let (sx, sy) = if let Some(steps) = short.or(wide) {
             steps
         } else {
             let by_area = DivideBy::new(den);
@@ -431,6 +441,23 @@ impl<W: LoopWord> RoundedRows<W> {
         };
         Some((rows, sx))
     }
+}
+
+/// The steps `round(32·n / area)` of the gradient numerators `nx` and `ny` over the doubled
+/// signed area (not 0; `None` for 0), ties away from zero, where both fit an i32, else
+/// `None`: what [`DivideBy::round_shifted_i32`]`(n, 5)` gives of the numerators and the area
+/// made positive (a numerator's magnitude is unchanged, its sign turned where the area's is
+/// negative; a zero numerator's quotient is zero either way).
+#[inline(always)]
+fn steps_over_area(nx: i64, ny: i64, area: i64) -> Option<(i32, i32)> {
+    let d = NonZeroU64::new(area.unsigned_abs())?;
+    let half = d.get() / 2;
+    let step = |n: i64| {
+        // |n| · 2⁵ lies below 2⁶³ for the pipeline's triangles (see `round_shifted`).
+        let q = ((n.unsigned_abs() << 5).wrapping_add(half) / d) as i64;
+        i32::try_from(if (n ^ area) < 0 { q.wrapping_neg() } else { q }).ok()
+    };
+    Some((step(nx)?, step(ny)?))
 }
 
 /// `⌊(sx·dx + sy·dy + 8) / 16⌋` modulo 2³² for steps `sx`, `sy` and offsets `dx`, `dy` within
@@ -612,6 +639,60 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
 mod tests {
     use super::*;
     use crate::raster::{doubled_area, triangle_spans, PixelRect, PIPELINE_LIMIT};
+
+    /// The steps by the numerators' magnitudes over the area's are `DivideBy`'s of the
+    /// numerators and the area made positive, for both signs of each, zero numerators, ties,
+    /// and steps at and beyond i32's ends (`None` where either does not fit).
+    #[test]
+    fn steps_over_area_are_those_over_the_positive_area() {
+        let reference = |nx: i64, ny: i64, area: i64| {
+            let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+            let by = DivideBy::new(den);
+            Some((by.round_shifted_i32(nx, 5)?, by.round_shifted_i32(ny, 5)?))
+        };
+        let mut seed = 0x2545_F491_4F6C_DD1D_u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut cases = std::vec![
+            (0, 0, 1),
+            (0, 0, -1),
+            (1, -1, 64),
+            (-1, 1, -64),
+            (3, -3, 192),
+        ];
+        // Quotients at i32's ends: 32·n / d just inside and outside [−2³¹, 2³¹).
+        for d in [1_i64, 3, 1 << 20] {
+            for n in [
+                (1_i64 << 26) * d - 1,
+                (1 << 26) * d,
+                -(1 << 26) * d,
+                -(1 << 26) * d - d,
+            ] {
+                cases.push((n, 1, d));
+                cases.push((n, -1, -d));
+            }
+        }
+        for _ in 0..20_000 {
+            let bits = next();
+            let area = (next() >> (34 + bits % 28)) as i64 + 1;
+            let area = if bits & 1 == 0 { area } else { -area };
+            let n =
+                |v: u64| (v >> (18 + (v >> 58) % 24)) as i64 - (v >> (19 + (v >> 58) % 24)) as i64;
+            cases.push((n(next()), n(next()), area));
+        }
+        for (nx, ny, area) in cases {
+            assert_eq!(
+                steps_over_area(nx, ny, area),
+                reference(nx, ny, area),
+                "{nx} {ny} {area}"
+            );
+        }
+        assert_eq!(steps_over_area(5, 5, 0), None);
+    }
 
     /// The Cortex-M0's offset of the reference pixel in words is the widening products' for
     /// steps of every size and every offset within a pixel.
