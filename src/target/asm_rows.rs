@@ -391,8 +391,9 @@ pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {
 
 /// The cells of `rows` rows of `width` from row `first` in both buffers, or `None` where
 /// either buffer does not hold them all (never, for spans clipped to the target); on x86-64
-/// uncounted with the [`WINDOW_SPARE`] cells after them where both buffers hold those too,
-/// and then true (the loop's windows of eight cells, `x86_64::rows`).
+/// with the [`WINDOW_SPARE`] cells after them where both buffers hold those too (and,
+/// counted, the rows hold at most 2¹⁵ windows), and then true (the loop's windows of eight
+/// cells, `x86_64::rows`).
 #[inline(always)]
 fn run_cells<'b, C, K: FragmentCount>(
     colors: &'b mut [C],
@@ -405,8 +406,10 @@ fn run_cells<'b, C, K: FragmentCount>(
     // not (one product checked rather than two and their sum: the M4's frame 0.35% fewer
     // instructions, the M0's 0.1%, x86-64's 0.27% more, from its registers' moves).
     let end = product(first.checked_add(rows)?, width)?;
+    // Counted, each lane's count of wins stays within a word: at most 2¹⁵ windows, a row
+    // holding at most width / 8 + 1.
     let windows = cfg!(target_arch = "x86_64")
-        && !K::COUNTED
+        && (!K::COUNTED || (rows as usize).saturating_mul(width / 8 + 1) <= 1 << 15)
         && end
             .checked_add(WINDOW_SPARE)
             .is_some_and(|e| e <= colors.len());
@@ -418,7 +421,7 @@ fn run_cells<'b, C, K: FragmentCount>(
     ))
 }
 
-/// The cells x86-64's uncounted loop reads and writes back unchanged after the rows' last
+/// The cells x86-64's loop in windows reads and writes back unchanged after the rows' last
 /// (its last window of eight cells may start at the last row's last cell).
 const WINDOW_SPARE: usize = 7;
 
@@ -581,9 +584,9 @@ mod tests {
     }
 
     /// The loop draws what the definition draws, for both tests, counted or not, in a band
-    /// whose first row is not 0, with spans clamped on both sides and empty ones; uncounted
-    /// on x86-64 in windows of eight cells where the buffers hold 7 cells after the rows
-    /// (`extra`), a pixel at a time where they do not.
+    /// whose first row is not 0, with spans clamped on both sides and empty ones; on x86-64
+    /// in windows of eight cells where the buffers hold 7 cells after the rows (`extra`), a
+    /// pixel at a time where they do not.
     #[test]
     fn r7_t21_solid_rows_draw_the_definition() {
         // Fragments pass and fail, and ties occur: the tests draw differently.
@@ -643,8 +646,49 @@ mod tests {
             check::<Less, Uncounted>(0, (v, &w), &cells);
             check::<LessOrEqual, Uncounted>(0, (v, &w), &cells);
             check::<Less, Counted>(0, (v, &w), &cells);
+            check::<LessOrEqual, Counted>(0, (v, &w), &cells);
         }
         assert!(lengths[1..].iter().all(|&seen| seen), "{lengths:?}");
+    }
+
+    /// A counted triangle of more than 2¹⁵ windows of eight cells (a lane of x86-64's count of
+    /// wins would leave its word) takes the pixel loop, and counts every fragment it writes.
+    #[test]
+    fn r7_t21_counts_of_many_windows() {
+        // Full rows of 32 windows each: 64,000 a lane.
+        const WIDE: usize = 256;
+        const ROWS: usize = 2000;
+        let cells = WIDE * ROWS + 7;
+        let (mut colors, mut depths) = (vec![Rgb565::BLUE; cells], vec![FAR; cells]);
+        let v = [
+            ScreenPoint::new(-16, -16),
+            ScreenPoint::new(16 * WIDE as i32 * 3, -16),
+            ScreenPoint::new(-16, 16 * 2 * ROWS as i32),
+        ];
+        let clip = PixelRect::new(0, 0, WIDE as i32, ROWS as i32);
+        let rows = rows_in_range(v, clip, doubled_area(v[0], v[1], v[2]));
+        let near = RoundedRows {
+            row: 1 << 20,
+            step_x: 0,
+            step_y: 0,
+        };
+        let mut stats = Stats::default();
+        let bits = color_bits(&Rgb565::RED).unwrap_or_default();
+        let drew = rows.as_ref().is_some_and(|rows| {
+            solid_rows::<Rgb565, Less, Counted, i32>(
+                rows,
+                &near,
+                &mut colors,
+                &mut depths,
+                0,
+                WIDE as u32,
+                bits,
+                &mut stats,
+            )
+        });
+        let written = colors.iter().filter(|&&c| c == Rgb565::RED).count() as u32;
+        assert!(drew && written == (WIDE * ROWS) as u32, "{drew} {written}");
+        assert_eq!((stats.fragments, stats.written), (written, written));
     }
 
     /// Rows the buffers do not hold draw nothing.

@@ -130,7 +130,7 @@ macro_rules! pixels {
 /// the stored elsewhere, beyond the span too), the colours `old ^ ((old ^ new) & wins)`
 /// (`xmm12` the triangle's).
 macro_rules! window {
-    ($less:tt, [$($depths:literal),*], $high:literal, [$($cells:expr),*]) => {
+    ($less:tt, $count:tt, [$($depths:literal),*], $high:literal, [$($cells:expr),*]) => {
         concat!(
             $($depths, "\n",)*
             "psrad xmm1, 15\n",
@@ -150,7 +150,18 @@ macro_rules! window {
             "pand xmm1, xmm5\n",
             "pxor xmm1, xmm2\n",
             "movdqu xmmword ptr [{c} + 2 * {i}], xmm1\n",
+            if_counted!($count, "paddw xmm15, xmm5\n", ""),
         )
+    };
+}
+
+/// `$yes` where `$count` is `counted`, else (`uncounted`) `$no`.
+macro_rules! if_counted {
+    (counted, $yes:literal, $no:literal) => {
+        $yes
+    };
+    (uncounted, $yes:literal, $no:literal) => {
+        $no
     };
 }
 
@@ -169,8 +180,9 @@ macro_rules! if_less {
 /// eight times `step_x` in each lane); then the last window, its lanes those of the cells
 /// left, and on to the next row.
 macro_rules! windows {
-    ($less:tt) => {
+    ($less:tt, $count:tt) => {
         concat!(
+            if_counted!($count, "sub dword ptr [{s} + {frag}], {i:e}\n", ""),
             "movd xmm0, {acc:e}\n",
             "pshufd xmm0, xmm0, 0\n",
             "cmp {i}, -8\n",
@@ -178,6 +190,7 @@ macro_rules! windows {
             "40:\n",
             window!(
                 $less,
+                $count,
                 [
                     "movdqa xmm1, xmm0",
                     "paddd xmm1, xmm8",
@@ -194,6 +207,7 @@ macro_rules! windows {
             "41:\n",
             window!(
                 $less,
+                $count,
                 ["movdqa xmm1, xmm0", "paddd xmm1, xmm8", "paddd xmm0, xmm9"],
                 "xmm0",
                 [
@@ -279,8 +293,8 @@ macro_rules! within_test {
 /// the row address step down. At the end of the first run the lower short edge takes its
 /// side, and the second run goes on to `last`.
 macro_rules! rows_loop {
-    ($test:expr, [$($setup:expr),*], $span:expr, [$($paths:expr),*]; $block:expr,
-     $($extra:tt)*) => {
+    ($test:expr, [$($setup:expr),*], $span:expr, [$($paths:expr),*], [$($finish:expr),*];
+     $block:expr, $($extra:tt)*) => {
         core::arch::asm!(
             // The first row's colour address, the depth walk, the colour, the distance from
             // the colour buffer to the depth buffer, and the two edges' walks.
@@ -354,6 +368,7 @@ macro_rules! rows_loop {
             "jmp 13b",
             $($paths,)*
             "5:",
+            $($finish,)*
             s = in(reg) $block as *mut RowBlock, cptr = out(reg) _, rowz = out(reg) _,
             col = out(reg) _, delta = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _, acc = out(reg) _,
             c = out(reg) _, d = out(reg) _,
@@ -379,19 +394,52 @@ macro_rules! pixel_rows {
      $($extra:tt)*) => {
         rows_loop!(clamped_test!(), [], pixels!($fail, $places, $before, $after),
             [$(concat!("22:\n", $path, "\njmp 7b\n23:\n", $path, "\njmp 17b\n24:\n", $path,
-                "\njmp 27b"))?];
+                "\njmp 27b"))?], [];
             $block, $($extra)*)
     };
 }
 
-/// `rows_loop!` in windows of eight cells (`windows!`), for `$less`'s depth test.
+/// `rows_loop!` in windows of eight cells (`windows!`), for `$less`'s depth test, `$test`'s
+/// rows, and `counted` or not: counted, each span's length added to the fragments on entry,
+/// each window's winning lanes to `xmm15`'s words (less one for each: `paddw` of the mask),
+/// and once a triangle the failures found from them (`windows_count!`).
 macro_rules! window_rows {
-    ($less:tt, $test:expr; $block:expr) => {
-        rows_loop!($test, [windows_setup!()], windows!($less), []; $block,
+    ($less:tt, $test:expr, uncounted; $block:expr) => {
+        rows_loop!($test, [windows_setup!()], windows!($less, uncounted), [], []; $block,
             lanes = sym WINDOW_BOUNDS, bias = sym WORD_BIAS,
             out("xmm0") _, out("xmm1") _, out("xmm2") _, out("xmm3") _, out("xmm4") _,
             out("xmm5") _, out("xmm8") _, out("xmm9") _, out("xmm11") _,
             out("xmm12") _,)
+    };
+    ($less:tt, $test:expr, counted; $block:expr) => {
+        rows_loop!($test, [windows_setup!(), "pxor xmm15, xmm15"], windows!($less, counted),
+            [], [windows_count!()]; $block,
+            lanes = sym WINDOW_BOUNDS, bias = sym WORD_BIAS,
+            frag = const offset_of!(RowBlock, fragments),
+            out("xmm0") _, out("xmm1") _, out("xmm2") _, out("xmm3") _, out("xmm4") _,
+            out("xmm5") _, out("xmm8") _, out("xmm9") _, out("xmm11") _,
+            out("xmm12") _, out("xmm15") _,)
+    };
+}
+
+/// A counted triangle's failures from its windows' count of winning lanes (`xmm15`, each
+/// word less one for every win in its lane: at most 2¹⁵ of them, see `asm_rows::run_cells`):
+/// the words summed in pairs by `pmaddwd` with ones (signed: each word in [−2¹⁵, 0]), the
+/// four sums summed, and the fragments (each span's length, added on entry) less the wins.
+macro_rules! windows_count {
+    () => {
+        concat!(
+            "pcmpeqw xmm1, xmm1\n",
+            "psrlw xmm1, 15\n",
+            "pmaddwd xmm15, xmm1\n",
+            "pshufd xmm1, xmm15, 0x4E\n",
+            "paddd xmm15, xmm1\n",
+            "pshufd xmm1, xmm15, 0xB1\n",
+            "paddd xmm15, xmm1\n",
+            "movd {x0:e}, xmm15\n",
+            "add {x0:e}, dword ptr [{s} + {frag}]\n",
+            "mov dword ptr [{s} + {frag} + 4], {x0:e}",
+        )
     };
 }
 
@@ -408,9 +456,9 @@ const _: () = assert!(offset_of!(RowBlock, failed) == offset_of!(RowBlock, fragm
 pub(super) const WITHOUT_CLAMPS: bool = true;
 
 /// The rows of a triangle in `block` (see [`RowBlock`]) through `rows_loop!`, the fragments
-/// counted when `K` counts; uncounted with `windows` in windows of eight cells
-/// (`window_rows!`, without the clamps unless `clamp`), else a pixel at a time
-/// (`pixel_rows!`, which clamp every row).
+/// counted when `K` counts; with `windows` in windows of eight cells (`window_rows!`, without
+/// the clamps unless `clamp`), else a pixel at a time (`pixel_rows!`, which clamp every
+/// row).
 ///
 /// # Safety
 /// `block` keeps [`RowBlock`]'s contract (without `clamp`, every span end within
@@ -460,20 +508,26 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(
     //   by default.
     unsafe {
         match (T::OR_EQUAL, K::COUNTED, windows) {
-            (false, true, _) => pixel_rows!("jae", ["23f", "22f", "24f"],
+            (false, true, false) => pixel_rows!("jae", ["23f", "22f", "24f"],
                 ["sub dword ptr [{s} + {frag}], {i:e}", "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
                 ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
                 block, frag = const offset_of!(RowBlock, fragments),),
-            (true, true, _) => pixel_rows!("ja", ["23f", "22f", "24f"],
+            (true, true, false) => pixel_rows!("ja", ["23f", "22f", "24f"],
                 ["sub dword ptr [{s} + {frag}], {i:e}", "mov {x1:e}, dword ptr [{s} + {frag} + 4]"],
                 ["mov dword ptr [{s} + {frag} + 4], {x1:e}"], ["add {x1:e}, 1"];
                 block, frag = const offset_of!(RowBlock, fragments),),
             (false, false, false) => pixel_rows!("jae", ["17f", "7f", "27f"], [], [], []; block,),
             (true, false, false) => pixel_rows!("ja", ["17f", "7f", "27f"], [], [], []; block,),
-            (false, false, true) if clamp => window_rows!(less, clamped_test!(); block),
-            (true, false, true) if clamp => window_rows!(or_equal, clamped_test!(); block),
-            (false, false, true) => window_rows!(less, within_test!(); block),
-            (true, false, true) => window_rows!(or_equal, within_test!(); block),
+            (false, false, true) if clamp => window_rows!(less, clamped_test!(), uncounted; block),
+            (true, false, true) if clamp => {
+                window_rows!(or_equal, clamped_test!(), uncounted; block)
+            }
+            (false, false, true) => window_rows!(less, within_test!(), uncounted; block),
+            (true, false, true) => window_rows!(or_equal, within_test!(), uncounted; block),
+            (false, true, true) if clamp => window_rows!(less, clamped_test!(), counted; block),
+            (true, true, true) if clamp => window_rows!(or_equal, clamped_test!(), counted; block),
+            (false, true, true) => window_rows!(less, within_test!(), counted; block),
+            (true, true, true) => window_rows!(or_equal, within_test!(), counted; block),
         }
     }
 }
