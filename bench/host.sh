@@ -158,10 +158,18 @@ $stages
   fragment, six one that loses, and a span of odd length takes its first pixel apart, four
   more (its frame 1% fewer instructions than one pixel a turn; the torus' spans are 4.8
   pixels long on average; on the M0 a second pixel's cells need two more registers, which
-  the row loop does not have, or an index step of its own, which costs as much as it saves;
-  on x86-64 eight pixels a turn in SSE2, each span's lanes masked, would take about 30
-  instructions a span by a count of what it needs, against about 38 for the 4.8 pixels
-  now: not tried).
+  the row loop does not have, or an index step of its own, which costs as much as it saves).
+  On x86-64 a span now takes its cells eight at a time in SSE2, its baseline, wherever the
+  buffers hold 7 cells after the triangle's rows (all but a triangle on their last row):
+  each window of eight cells from the span's first is read, merged and written back whole
+  (\`window_rows!\`: the depths of its lanes from the walk broadcast and the steps to each
+  lane, less 2¹⁵ so that a signed comparison of words orders them, the lanes beyond the
+  span held off by a bound, the depths written the lesser of each pair and the colours
+  merged under the winning lanes), 21 instructions a window (19 for a whole one) and 4 to
+  enter the span: about 25 for the torus' span against about 40 a pixel at a time, and 17
+  a triangle to set up its registers. The frame 3.5% fewer instructions (1.175 M → 1.134
+  M; SSE4.1's unsigned minimum and packing would take two or three a window fewer, but
+  are not x86-64's baseline).
   A target that counts fragments (the default, for \`Stats\`) adds each span's length and counts the fragments that fail, one count
   carried through every span of a triangle (writes are the fragments less the failures; a
   count of the writes from zero for each span cost the M4 1% to 3.4% of its frame, the M0
@@ -170,8 +178,12 @@ $stages
   take the pixels in pairs), the
   M0 4.1% (3.0% with its \`asm\` loop), x86-64 1.6% (the counts hold registers in the row
   loop, and since the reciprocal square root took one Newton step the uncounted compiled
-  pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before;
-  2.9% with its \`asm\` loop, which adds each span's length in memory). The depth test
+  pixel loop keeps its colour on the stack, where it had it in a register, 3.1% before).
+  With the \`asm\` feature x86-64's windows count too: each span's length added on entry,
+  each window's winning lanes into a register's words (one \`paddw\` of the mask), their
+  sum once a triangle (for rows of at most 2¹⁵ windows, so that no lane's count leaves its
+  word; others take the pixel loop): the counted frame 2.8% fewer instructions than in
+  that loop (1.185 M → 1.152 M), 3.5% above the uncounted one. The depth test
   is a type too (\`Less\` or \`LessOrEqual\`): as a run-time flag it cost a load and a
   branch per span, 0.7% of the M4's frame, 1% of x86-64's, 0.3% of
   the M0's, and linked both loops. The floor of the scene is about 0.4 M on x86-64. On the M4 the same loop out of line
@@ -267,15 +279,21 @@ $stages
   span's odd pixel goes apart). With the \`asm\` feature x86-64 runs the whole triangle's
   rows in assembly too (src/target/x86_64.rs), from the Cortex-M loops' block and set-up:
   both edges' walks stay in registers (their steps in the block), 14 instructions a row, 6
-  to enter a span, 7 a fragment and 2 more a write (now 5 and 2, and 2 for each two
-  pixels): the frame 10% fewer instructions (1.660 M → 1.493 M), where the same block
-  walked by a compiled loop (for targets without assembly) had measured 3.7% more. In the
+  to enter a span, 7 a fragment and 2 more a write (later 5 and 2, and 2 for each two
+  pixels; now windows of eight cells, above): the frame 10% fewer instructions (1.660 M →
+  1.493 M), where the same block walked by a compiled loop (for targets without assembly)
+  had measured 3.7% more. Both walks now lie in one SSE2 register, their steps in
+  another: one \`paddq\` steps both and four instructions take their high halves, 5 a row
+  where they took 6 in two general registers (0.64%, 1.134 M → 1.127 M); the lower short
+  edge takes its side's lanes. In the
   \`asm\` loops the clamps to the columns took 4 or 5 instructions a row (without them the
   M4's frame measured 2.5% fewer, the M0's 1.0%, x86-64's 2.2%): the M4 takes a second loop
   without them for a triangle within the columns (one unsigned test a vertex,
-  \`TriangleRows::within_columns\`: 1.5% net, about 200 bytes), the M0 and x86-64 test both ends
-  of every span by two unsigned comparisons and clamp out of line (a second loop and its test
-  gained them only 0.3% and 0.4%, 216 bytes on the M0). A copy of the compiled row loop
+  \`TriangleRows::within_columns\`: 1.5% net, about 200 bytes), the M0 tests both ends
+  of every span by two unsigned comparisons and clamps out of line (a second loop and its test
+  gained it only 0.3%, 216 bytes), and so does x86-64 a pixel at a time; its windows have
+  a second loop for a triangle within the columns, one comparison a row (0.3%, the test
+  included). A copy of the compiled row loop
   without the clamps had measured 0.7% more on the M4 and 12% more on the M0. An
   earlier fixed-point walk for small triangles only (exact while rows × 16 × height ≤ 2¹⁶,
   in a second copy of the row loop) measured no gain on the M4, 1.8% more on x86-64 and
@@ -530,12 +548,28 @@ $stages
   usual shift by one branch (0.37%), the row set-up's divisions in line (0.53%), the seed
   tables' addresses from the literal pool and a half size kept (0.34%), the walk's output
   not cleared first (0.19%) and written into the block (0.33%), its sides tested once and
-  only where not known short (0.19%): 1.993 M. x86-64 (1.175 M) is not reached: before
-  that round, with the pixels at what they took (0.22 M on
+  only where not known short (0.19%): 1.993 M. x86-64 is not reached: 1.175 M at the start
+  of the last round, 1.113 M now (5.3% fewer), from the windows of eight cells in SSE2
+  (3.5%), the edges' walks in one SSE2 register (0.64%), \`FractionStepper::new\`'s test of
+  a 32-bit start by its low word sign-extended (0.48%), the windows' loop without the
+  clamps (0.3%) and the depth walk's steps by each numerator's magnitude over the area's
+  (0.34%, with the runs, their edges and their steppers' set-up held in line: x86-64's
+  triangle set-up, one function with LTO, sits at the edge of the inliner's budget, where
+  a few instructions more anywhere took one of them out of line, 1% to 4.5% more). Not
+  kept there: a divide by one \`div\` in assembly, for the compiler's test of 32-bit
+  operands (four instructions) before the depth walk's two (0.04% more: its fixed
+  registers), \`fill_face\` in line in the walk (2.4% more: the shading and the target's
+  fill then went out of line; held in line too, the runs and the depth walk did, 7.8%),
+  the row loop's block not cleared first (0.085% fewer, for more \`unsafe\`). Where the
+  1.113 M go: rows and pixels in assembly about 0.35 M (13 a row, about 10 to enter a span
+  and 21 a window), each drawn triangle's set-up, inputs and shading about 575
+  instructions (0.55 M: its runs with three edges about 150, its depth walk about 88, its
+  rows about 54, its flat shading and colour about 94, the calls, the block and the rest
+  about 190), the walk 0.10 M and the vertex stage 0.11 M. Before that round, with the
+  pixels at what they took (0.22 M on
   the M4), 1.0 M left
   0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
-  rows, 93% of what they took then (on x86-64, whose rows and pixels with the \`asm\` loop
-  take about 0.42 M, the rest about 0.75 M). Per drawn triangle the M4 took about 490
+  rows, 93% of what they took then. Per drawn triangle the M4 took about 490
   instructions outside its rows and pixels (its inputs, its flat shading, the set-up of its
   rows and of its depth walk, 0.47 M). That is not the compiler's moves between registers
   and the stack, as it looked: written by hand, the set-up of a triangle's rows (the sort of

@@ -346,14 +346,10 @@ unsafe fn run_block<C: Copy, T: DepthTest, K: FragmentCount>(
     // (set up by `TriangleRows::runs`, on Cortex-M0 by `thumb1::triangle_runs`, which
     // computes the same walks, or on Cortex-M3/M4 by `thumb2::triangle_runs`, which computes
     // them with no base, the numerator signed: see its documentation).
+    // (x86-64's loop also takes whether it may take windows of eight cells.)
     #[cfg(target_arch = "x86_64")]
-    unsafe {
-        core_rows::rows::<T, K>(block, clamp, windows)
-    };
-    #[cfg(not(target_arch = "x86_64"))]
-    unsafe {
-        core_rows::rows::<T, K>(block, clamp)
-    };
+    let clamp = (clamp, windows);
+    unsafe { core_rows::rows::<T, K>(block, clamp) };
     if K::COUNTED {
         stats.fragments = stats.fragments.saturating_add(block.fragments);
         // Each failed fragment was counted among the fragments: no wrap.

@@ -468,8 +468,7 @@ pub(super) const WITHOUT_CLAMPS: bool = true;
 #[allow(unsafe_code)]
 pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(
     block: &mut RowBlock,
-    clamp: bool,
-    windows: bool,
+    (clamp, windows): (bool, bool),
 ) {
     // SAFETY (the caller keeps `RowBlock`'s contract, and with `windows` holds the 7 cells
     // after the rows too):
