@@ -5,30 +5,33 @@
 //! A whole triangle's rows, both runs (above and below its middle vertex), in one block of
 //! assembly on the block `asm_rows::solid_rows` fills in ([`RowBlock`]), as on the Cortex-M
 //! cores. An edge is the walk the compiled loop steps (`FractionStepper`: its value in the
-//! high half of one 64-bit word, one addition a row); both walks stay in registers, their
-//! steps in the block. A row takes 14 instructions (both edges, two unsigned comparisons of
-//! the span's ends with the target's columns, a span that crosses a side clamped out of line,
-//! the depth walk and the row address) and 6 more to enter a span; the compiled row
-//! loop took about 45 a row, 52 with pixels, moving its edges, clip columns and buffers
-//! between the stack and registers around the pixel loop and entering its unrolled pixel
-//! loop. A fragment takes 7 instructions and 2 more where it wins (the compiled loop about
-//! 10.2 a fragment: it reloads the colour from the stack, and a span's odd pixel goes apart).
-//! The reference frame 10% fewer instructions (1.660 M → 1.493 M). Its pixel loop takes two
-//! pixels a turn, the second at the next cells' displacement, so that the turn's index step
-//! and branch serve both: 5 instructions a fragment, 2 more where it wins, and 2 a turn; a span
-//! of odd length takes its first pixel apart, 4 more (1% fewer, 1.454 M → 1.440 M; the spans
-//! of the torus are 4.8 pixels long on average).
+//! high half of one 64-bit word, one addition a row); both walks lie in one SSE2 register,
+//! their steps in another, so that one `paddq` steps both (5 instructions a row for the two
+//! span ends, where the walks in two general registers took 6: 0.64%). A row takes 13
+//! instructions (both edges, two unsigned comparisons of the span's ends with the target's
+//! columns, a span that crosses a side clamped out of line, the depth walk and the row
+//! address), 11 in the windows' loop for a triangle within the columns (one comparison: 0.3%,
+//! the test a triangle included); the compiled row loop took about 45 a row, 52 with pixels,
+//! moving its edges, clip columns and buffers between the stack and registers around the pixel
+//! loop and entering its unrolled pixel loop. The first form (14 a row, 7 instructions a
+//! fragment and 2 more where it wins, against the compiled loop's 10.2) took the reference
+//! frame 10% fewer instructions (1.660 M → 1.493 M).
 //!
-//! A target that counts no fragments (`ColorDepth::uncounted`, as the reference frame draws)
-//! takes a span's cells eight at a time in SSE2, x86-64's baseline, wherever the buffers
+//! A span takes its cells eight at a time in SSE2, x86-64's baseline, wherever the buffers
 //! hold 7 cells after the triangle's rows (all but a triangle on their last row, which takes
-//! the pixel loop): the window of eight cells from the span's first read, merged and written
-//! back whole (the cells beyond the span unchanged), its depths from the walk broadcast and
-//! the steps to each lane, the test by a signed comparison of words less 2¹⁵, the depths
-//! written the lesser of each pair, the colours merged under the winning lanes: 21
+//! the pixel loop below): the window of eight cells from the span's first read, merged and
+//! written back whole (the cells beyond the span unchanged), its depths from the walk
+//! broadcast and the steps to each lane, the test by a signed comparison of words less 2¹⁵,
+//! the depths written the lesser of each pair, the colours merged under the winning lanes: 21
 //! instructions a window (19 for a whole one) and 4 to enter the span, about 25 for the
 //! torus' span where the pixel loop took about 40, and 17 more a triangle to set up its
-//! registers. The reference frame 3.5% fewer instructions (1.175 M → 1.134 M).
+//! registers: the reference frame 3.5% fewer instructions (1.175 M → 1.134 M). Counted, each
+//! span's length is added on entry and each window's winning lanes to a register's words
+//! (one instruction a window), summed once a triangle: the counted frame 2.8% fewer than
+//! through the pixel loop (1.185 M → 1.152 M). The pixel loop takes two pixels a turn, the
+//! second at the next cells' displacement, so that the turn's index step and branch serve
+//! both: 5 instructions a fragment, 2 more where it wins, and 2 a turn; a span of odd length
+//! takes its first pixel apart, 4 more.
 //!
 //! It computes exactly what the Rust loops compute: the same span ends (the same walks' high
 //! halves, clamped to the same columns), the same depths (`acc >> 15`, below 2¹⁶ since every
