@@ -287,14 +287,14 @@ macro_rules! within_test {
     };
 }
 
-/// The row loop in assembly: `$setup` after the block's values are loaded, `$span` a span's
-/// pixels (from its cells `c + 2·i` and `d + 2·i`, i from x0 − x1 to 0, the walk `acc` at its
-/// first), and `$paths` out of line; then the block's address and the loop's own operands.
-/// A row: each edge's span end (the high half of its walk, which then steps), the span
-/// clamped to `0..width` (tested by two unsigned comparisons, clamped out of line), and
-/// where it holds pixels the depth at its first one and the span; then the depth walk and
-/// the row address step down. At the end of the first run the lower short edge takes its
-/// side, and the second run goes on to `last`.
+/// The row loop in assembly: `$test` a row's test of its span (`clamped_test!` or
+/// `within_test!`), `$setup` after the block's values are loaded, `$span` a span's pixels
+/// (from its cells `c + 2·i` and `d + 2·i`, i from x0 − x1 to 0, the walk `acc` at its
+/// first), `$paths` out of line and `$finish` at the end; then the block's address and the
+/// loop's own operands. A row: each edge's span end (the high half of its walk, which then
+/// steps), the span's test, and where it holds pixels the depth at its first one and the
+/// span; then the depth walk and the row address step down. At the end of the first run the
+/// lower short edge takes its side, and the second run goes on to `last`.
 macro_rules! rows_loop {
     ($test:expr, [$($setup:expr),*], $span:expr, [$($paths:expr),*], [$($finish:expr),*];
      $block:expr, $($extra:tt)*) => {
@@ -492,22 +492,21 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(
     //   for x0 ≤ x < x1 + 7 ≤ width + 7, below rows·width + 7, which the caller holds with
     //   `windows`. It also reads `block` (borrowed mutably) and the statics WORD_BIAS
     //   (aligned to 16, as `pxor` needs) and the 16 bytes of WINDOW_BOUNDS from 2i bytes
-    //   before its end (−8 ≤ i ≤ −1: within it), and writes the lower edge's step over that
-    //   of the edge at `slot` (0 or one edge's size), `end` and, counted, its counts;
-    //   nothing else, and no stack (`nostack`).
+    //   before its end (−8 ≤ i ≤ −1: within it), and writes `end` and, counted, its
+    //   counts; nothing else, and no stack (`nostack`).
     // - Values: a depth cell of the span gets a u16, a colour cell `bits`' two low bytes,
     //   those of a valid colour unchanged; a window's cells beyond the span get the two
-    //   bytes they held (a lane beyond the span never wins, and the lesser of 0xFFFF and
-    //   the stored depth is the stored one). An edge's step gets a valid edge's step (any
-    //   u64 is one), `end` the address `last`, the counts u32s.
+    //   bytes they held (a lane beyond the span never wins, and its new depth, the greatest
+    //   word after `pmaxsw`, leaves the lesser of the pair the stored one). `end` gets the
+    //   address `last`, the counts u32s.
     // - Termination: each row ends with i rising to 0 from x0 − x1 ≥ −width, by one for a
     //   span of odd length and then by two, so that it meets 0 exactly (in windows, by
     //   eight to −8 ≤ i ≤ −1, then once). `cptr` rises by `stride` > 0 a row from the first
     //   cell: it meets `end` after `upper` ≥ 1 rows; unless that is `last` (upper = rows),
     //   `end` becomes `last`, which it meets after the other rows ≥ 1.
-    // - Registers: every register the block writes is an output (xmm0 to xmm5, xmm8, xmm9,
-    //   xmm11 and xmm12 among them); the flags it changes are not preserved, as asm! allows
-    //   by default.
+    // - Registers: every register the block writes is an output (xmm0 to xmm9, xmm11, xmm12,
+    //   xmm14 and xmm15 among them, each where its loop writes it); the flags it changes are
+    //   not preserved, as asm! allows by default.
     unsafe {
         match (T::OR_EQUAL, K::COUNTED, windows) {
             (false, true, false) => pixel_rows!("jae", ["23f", "22f", "24f"],
