@@ -645,7 +645,7 @@ mod tests {
     /// numerators and the area made positive, for both signs of each, zero numerators, ties,
     /// and steps at and beyond i32's ends (`None` where either does not fit).
     #[test]
-    fn steps_over_area_are_those_over_the_positive_area() {
+    fn r7_steps_over_area_are_those_over_the_positive_area() {
         let reference = |nx: i64, ny: i64, area: i64| {
             let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
             let by = DivideBy::new(den);
