@@ -278,6 +278,20 @@ impl Frame {
                 }
                 continue;
             }
+            // On x86-64 the same (`target::x86_64::project_known_in_words`).
+            #[cfg(all(feature = "asm", target_arch = "x86_64"))]
+            if fits && known == Known::InWords && normals.is_none() {
+                crate::target::project_known_in_words_x86(
+                    &clip_from_model,
+                    map.half_sizes(),
+                    positions,
+                    these,
+                );
+                if k < 64 {
+                    inside |= 1 << k;
+                }
+                continue;
+            }
             // On Cortex-M0 the same with the split transform in assembly
             // (`target::thumb1::project_split_in_words`).
             #[cfg(all(feature = "asm", fixed3d_thumb1))]

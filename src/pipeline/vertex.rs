@@ -95,7 +95,7 @@ impl ScreenMap {
     }
 
     /// Half the viewport's width and height in sub-pixels (at most 2¹⁴ each).
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
+    #[cfg(all(feature = "asm", any(fixed3d_thumb, target_arch = "x86_64")))]
     pub(crate) fn half_sizes(&self) -> (i32, i32) {
         (self.half_w as i32, self.half_h as i32)
     }
