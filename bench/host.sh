@@ -549,23 +549,25 @@ $stages
   tables' addresses from the literal pool and a half size kept (0.34%), the walk's output
   not cleared first (0.19%) and written into the block (0.33%), its sides tested once and
   only where not known short (0.19%): 1.993 M. x86-64 is not reached: 1.175 M at the start
-  of the last round, 1.113 M now (5.3% fewer), from the windows of eight cells in SSE2
+  of the last round, 1.104 M now (6.0% fewer), from the windows of eight cells in SSE2
   (3.5%), the edges' walks in one SSE2 register (0.64%), \`FractionStepper::new\`'s test of
   a 32-bit start by its low word sign-extended (0.48%), the windows' loop without the
   clamps (0.3%) and the depth walk's steps by each numerator's magnitude over the area's
   (0.34%, with the runs, their edges and their steppers' set-up held in line: x86-64's
   triangle set-up, one function with LTO, sits at the edge of the inliner's budget, where
-  a few instructions more anywhere took one of them out of line, 1% to 4.5% more). Not
+  a few instructions more anywhere took one of them out of line, 1% to 4.5% more) and the
+  vertex loop of an object known inside in words in assembly (0.77%: 84 instructions a
+  vertex, each product a copy and an \`imul\`, where the compiled loop took about 92). Not
   kept there: a divide by one \`div\` in assembly, for the compiler's test of 32-bit
   operands (four instructions) before the depth walk's two (0.04% more: its fixed
   registers), \`fill_face\` in line in the walk (2.4% more: the shading and the target's
   fill then went out of line; held in line too, the runs and the depth walk did, 7.8%),
   the row loop's block not cleared first (0.085% fewer, for more \`unsafe\`). Where the
-  1.113 M go: rows and pixels in assembly about 0.35 M (13 a row, about 10 to enter a span
+  1.104 M go: rows and pixels in assembly about 0.35 M (13 a row, about 10 to enter a span
   and 21 a window), each drawn triangle's set-up, inputs and shading about 575
   instructions (0.55 M: its runs with three edges about 150, its depth walk about 88, its
   rows about 54, its flat shading and colour about 94, the calls, the block and the rest
-  about 190), the walk 0.10 M and the vertex stage 0.11 M. Before that round, with the
+  about 190), the walk 0.10 M and the vertex stage 0.10 M. Before that round, with the
   pixels at what they took (0.22 M on
   the M4), 1.0 M left
   0.78 M for 1,152 vertices, 2,304 triangle tests, 958 set-ups and shadings and about 7,500
