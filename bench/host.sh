@@ -62,7 +62,7 @@ report=$(awk -v h="$headline" -v d="$draw" -v c="$clear" -v n="$frames" -v px="$
     -v fc="${face:-0}" -v sp="$(( ${rows:-0} + ${runs:-0} ))" -v sh="${shading:-0}" -v ct="$counted" -v na="$no_asm" -v pf="$per_frame" 'BEGIN {
     f = 1 / n;
     printf "draw_scene: %.3f M instructions per frame, %.1f per covered pixel (clear_buffers: %.3f M)\n\n", h*f/1e6, h*f/px, c*f/1e6;
-    printf "Without the \x60asm\x60 feature (the row loop compiled from Rust): %.3f M (%+.1f%%)\n\n", na*f/1e6, 100*(na-h)/h;
+    printf "Without the \x60asm\x60 feature (the loops compiled from Rust): %.3f M (%+.1f%%)\n\n", na*f/1e6, 100*(na-h)/h;
     printf "With each face\x27s normal found from its positions every frame (\x60Flat\x60, the mesh keeping\nnone, instead of \x60FlatKept\x60): %.3f M (%+.1f%%)\n\n", pf*f/1e6, 100*(pf-h)/h;
     printf "Into a target that counts fragments and writes (without \x60.uncounted()\x60): %.3f M (%+.1f%%)\n\n", ct*f/1e6, 100*(ct-h)/h;
     printf "Where they go, in the default release build (%.3f M per frame: several codegen units, no\nLTO, the stages\x27 functions kept apart):\n\n", d*f/1e6;
