@@ -10,7 +10,7 @@
 //! [`ShortQuotients`] there instead: a 16-bit reciprocal and 15-bit digits in 32-bit words.
 //! Every path returns the same quotients, which the tests check against 128-bit arithmetic.
 
-use core::num::{NonZeroU32, NonZeroU64};
+use core::num::NonZeroU32;
 
 use super::scalar::{leading_zeros32, mul_wide, mul_wide_u32, shl_words, NARROW_CORE};
 
@@ -386,19 +386,10 @@ impl DivideBy {
 
     /// [`round_shifted`](Self::round_shifted) where it fits an i32, else `None`; on 32-bit
     /// cores by [`shifted_i32_in_words`] where it applies (the Cortex-M4's depth gradients:
-    /// its frame 0.8% fewer instructions than the 64-bit quotient's sign and check; on
-    /// x86-64, whose words are 64 bits, 0.19% more than the same in 64 bits, below).
+    /// its frame 0.8% fewer instructions than the 64-bit quotient's sign and check). (64-bit
+    /// cores find the depth walk's steps by `target::depth::steps_over_area` instead.)
     #[inline(always)]
     pub(crate) fn round_shifted_i32(&self, n: i64, shift: u32) -> Option<i32> {
-        // On 64-bit cores one division of the rounded magnitude (`|n| << shift` below 2⁶³ by
-        // `round_shifted`'s bound): x86-64's frame 0.5% fewer instructions than `div_round`'s
-        // signed steps and the check of its 64-bit quotient.
-        if cfg!(target_pointer_width = "64") {
-            if let Some(d) = u64::try_from(self.d).ok().and_then(NonZeroU64::new) {
-                let q = ((n.unsigned_abs() << shift).wrapping_add(d.get() / 2) / d) as i64;
-                return i32::try_from(if n < 0 { q.wrapping_neg() } else { q }).ok();
-            }
-        }
         if cfg!(target_pointer_width = "32")
             && self.d32 > 0
             && self.d32 < 1 << SHIFTED_DIVISOR_BITS
@@ -799,8 +790,8 @@ mod tests {
         );
     }
 
-    /// `DivideBy::round_shifted_i32` is `round_shifted` where that fits an i32 (on this host
-    /// by one 64-bit division), at the ends of i32 too.
+    /// `DivideBy::round_shifted_i32` is `round_shifted` where that fits an i32, at the ends of
+    /// i32 too.
     #[test]
     fn round_shifted_i32_is_round_shifted_in_a_word() {
         let mut rng = crate::testing::XorShift(0x94D0_49BB_1331_11EBu64);

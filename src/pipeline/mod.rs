@@ -259,10 +259,11 @@ impl Frame {
             let rest = core::mem::take(&mut slots);
             let (these, after) = rest.split_at_mut(positions.len().min(rest.len()));
             slots = after;
-            // With `asm` on Cortex-M3/M4, an object known inside in words without lit colours
-            // takes the vertex loop in assembly (`target::thumb2::project_known_in_words`).
-            #[cfg(all(feature = "asm", fixed3d_thumb2))]
-            // (It declines only matrices and meshes near `fits_32_bits`' bound.)
+            // With `asm` on Cortex-M3/M4 and x86-64, an object known inside in words without lit
+            // colours takes the vertex loop in assembly (`target::thumb2::project_known_in_words`,
+            // `target::x86_64::project_known_in_words`).
+            #[cfg(all(feature = "asm", any(fixed3d_thumb2, target_arch = "x86_64")))]
+            // (The M4's declines only matrices and meshes near `fits_32_bits`' bound.)
             if fits
                 && known == Known::InWords
                 && normals.is_none()
@@ -273,20 +274,6 @@ impl Frame {
                     these,
                 )
             {
-                if k < 64 {
-                    inside |= 1 << k;
-                }
-                continue;
-            }
-            // On x86-64 the same (`target::x86_64::project_known_in_words`).
-            #[cfg(all(feature = "asm", target_arch = "x86_64"))]
-            if fits && known == Known::InWords && normals.is_none() {
-                crate::target::project_known_in_words_x86(
-                    &clip_from_model,
-                    map.half_sizes(),
-                    positions,
-                    these,
-                );
                 if k < 64 {
                     inside |= 1 << k;
                 }

@@ -390,32 +390,33 @@ impl<W: LoopWord> RoundedRows<W> {
         short_sides: bool,
     ) -> Option<(Self, i32)> {
         let (nx, ny) = Plane::numerators_given(p, z, short_sides);
-        // With 64-bit words each step by one division of its numerator's magnitude by the
-        // area's, its sign both signs' (x86-64's frame 0.34% fewer instructions than making
-        // the numerators and the area positive first, which the others do).
-        let wide = if cfg!(target_pointer_width = "64") {
-            Some(steps_over_area(nx, ny, area)?)
+        let (sx, sy) = if cfg!(target_pointer_width = "64") {
+            // With 64-bit words each step by one division of its numerator's magnitude by the
+            // area's, its sign both signs' (x86-64's frame 0.34% fewer instructions than
+            // making the numerators and the area positive first, as 32-bit cores do).
+            steps_over_area(nx, ny, area)?
         } else {
-            None
-        };
-        let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
-        // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area. Without a
-        // divide instruction (Cortex-M0), for the usual triangle (a doubled area below 2²⁹,
-        // steps below 2³⁰), by two 15-bit digits each: the frame 2.4% fewer instructions than
-        // through a reciprocal to 32 bits, which the others take.
-        let short = if NARROW_CORE {
-            ShortQuotients::new(den)
-                .and_then(|by| Some((by.round_below_2_30(nx << 5)?, by.round_below_2_30(ny << 5)?)))
-        } else {
-            None
-        };
-        let (sx, sy) = if let Some(steps) = short.or(wide) {
-            steps
-        } else {
-            let by_area = DivideBy::new(den);
-            let sx = by_area.round_shifted_i32(nx, 5)?;
-            let sy = by_area.round_shifted_i32(ny, 5)?;
-            (sx, sy)
+            let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+            // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area.
+            // Without a divide instruction (Cortex-M0), for the usual triangle (a doubled
+            // area below 2²⁹, steps below 2³⁰), by two 15-bit digits each: the frame 2.4% fewer
+            // instructions than through a reciprocal to 32 bits, which the others take.
+            let short = if NARROW_CORE {
+                ShortQuotients::new(den).and_then(|by| {
+                    Some((by.round_below_2_30(nx << 5)?, by.round_below_2_30(ny << 5)?))
+                })
+            } else {
+                None
+            };
+            if let Some(steps) = short {
+                steps
+            } else {
+                let by_area = DivideBy::new(den);
+                (
+                    by_area.round_shifted_i32(nx, 5)?,
+                    by_area.round_shifted_i32(ny, 5)?,
+                )
+            }
         };
         // The reference pixel: the first vertex's column, the first row at or below it; its
         // centre lies dx in (−8, 8] and dy in [0, 16) sub-pixels from the vertex.
