@@ -52,11 +52,14 @@
 //! The triangle walk's skip of back faces (`FrontFaces::next_stop`, on the walk's state in
 //! asm_faces.rs): for an object inside every clip plane culled to its front faces, each
 //! triangle's indices, points and signed area in one loop of assembly that stops only on a
-//! triangle to draw (its corners copied for the call that fills it) or one of zero area. The
-//! same classification as the Rust walk's (the same area, the same sign and zero tests),
-//! checked by the host's tests with the feature (every golden image, every count the
-//! pipeline's tests assert): 24 instructions a back face where the compiled walk took about
-//! 50, the reference frame 3.3% fewer instructions (1.233 M → 1.193 M).
+//! triangle to draw or one of zero area. The same classification as the Rust walk's (the same
+//! area, the same sign and zero tests), checked by the host's tests with the feature (every
+//! golden image, every count the pipeline's tests assert): 24 instructions a back face where
+//! the compiled walk took about 50, the reference frame 3.3% fewer instructions (1.233 M →
+//! 1.193 M). A front face's corners leave the block in registers (each x and y as one qword),
+//! where they were copied to memory for the call that filled it: with that triangle's set-up
+//! in line in the walk (`Prepared::fill_face`) they stay in registers, the frame 2.3% fewer
+//! instructions (1.082 M → 1.056 M).
 
 use core::mem::{offset_of, size_of};
 
@@ -540,28 +543,6 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(
     }
 }
 
-/// One corner of a front face for `FrontFaces::next_stop`: its vertex (the index at `t +
-/// $index`, `t` one past the triangle) copied to `out + $to` as its x and y (one quadword) and
-/// its z.
-macro_rules! corner {
-    ($index:literal, $to:literal) => {
-        concat!(
-            "movzx {ia:e}, word ptr [{t} - ",
-            $index,
-            "]\n",
-            "shl {ia:e}, 4\n",
-            "mov {ib}, qword ptr [{v} + {ia}]\n",
-            "mov {ic:e}, dword ptr [{v} + {ia} + 8]\n",
-            "mov qword ptr [{out} + ",
-            $to,
-            "], {ib}\n",
-            "mov dword ptr [{out} + ",
-            $to,
-            " + 8], {ic:e}",
-        )
-    };
-}
-
 /// The walk on x86-64: a back face takes 24 instructions (its three indices loaded, its
 /// points sign-extended to 64 bits, the area by two 64-bit multiplies as `doubled_area` takes
 /// it, its sign and its zero tested, the count of triangles left stepped), where the compiled
@@ -575,6 +556,7 @@ impl<'t> FrontFaces<'t, '_> {
     pub(crate) fn next_stop(&mut self, out: &mut [(ScreenPoint, i32); 3]) -> FaceStop<'t> {
         let stop: u64;
         let area: i64;
+        let (xya, za, xyb, zb, xyc, zc): (u64, u64, u64, u64, u64, u64);
         // SAFETY:
         // - Memory: the block reads the three indices of each of the `left` triangles from
         //   `next` (within `triangles`: `next` lies within it or at its end, `left` triangles
@@ -583,12 +565,11 @@ impl<'t> FrontFaces<'t, '_> {
         //   to `v + 16·i + 12` for each index `i` of those triangles: within `vertices`, whose
         //   elements take 16 bytes with x, y and z at 0, 4 and 8 (asserted in asm_faces.rs),
         //   as `i` is below the mesh's number of positions (the invariant of `Mesh`), which is
-        //   `vertices.len()` (checked by `FrontFaces::new`). Where it stops on a front face it
-        //   writes `out` (borrowed mutably): that face's three vertices' x, y and z to its 36
-        //   bytes (x and y at 0, 12 and 24, z 8 bytes further: its layout, asserted there); no
-        //   other memory, and no stack (`nostack`).
+        //   `vertices.len()` (checked by `FrontFaces::new`). It writes no memory, and no stack
+        //   (`nostack`).
         // - Values: `next` leaves at one past the triangle the walk stopped on, or at the end,
-        //   `left` as the triangles after it; `out` gets `i32`s (any dword is one).
+        //   `left` as the triangles after it; the corners are any qwords and dwords (read
+        //   only after a front face, whose they are).
         // - Registers: every register the block writes is an output; the flags it changes
         //   are not preserved, as asm! allows by default.
         unsafe {
@@ -603,21 +584,21 @@ impl<'t> FrontFaces<'t, '_> {
                 "shl {ia:e}, 4",
                 "shl {ib:e}, 4",
                 "shl {ic:e}, 4",
-                // a = (ax, ay), b − a = (ux, uy), c − a = (ia, ic).
+                // a = (ax, ay), b − a = (ux, uy), c − a = (cx, cy).
                 "movsxd {ax}, dword ptr [{v} + {ia}]",
                 "movsxd {ay}, dword ptr [{v} + {ia} + 4]",
                 "movsxd {ux}, dword ptr [{v} + {ib}]",
                 "movsxd {uy}, dword ptr [{v} + {ib} + 4]",
-                "movsxd {ia}, dword ptr [{v} + {ic}]",
-                "movsxd {ic}, dword ptr [{v} + {ic} + 4]",
+                "movsxd {cx}, dword ptr [{v} + {ic}]",
+                "movsxd {cy}, dword ptr [{v} + {ic} + 4]",
                 "sub {ux}, {ax}",
                 "sub {uy}, {ay}",
-                "sub {ia}, {ax}",
-                "sub {ic}, {ay}",
+                "sub {cx}, {ax}",
+                "sub {cy}, {ay}",
                 // (b − a).x·(c − a).y − (c − a).x·(b − a).y.
-                "imul {ux}, {ic}",
-                "imul {ia}, {uy}",
-                "sub {ux}, {ia}",
+                "imul {ux}, {cy}",
+                "imul {cx}, {uy}",
+                "sub {ux}, {cx}",
                 "jl 3f",
                 "je 4f",
                 // A back face: the count left stepped, the next face unless none.
@@ -629,11 +610,14 @@ impl<'t> FrontFaces<'t, '_> {
                 "4:",
                 "mov {ay:e}, {degenerate}",
                 "jmp 8f",
-                // A front face: its corners' x, y and z to `out`.
+                // A front face: its corners' x and y (one qword each) and z, left in registers.
                 "3:",
-                corner!(6, 0),
-                corner!(4, 12),
-                corner!(2, 24),
+                "mov {ax}, qword ptr [{v} + {ia}]",
+                "mov {uy:e}, dword ptr [{v} + {ia} + 8]",
+                "mov {ia}, qword ptr [{v} + {ib}]",
+                "mov {ib:e}, dword ptr [{v} + {ib} + 8]",
+                "mov {cx}, qword ptr [{v} + {ic}]",
+                "mov {ic:e}, dword ptr [{v} + {ic} + 8]",
                 "mov {ay:e}, {front}",
                 // A stop on a face: the count left stepped past it.
                 "8:",
@@ -642,15 +626,22 @@ impl<'t> FrontFaces<'t, '_> {
                 t = inout(reg) self.next,
                 left = inout(reg) self.left,
                 v = in(reg) self.vertices.as_ptr(),
-                out = in(reg) out.as_mut_ptr(),
-                ia = out(reg) _, ib = out(reg) _, ic = out(reg) _,
-                ax = out(reg) _, ay = out(reg) stop, ux = out(reg) area, uy = out(reg) _,
+                ia = out(reg) xyb, ib = out(reg) zb, ic = out(reg) zc,
+                ax = out(reg) xya, ay = out(reg) stop, ux = out(reg) area,
+                uy = out(reg) za, cx = out(reg) xyc, cy = out(reg) _,
                 front = const FaceStop::FRONT,
                 degenerate = const FaceStop::DEGENERATE,
                 end_ = const FaceStop::END,
-                options(nostack),
+                options(nostack, readonly),
             );
         }
+        // Each corner's qword holds its x (the low dword) and y (the high one), as a vertex's.
+        *out = [(xya, za), (xyb, zb), (xyc, zc)].map(|(xy, z)| {
+            (
+                ScreenPoint::new(xy as u32 as i32, (xy >> 32) as u32 as i32),
+                z as u32 as i32,
+            )
+        });
         self.stopped(stop as u32, area)
     }
 }
