@@ -40,7 +40,7 @@ pub(super) const EDGE: usize = size_of::<EdgeWalk>();
 /// `solid_rows` (on Cortex-M `solid_triangle`) establishes and checks before it calls them:
 /// - `row` is the address of the first of `rows · width` cells of a colour buffer (2 bytes a
 ///   cell, aligned to 2) and `row + delta` that of the same cells of a u16 depth buffer, both
-///   borrowed mutably for the call, with `runs.rows ≥ 1` and `width > 0`;
+///   borrowed mutably for the call, with `runs.rows ≥ 1` and `0 < width < 2¹⁶`;
 /// - `stride` is `2 · width`, `end` is `row + upper · stride` with `1 ≤ runs.upper ≤
 ///   runs.rows`, and `last` is `row + rows · stride`;
 /// - `slot` is the offset of the edge the lower short edge replaces: 0 (left) or one edge's
