@@ -624,6 +624,13 @@ fn packed_quotient32(v: i32, d: i64) -> u64 {
     // ⌊n / d⌋ by one unsigned division (`floor_div`'s signed one and its correction took
     // about 12 instructions more): for n < 0, !n = −n − 1 = q·d + r with 0 ≤ r < d, so
     // n = (−q − 1)·d + (d − 1 − r) and ⌊n / d⌋ = −q − 1 = !q.
+    // With the `asm` feature on x86-64 by one `idiv` and the correction of its truncation
+    // (`target::floor_divide`): the compiler's form tests for 32-bit operands and turns the
+    // sign twice (the frame 0.3% fewer instructions).
+    #[cfg(all(feature = "asm", target_arch = "x86_64"))]
+    if let Some(q) = core::num::NonZeroI64::new(d).and_then(|d| crate::target::floor_divide(n, d)) {
+        return q as u64;
+    }
     let sign = n >> 63;
     let q = core::num::NonZeroU64::new(d as u64).map_or(0, |d| (n ^ sign) as u64 / d);
     q ^ sign as u64

@@ -49,4 +49,4 @@ pub(crate) use thumb1::project_split_in_words;
 #[cfg(all(feature = "asm", fixed3d_thumb2))]
 pub(crate) use thumb2::project_known_in_words;
 #[cfg(all(feature = "asm", target_arch = "x86_64"))]
-pub(crate) use x86_64::project_known_in_words;
+pub(crate) use x86_64::{floor_divide, project_known_in_words};

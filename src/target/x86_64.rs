@@ -825,3 +825,30 @@ const _: () = {
     assert!(size_of::<ScreenVertex>() == 16 && offset_of!(ScreenVertex, z) == 8);
     assert!(offset_of!(ScreenVertex, rgb) == 12 && offset_of!(ScreenVertex, outcode) == 15);
 };
+
+/// `⌊n / d⌋` for a positive `d` (`None` for a negative one), by one `idiv` (which truncates)
+/// less one where the remainder is negative, without the compiler's test for operands of 32
+/// bits.
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(crate) fn floor_divide(n: i64, d: core::num::NonZeroI64) -> Option<i64> {
+    if d.get() < 0 {
+        return None;
+    }
+    let (q, r): (i64, i64);
+    // SAFETY: `idiv` of rdx:rax = n sign-extended (`cqo`) by d ≥ 1: the quotient's magnitude
+    // is at most |n| ≤ 2⁶³, and −2⁶³ is a quotient only of n = −2⁶³ by 1, which fits; nothing
+    // faults. Only the registers named are written.
+    unsafe {
+        core::arch::asm!(
+            "cqo",
+            "idiv {d}",
+            d = in(reg) d.get(),
+            inout("rax") n => q,
+            out("rdx") r,
+            options(pure, nomem, nostack),
+        );
+    }
+    // Truncated toward zero: a negative remainder (n < 0, inexact) takes one off.
+    Some(q.wrapping_add(r >> 63))
+}
