@@ -350,19 +350,18 @@ impl TriangleRows {
         } else {
             edge_to_end(b, c, y)
         };
-        let (left, right) = if long_is_left {
-            (long, short)
-        } else {
-            (short, long)
-        };
         let split = y < y_split && y_split < y_end;
         let lower = if split {
             edge(b, c, y_split, u32::MAX)
         } else {
             EdgeWalk::ZERO
         };
+        // The long edge left or right, each edge stored at its place.
+        let mut edges = [lower; 3];
+        edges[usize::from(!long_is_left)] = long;
+        edges[usize::from(long_is_left)] = short;
         Some(Runs {
-            edges: [left, right, lower],
+            edges,
             upper: if split {
                 y_split.wrapping_sub(y) as u32
             } else {
