@@ -26,7 +26,12 @@
 //! the depths written the lesser of each pair, the colours merged under the winning lanes: 21
 //! instructions a window (19 for a whole one) and 4 to enter the span, about 25 for the
 //! torus' span where the pixel loop took about 40, and 17 more a triangle to set up its
-//! registers: the reference frame 3.5% fewer instructions (1.175 M → 1.134 M). Counted, each
+//! registers: the reference frame 3.5% fewer instructions (1.175 M → 1.134 M). The windows'
+//! rows keep the depth walk as the lanes of a row's first window at column 0 (`xmm13`, stepped
+//! down a row by one `paddd`), so that a span's lanes are those plus the step to its first
+//! cell broadcast, and a window's high lanes its low ones plus four steps: one instruction a
+//! window fewer; for a triangle within the columns the row's test is the sign of i = x0 − x1,
+//! which the span needs anyway (one a row fewer): 0.9% together (1.025 M → 1.016 M). Counted, each
 //! span's length is added on entry and each window's winning lanes to a register's words
 //! (one instruction a window), summed once a triangle: the counted frame 2.8% fewer than
 //! through the pixel loop (1.185 M → 1.152 M). The pixel loop takes two pixels a turn, the
@@ -131,8 +136,8 @@ macro_rules! pixels {
 /// buffers that hold 7 cells more than the triangle's rows (`windows`): the window of the
 /// eight cells from `c + 2·i` (both buffers', `d` the depths') read, merged and written back
 /// whole. `$depths` puts the walk at its cells less 2³⁰ in `xmm1`'s lanes (cells 0 to 3) and
-/// `$high`'s (4 to 7), `acc + k·step_x` from the walk broadcast in `xmm0` and the steps to
-/// each cell (`xmm8`, `xmm9`); shifted down by 15 and packed to words, they are the loop's
+/// `$high`'s (4 to 7), `acc + k·step_x` from the first four in `xmm0` and four steps in each
+/// lane (`xmm9`); shifted down by 15 and packed to words, they are the loop's
 /// depths less 2¹⁵ (every value in [0, 2³¹) within the span, so that no lane of the span
 /// saturates): the signed order of words is the unsigned depths' order. `$cells` then takes
 /// the lanes beyond the span out (`pmaxsw` by [`WINDOW_BOUNDS`]' window: 0x7FFF there, no
@@ -189,28 +194,25 @@ macro_rules! if_less {
     };
 }
 
-/// A span in windows of eight cells (`window!`): the walk broadcast to `xmm0`; while more
-/// than eight cells are left (i < −8) a whole window, the walk then eight steps on (`xmm11`,
-/// eight times `step_x` in each lane); then the last window, its lanes those of the cells
-/// left, and on to the next row.
+/// A span in windows of eight cells (`window!`): the walk at its first four cells in `xmm0`
+/// (the row's lanes at column 0, `xmm13`, plus `x0 · step_x` broadcast: `x0` holds that product
+/// on entry); while more than eight cells are left (i < −8) a whole window, the walk then
+/// eight steps on (`xmm11`, eight times `step_x` in each lane); then the last window, its
+/// lanes those of the cells left, and on to the next row.
 macro_rules! windows {
     ($less:tt, $count:tt) => {
         concat!(
             if_counted!($count, "sub dword ptr [{s} + {frag}], {i:e}\n", ""),
-            "movd xmm0, {acc:e}\n",
+            "movd xmm0, {x0:e}\n",
             "pshufd xmm0, xmm0, 0\n",
+            "paddd xmm0, xmm13\n",
             "cmp {i}, -8\n",
             "jge 41f\n",
             "40:\n",
             window!(
                 $less,
                 $count,
-                [
-                    "movdqa xmm1, xmm0",
-                    "paddd xmm1, xmm8",
-                    "movdqa xmm2, xmm0",
-                    "paddd xmm2, xmm9"
-                ],
+                ["movdqa xmm1, xmm0", "movdqa xmm2, xmm0", "paddd xmm2, xmm9"],
                 "xmm2",
                 [if_less!($less, "", "pcmpeqw xmm4, xmm4")]
             ),
@@ -222,7 +224,7 @@ macro_rules! windows {
             window!(
                 $less,
                 $count,
-                ["movdqa xmm1, xmm0", "paddd xmm1, xmm8", "paddd xmm0, xmm9"],
+                ["movdqa xmm1, xmm0", "paddd xmm0, xmm9"],
                 "xmm0",
                 [
                     "movdqu xmm4, xmmword ptr [{col} + 2 * {i}]",
@@ -235,11 +237,12 @@ macro_rules! windows {
 }
 
 /// What `windows!` keeps in registers for a whole triangle, after `rows_loop!`'s own set-up:
-/// the colour's two bytes in each word of `xmm12`, the steps
-/// from a window's first cell to each of its cells in `xmm8` (`k · step_x` for k from 0 to
-/// 3: `[0, s, s, s] + [0, 0, s, s] + [0, 0, 0, s]`, the step broadcast and shifted up by
-/// lanes) and `xmm9` (k from 4 to 7), eight steps in each lane of `xmm11`; the depth walk
-/// `rowz` less 2³⁰ (so is every `acc` then), and `col` the address of [`WINDOW_BOUNDS`]' end.
+/// the colour's two bytes in each word of `xmm12`, four steps (`4 · step_x`) in each lane of
+/// `xmm9` and eight in each of `xmm11`, the depth walk less 2³⁰ (so is every lane then) at
+/// columns 0 to 3 of the row in `xmm13` (`rowz` broadcast plus `k · step_x` for k from 0 to 3,
+/// `[0, s, s, s] + [0, 0, s, s] + [0, 0, 0, s]`, the step broadcast and shifted up by lanes),
+/// its step down a row in each lane of `xmm10`, and `col` the address of [`WINDOW_BOUNDS`]'
+/// end.
 macro_rules! windows_setup {
     () => {
         concat!(
@@ -248,18 +251,22 @@ macro_rules! windows_setup {
             "pshufd xmm12, xmm12, 0\n",
             "movd xmm8, dword ptr [{s} + {step_x}]\n",
             "pshufd xmm8, xmm8, 0\n",
-            "movdqa xmm11, xmm8\n",
-            "pslld xmm11, 2\n",
+            "movdqa xmm9, xmm8\n",
+            "pslld xmm9, 2\n",
             "pslldq xmm8, 4\n",
-            "movdqa xmm9, xmm8\n",
-            "pslldq xmm9, 4\n",
-            "paddd xmm9, xmm8\n",
+            "movdqa xmm11, xmm8\n",
+            "pslldq xmm11, 4\n",
+            "paddd xmm11, xmm8\n",
             "pslldq xmm8, 8\n",
-            "paddd xmm8, xmm9\n",
-            "movdqa xmm9, xmm8\n",
-            "paddd xmm9, xmm11\n",
+            "paddd xmm8, xmm11\n",
+            "movdqa xmm11, xmm9\n",
             "paddd xmm11, xmm11\n",
             "sub {rowz:e}, 0x40000000\n",
+            "movd xmm13, {rowz:e}\n",
+            "pshufd xmm13, xmm13, 0\n",
+            "paddd xmm13, xmm8\n",
+            "movd xmm10, dword ptr [{s} + {step_y}]\n",
+            "pshufd xmm10, xmm10, 0\n",
             "lea {col}, [rip + {lanes} + 16]\n",
         )
     };
@@ -284,7 +291,7 @@ static WINDOW_BOUNDS: [u16; 16] = [
 /// moves clear the high halves), the walks stepped; pixels where 0 ≤ x0 < x1 ≤ width, by two
 /// unsigned comparisons (a negative end is a large unsigned one); a span that crosses a side
 /// of the buffers is clamped to them out of line (the clamps in line took two instructions a
-/// row more).
+/// row more); then i = x0 − x1 (its label 13, where the clamp of x0 comes back).
 macro_rules! clamped_test {
     () => {
         concat!(
@@ -293,7 +300,8 @@ macro_rules! clamped_test {
             "movd {x0:e}, xmm14\n",
             "psrlq xmm14, 32\n",
             "movd {x1:e}, xmm14\n",
-            "cmp {x1:e}, dword ptr [{s} + {width}]\nja 31f\n3:\ncmp {x0:e}, {x1:e}\njae 12f",
+            "cmp {x1:e}, dword ptr [{s} + {width}]\nja 31f\n3:\ncmp {x0:e}, {x1:e}\njae 12f\n",
+            "13:\nmov {i}, {x0}\nsub {i}, {x1}",
         )
     };
 }
@@ -301,30 +309,33 @@ macro_rules! clamped_test {
 /// `rows_loop!`'s ends and test of a row's span for a triangle within the columns (every span
 /// end in `0..=width` before any clamp, `within_columns`, and width below 2¹⁶): each end the
 /// low word of its walk's high half, zero-extended by `pextrw` (the whole end, which lies in
-/// [0, 2¹⁶)), the walks stepped; pixels where x0 < x1. Two instructions a row fewer than
-/// `clamped_test!`'s ends: the reference frame 1.4% fewer instructions.
+/// [0, 2¹⁶)), the walks stepped; pixels where x0 < x1, that is where i = x0 − x1 (of two
+/// zero-extended words) is negative. Two instructions a row fewer than `clamped_test!`'s
+/// ends (the reference frame 1.4% fewer instructions), and one fewer for the test by the
+/// sign of i, which a span needs anyway.
 macro_rules! within_test {
     () => {
         concat!(
             "pextrw {x0:e}, xmm6, 2\n",
             "pextrw {x1:e}, xmm6, 6\n",
             "paddq xmm6, xmm7\n",
-            "cmp {x0:e}, {x1:e}\njae 4f",
+            "mov {i}, {x0}\nsub {i}, {x1}\njge 4f",
         )
     };
 }
 
-/// The row loop in assembly: `$test` a row's test of its span (`clamped_test!` or
-/// `within_test!`), `$setup` after the block's values are loaded, `$span` a span's pixels
-/// (from its cells `c + 2·i` and `d + 2·i`, i from x0 − x1 to 0, the walk `acc` at its
-/// first), `$paths` out of line and `$finish` at the end; then the block's address and the
-/// loop's own operands. A row: each edge's span end (the high half of its walk, which then
-/// steps), the span's test, and where it holds pixels the depth at its first one and the
-/// span; then the depth walk and the row address step down. At the end of the first run the
+/// The row loop in assembly: `$test` a row's span ends and test (`clamped_test!` or
+/// `within_test!`, which leave i = x0 − x1 for a span with pixels), `$setup` after the
+/// block's values are loaded, `$span` a span's pixels (from its cells `c + 2·i` and
+/// `d + 2·i`, i from x0 − x1 to 0, `x0` holding `x0 · step_x`, the step from the row's
+/// column 0 to its first cell), `$rowstep` the depth walk's step down a row, `$paths` out of
+/// line and `$finish` at the end; then the block's address and the loop's own operands. A
+/// row: each edge's span end (the high half of its walk, which then steps), the span's test,
+/// and where it holds pixels the span; then the depth walk and the row address step down. At the end of the first run the
 /// lower short edge takes its side, and the second run goes on to `last`.
 macro_rules! rows_loop {
-    ($test:expr, [$($setup:expr),*], $span:expr, [$($paths:expr),*], [$($finish:expr),*];
-     $block:expr, $($extra:tt)*) => {
+    ($test:expr, [$($setup:expr),*], $span:expr, $rowstep:expr, [$($paths:expr),*],
+     [$($finish:expr),*]; $block:expr, $($extra:tt)*) => {
         core::arch::asm!(
             // The first row's colour address, the depth walk, the colour, the distance from
             // the colour buffer to the depth buffer, and the two edges' walks.
@@ -340,20 +351,18 @@ macro_rules! rows_loop {
             "2:",
             // The span's ends (each its walk's high half: both walks in xmm6, left then right,
             // their steps in xmm7), the walks stepped, and the span's test.
+            // With pixels, i = x0 − x1 (0 ≤ x0 < x1, both zero-extended: the 64-bit
+            // difference is negative).
             $test,
-            "13:",
-            // The depth at x0; both buffers addressed from their cell x1, i from x0 − x1 to 0
-            // (0 ≤ x0 < x1, both zero-extended: the 64-bit difference is negative).
-            "mov {i}, {x0}",
-            "sub {i}, {x1}",
+            // The step to the depth at x0; both buffers addressed from their cell x1, i from
+            // x0 − x1 to 0.
             "imul {x0:e}, dword ptr [{s} + {step_x}]",
-            "lea {acc:e}, [{x0} + {rowz}]",
             "lea {c}, [{cptr} + 2 * {x1}]",
             "lea {d}, [{c} + {delta}]",
             $span,
             "4:",
             // Next row: the depth walk and the row address; the run ends at `end`.
-            "add {rowz:e}, dword ptr [{s} + {step_y}]",
+            $rowstep,
             "add {cptr}, qword ptr [{s} + {stride}]",
             "cmp {cptr}, qword ptr [{s} + {end}]",
             "jne 2b",
@@ -391,7 +400,7 @@ macro_rules! rows_loop {
             "5:",
             $($finish,)*
             s = in(reg) $block as *mut RowBlock, cptr = out(reg) _, rowz = out(reg) _,
-            col = out(reg) _, delta = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _, acc = out(reg) _,
+            col = out(reg) _, delta = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
             c = out(reg) _, d = out(reg) _,
             right = const EDGE, lower = const 2 * EDGE,
             width = const offset_of!(RowBlock, width), step_x = const offset_of!(RowBlock, step_x),
@@ -413,10 +422,12 @@ macro_rules! rows_loop {
 macro_rules! pixel_rows {
     ($fail:literal, $places:tt, $before:tt, $after:tt, [$($path:literal)?]; $block:expr,
      $($extra:tt)*) => {
-        rows_loop!(clamped_test!(), [], pixels!($fail, $places, $before, $after),
+        rows_loop!(clamped_test!(), [],
+            concat!("lea {acc:e}, [{x0} + {rowz}]\n", pixels!($fail, $places, $before, $after)),
+            "add {rowz:e}, dword ptr [{s} + {step_y}]",
             [$(concat!("22:\n", $path, "\njmp 7b\n23:\n", $path, "\njmp 17b\n24:\n", $path,
                 "\njmp 27b"))?], [];
-            $block, $($extra)*)
+            $block, acc = out(reg) _, $($extra)*)
     };
 }
 
@@ -426,20 +437,22 @@ macro_rules! pixel_rows {
 /// and once a triangle the failures found from them (`windows_count!`).
 macro_rules! window_rows {
     ($less:tt, $test:expr, uncounted; $block:expr) => {
-        rows_loop!($test, [windows_setup!()], windows!($less, uncounted), [], []; $block,
+        rows_loop!($test, [windows_setup!()], windows!($less, uncounted), "paddd xmm13, xmm10",
+            [], []; $block,
             lanes = sym WINDOW_BOUNDS, bias = sym WORD_BIAS,
             out("xmm0") _, out("xmm1") _, out("xmm2") _, out("xmm3") _, out("xmm4") _,
-            out("xmm5") _, out("xmm8") _, out("xmm9") _, out("xmm11") _,
-            out("xmm12") _,)
+            out("xmm5") _, out("xmm8") _, out("xmm9") _, out("xmm10") _, out("xmm11") _,
+            out("xmm12") _, out("xmm13") _,)
     };
     ($less:tt, $test:expr, counted; $block:expr) => {
         rows_loop!($test, [windows_setup!(), "pxor xmm15, xmm15"], windows!($less, counted),
+            "paddd xmm13, xmm10",
             [], [windows_count!()]; $block,
             lanes = sym WINDOW_BOUNDS, bias = sym WORD_BIAS,
             frag = const offset_of!(RowBlock, fragments),
             out("xmm0") _, out("xmm1") _, out("xmm2") _, out("xmm3") _, out("xmm4") _,
-            out("xmm5") _, out("xmm8") _, out("xmm9") _, out("xmm11") _,
-            out("xmm12") _, out("xmm15") _,)
+            out("xmm5") _, out("xmm8") _, out("xmm9") _, out("xmm10") _, out("xmm11") _,
+            out("xmm12") _, out("xmm13") _, out("xmm15") _,)
     };
 }
 
@@ -523,9 +536,9 @@ pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(
     //   eight to −8 ≤ i ≤ −1, then once). `cptr` rises by `stride` > 0 a row from the first
     //   cell: it meets `end` after `upper` ≥ 1 rows; unless that is `last` (upper = rows),
     //   `end` becomes `last`, which it meets after the other rows ≥ 1.
-    // - Registers: every register the block writes is an output (xmm0 to xmm9, xmm11, xmm12,
-    //   xmm14 and xmm15 among them, each where its loop writes it); the flags it changes are
-    //   not preserved, as asm! allows by default.
+    // - Registers: every register the block writes is an output (xmm0 to xmm15 among them,
+    //   each where its loop writes it); the flags it changes are not preserved, as asm!
+    //   allows by default.
     unsafe {
         match (T::OR_EQUAL, K::COUNTED, windows) {
             (false, true, false) => pixel_rows!("jae", ["23f", "22f", "24f"],
