@@ -390,6 +390,7 @@ pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {
 /// with the [`WINDOW_SPARE`] cells after them where both buffers hold those too (and,
 /// counted, the rows hold at most 2¹⁵ windows), and then true (the loop's windows of eight
 /// cells, `x86_64::rows`).
+#[cfg(not(target_pointer_width = "64"))]
 #[inline(always)]
 fn run_cells<'b, C, K: FragmentCount>(
     colors: &'b mut [C],
@@ -417,6 +418,40 @@ fn run_cells<'b, C, K: FragmentCount>(
     ))
 }
 
+/// `run_cells` in 64-bit words, for `width` below 2¹⁶ (as `block_width` makes it): the ends
+/// `first · width` and `(first + rows) · width`, below 2³³ · 2¹⁶, cannot overflow, so that no
+/// step needs a check (x86-64's frame 0.5% fewer instructions; comparing the cells after the
+/// rows with the shorter buffer's length once, rather than each buffer's, measured 0.5% more).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn run_cells<'b, C, K: FragmentCount>(
+    colors: &'b mut [C],
+    depths: &'b mut [u16],
+    first: u32,
+    rows: u32,
+    width: usize,
+) -> Option<(&'b mut [C], &'b mut [u16], bool)> {
+    // (Known to the callers, after `block_width`: compiled away.)
+    if width >= 1 << 16 {
+        return None;
+    }
+    let start = (first as usize).wrapping_mul(width);
+    let end = (first as usize)
+        .wrapping_add(rows as usize)
+        .wrapping_mul(width);
+    // Counted, each lane's count of wins stays within a word: at most 2¹⁵ windows, a row
+    // holding at most width / 8 + 1.
+    let windows = cfg!(target_arch = "x86_64")
+        && (!K::COUNTED || (rows as usize).wrapping_mul(width / 8 + 1) <= 1 << 15)
+        && end.wrapping_add(WINDOW_SPARE) <= colors.len();
+    let cells = start..end.wrapping_add(spare(windows));
+    Some((
+        colors.get_mut(cells.clone())?,
+        depths.get_mut(cells)?,
+        windows,
+    ))
+}
+
 /// The cells x86-64's loop in windows reads and writes back unchanged after the rows' last
 /// (its last window of eight cells may start at the last row's last cell).
 const WINDOW_SPARE: usize = 7;
@@ -435,6 +470,7 @@ fn spare(windows: bool) -> usize {
 /// and columns) by one multiply, where `checked_mul` takes a 64-bit product (a library
 /// routine there: 2% of the Cortex-M0's frame); a long multiply elsewhere (the M4F's frame
 /// 0.4% fewer instructions than the test of the factors).
+#[cfg(not(target_pointer_width = "64"))]
 #[inline(always)]
 fn product(a: u32, b: usize) -> Option<usize> {
     if cfg!(fixed3d_thumb1) && a < 1 << 16 && b < 1 << 16 {
