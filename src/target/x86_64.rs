@@ -158,8 +158,43 @@ macro_rules! window {
             $($cells, "\n",)*
             "movdqu xmm3, xmmword ptr [{d} + 2 * {i}]\n",
             "pxor xmm3, xmmword ptr [rip + {bias}]\n",
-            if_less!($less, "movdqa xmm5, xmm3\npcmpgtw xmm5, xmm1",
-                "movdqa xmm5, xmm1\npcmpgtw xmm5, xmm3\npandn xmm5, xmm4"), "\n",
+            merge!($less, $count),
+        )
+    };
+}
+
+/// `window!`'s test, depths and colours, the new depths in `xmm1` and the stored ones in
+/// `xmm3` (both less 2¹⁵). Strictly nearer and uncounted: the depths written the lesser of
+/// each pair (`pminsw`), the lanes that lose those where that is the stored one (`pcmpeqw`:
+/// a new depth not below it, as every lane beyond the span's is), and the colours
+/// `new ^ ((new ^ old) & loses)`, which needs no copy of the old ones (one instruction a
+/// window fewer than by the winning lanes: the reference frame 0.9% fewer instructions).
+/// Otherwise by the winning lanes (`xmm5`, which the count sums): where the stored depth is
+/// greater (`less`) or where the new one is not (`or_equal`, with the span's lanes), the
+/// colours `old ^ ((old ^ new) & wins)`.
+macro_rules! merge {
+    (less, uncounted) => {
+        concat!(
+            "movdqa xmm5, xmm3\n",
+            "pminsw xmm1, xmm3\n",
+            "pcmpeqw xmm5, xmm1\n",
+            "pxor xmm1, xmmword ptr [rip + {bias}]\n",
+            "movdqu xmmword ptr [{d} + 2 * {i}], xmm1\n",
+            "movdqu xmm2, xmmword ptr [{c} + 2 * {i}]\n",
+            "pxor xmm2, xmm12\n",
+            "pand xmm2, xmm5\n",
+            "pxor xmm2, xmm12\n",
+            "movdqu xmmword ptr [{c} + 2 * {i}], xmm2\n",
+        )
+    };
+    ($less:tt, $count:tt) => {
+        concat!(
+            if_less!(
+                $less,
+                "movdqa xmm5, xmm3\npcmpgtw xmm5, xmm1",
+                "movdqa xmm5, xmm1\npcmpgtw xmm5, xmm3\npandn xmm5, xmm4"
+            ),
+            "\n",
             "pminsw xmm1, xmm3\n",
             "pxor xmm1, xmmword ptr [rip + {bias}]\n",
             "movdqu xmmword ptr [{d} + 2 * {i}], xmm1\n",
