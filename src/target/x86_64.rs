@@ -805,9 +805,13 @@ pub(crate) fn project_known_in_words(
     //   at 0, 4 and 8: asserted below) up to `end`, one past the n-th (within the slice, as
     //   n ≤ its length), and `block` (borrowed for the call); it writes the `n` vertices
     //   from `out` (borrowed mutably, at least `n` long), 16 bytes each: x, y and z at 0, 4
-    //   and 8 and a zero word over `rgb` and `outcode` at 12 (asserted below); no other
-    //   memory, and no stack (`nostack`).
-    // - Values: every field of a vertex gets a valid value (any `i32`; bytes 0).
+    //   and 8 and the word over `rgb` and `outcode` at 12 (asserted below), the depth and
+    //   that word by one store of the depth's 64-bit quotient; no other memory, and no stack
+    //   (`nostack`).
+    // - Values: every field of a vertex gets a valid value (any `i32`, any bytes). The
+    //   word at 12 is zero, as the Rust loop writes it: every vertex lies inside the near
+    //   and far planes (0 ≤ z ≤ w, the object known inside every clip plane), so the depth's
+    //   quotient, at most 2³⁰ plus one, has a zero high half.
     // - No fault: w is at least 1 (`cmp`/`adc` turn 0 into 1, as `NonZeroU32::new(w)
     //   .unwrap_or(MIN)` does); an axis' dividend, a magnitude at most 2³¹ plus half of w
     //   (below 2³¹), fits 32 bits with edx 0, so its quotient does; the depth's, z's word
@@ -844,8 +848,8 @@ pub(crate) fn project_known_in_words(
             "add rax, {h}",
             "xor edx, edx",
             "div {w}",
-            "mov dword ptr [{o} + 8], eax",
-            "mov dword ptr [{o} + 12], 0",
+            // The depth and, in its high half, the zero word of `rgb` and `outcode`.
+            "mov qword ptr [{o} + 8], rax",
             "add {o}, 16",
             "cmp {p}, {end}",
             "jb 2b",
