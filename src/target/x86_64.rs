@@ -70,7 +70,7 @@
 use core::mem::{offset_of, size_of};
 
 use super::asm_faces::FrontFaces;
-use super::asm_rows::{RowBlock, EDGE};
+use super::asm_rows::{LoopStart, RowBlock, EDGE};
 use super::depth::{DepthTest, FragmentCount};
 use crate::math::{Mat4, Vec3};
 use crate::pipeline::{FaceStop, ScreenVertex};
@@ -372,12 +372,9 @@ macro_rules! rows_loop {
     ($test:expr, [$($setup:expr),*], $span:expr, $rowstep:expr, [$($paths:expr),*],
      [$($finish:expr),*]; $block:expr, $($extra:tt)*) => {
         core::arch::asm!(
-            // The first row's colour address, the depth walk, the colour, the distance from
-            // the colour buffer to the depth buffer, and the two edges' walks.
-            "mov {cptr}, qword ptr [{s} + {row}]",
-            "mov {rowz:e}, dword ptr [{s} + {row_z}]",
-            "movzx {col:e}, word ptr [{s} + {bits}]",
-            "mov {delta}, qword ptr [{s} + {delta_at}]",
+            // The first row's colour address, the depth walk, the colour and the distance
+            // from the colour buffer to the depth buffer in registers (`LoopStart`); the two
+            // edges' walks.
             "movq xmm6, qword ptr [{s}]",
             "movhps xmm6, qword ptr [{s} + {right}]",
             "movq xmm7, qword ptr [{s} + 8]",
@@ -434,16 +431,16 @@ macro_rules! rows_loop {
             $($paths,)*
             "5:",
             $($finish,)*
-            s = in(reg) $block as *mut RowBlock, cptr = out(reg) _, rowz = out(reg) _,
-            col = out(reg) _, delta = out(reg) _, x0 = out(reg) _, x1 = out(reg) _, i = out(reg) _,
-            c = out(reg) _, d = out(reg) _,
+            s = in(reg) $block.0, cptr = inout(reg) $block.1.row => _,
+            rowz = inout(reg) u64::from($block.1.row_z as u32) => _,
+            col = inout(reg) u64::from($block.1.bits) => _,
+            delta = inout(reg) $block.1.delta => _, x0 = out(reg) _, x1 = out(reg) _,
+            i = out(reg) _, c = out(reg) _, d = out(reg) _,
             right = const EDGE, lower = const 2 * EDGE,
             width = const offset_of!(RowBlock, width), step_x = const offset_of!(RowBlock, step_x),
-            delta_at = const offset_of!(RowBlock, delta),
             step_y = const offset_of!(RowBlock, step_y), stride = const offset_of!(RowBlock, stride),
             end = const offset_of!(RowBlock, end), last = const offset_of!(RowBlock, last),
-            slot = const offset_of!(RowBlock, slot), row = const offset_of!(RowBlock, row),
-            row_z = const offset_of!(RowBlock, row_z), bits = const offset_of!(RowBlock, bits),
+            slot = const offset_of!(RowBlock, slot),
             out("xmm6") _, out("xmm7") _, out("xmm14") _,
             $($extra)*
             options(nostack),
@@ -530,17 +527,19 @@ pub(super) const WITHOUT_CLAMPS: bool = true;
 /// row).
 ///
 /// # Safety
-/// `block` keeps [`RowBlock`]'s contract (without `clamp`, every span end within
+/// `block` and `start` keep [`RowBlock`]'s contract (without `clamp`, every span end within
 /// `0..=width`); with `windows`, the 7 cells after the rows' last (`last` and on, in both
 /// buffers) are held by the caller mutably too.
 #[inline(always)]
 #[allow(unsafe_code)]
 pub(super) unsafe fn rows<T: DepthTest, K: FragmentCount>(
     block: &mut RowBlock,
-    (clamp, windows): (bool, bool),
+    (clamp, windows, start): (bool, bool, LoopStart),
 ) {
-    // SAFETY (the caller keeps `RowBlock`'s contract, and with `windows` holds the 7 cells
-    // after the rows too):
+    // The block, and the values the loop takes in registers (`cptr`, `delta`, `col`, `rowz`).
+    let block = (block as *mut RowBlock, start);
+    // SAFETY (the caller keeps `RowBlock`'s contract with `start`, and with `windows` holds
+    // the 7 cells after the rows too):
     // - Memory: row k (0 ≤ k < rows) starts at cell k·width of the colour cells at `row`
     //   (`cptr` steps by a row's bytes, `stride`). A row's pixels are touched only where
     //   0 ≤ x0 < x1 ≤ width: two unsigned comparisons pass only then (x1 ≤ width as
