@@ -549,9 +549,10 @@ impl DepthTest for LessOrEqual {
 /// A type, chosen when the target is built
 /// ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)): a frame that does not need the
 /// counts does not pay for them (on the reference torus, 5.5% of the Cortex-M4's instructions
-/// (11.4% with the `asm` feature, whose uncounted spans take their pixels in pairs), 4.1% of
-/// the Cortex-M0's (2.6% with it), 1.6% of
-/// x86-64's (3.4% with it, whose windows of eight cells count each window's winning lanes):
+/// (11.6% with the `asm` feature, whose uncounted spans take their pixels in pairs), 4.1% of
+/// the Cortex-M0's (3.1% with it), 1.6% of
+/// x86-64's (5.4% with it, whose windows of eight cells count each window's winning lanes
+/// and, uncounted, merge the colours by the losing ones):
 /// a count per span and one per failed fragment, and the registers they hold in the row
 /// loop).
 pub trait FragmentCount: sealed::Sealed + Copy + Default + core::fmt::Debug {

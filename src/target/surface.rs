@@ -475,9 +475,16 @@ where
     }
 
     // Held in line on x86-64 with the `asm` feature, where the pipeline's walk takes the
-    // triangle's whole set-up in line (see `Prepared::fill_face`).
-    #[cfg_attr(all(feature = "asm", target_pointer_width = "64"), inline(always))]
-    #[cfg_attr(not(all(feature = "asm", target_pointer_width = "64")), inline)]
+    // triangle's whole set-up in line (see `Prepared::fill_face`; apart for bench/host.sh's
+    // stage breakdown).
+    #[cfg_attr(
+        all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages)),
+        inline(always)
+    )]
+    #[cfg_attr(
+        not(all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages))),
+        inline
+    )]
     fn fill_triangle<P: Paint>(
         &mut self,
         triangle: &ScreenTriangle,

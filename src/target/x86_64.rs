@@ -10,9 +10,12 @@
 //! span ends, where the walks in two general registers took 6: 0.64%). A row takes 13
 //! instructions (both edges, two unsigned comparisons of the span's ends with the target's
 //! columns, a span that crosses a side clamped out of line, the depth walk and the row
-//! address), 9 in the windows' loop for a triangle within the columns (one comparison: 0.3%,
+//! address), 10 in the windows' loop for a triangle within the columns (one comparison: 0.3%,
 //! the test a triangle included; each end by one `pextrw`, the low word of its walk's high
-//! half, which holds it whole: 1.4%); the compiled row loop took about 45 a row, 52 with pixels,
+//! half, which holds it whole: 1.4%; the test by the sign of i = x0 − x1, below); the first
+//! row's colour address, the buffers' distance, the colour and the depth walk come in
+//! registers (`asm_rows::LoopStart`), where each was a store and a load a triangle through the
+//! block (1.0%); the compiled row loop took about 45 a row, 52 with pixels,
 //! moving its edges, clip columns and buffers between the stack and registers around the pixel
 //! loop and entering its unrolled pixel loop. The first form (14 a row, 7 instructions a
 //! fragment and 2 more where it wins, against the compiled loop's 10.2) took the reference
@@ -31,7 +34,11 @@
 //! down a row by one `paddd`), so that a span's lanes are those plus the step to its first
 //! cell broadcast, and a window's high lanes its low ones plus four steps: one instruction a
 //! window fewer; for a triangle within the columns the row's test is the sign of i = x0 − x1,
-//! which the span needs anyway (one a row fewer): 0.9% together (1.025 M → 1.016 M). Counted, each
+//! which the span needs anyway (one a row fewer): 0.9% together (1.025 M → 1.016 M).
+//! Strictly nearer and uncounted, the lanes that lose are found by `pcmpeqw` of the lesser
+//! depth with the stored one, and the colours merged as `new ^ ((new ^ old) & loses)`, which
+//! needs no copy of the old ones (0.8%: 19 instructions a window, 18 for a whole one, 8 to
+//! enter a span). Counted, each
 //! span's length is added on entry and each window's winning lanes to a register's words
 //! (one instruction a window), summed once a triangle: the counted frame 2.8% fewer than
 //! through the pixel loop (1.185 M → 1.152 M). The pixel loop takes two pixels a turn, the
@@ -52,8 +59,9 @@
 //! The vertex loop of an object known inside every clip plane in words
 //! ([`project_known_in_words`], as on the Cortex-M cores): the transform's four rows by 64-bit
 //! products, the quotients by w as `div_round_word` and `fraction_in_words` take them, each
-//! result stored as it is found: 84 instructions a vertex where the compiled loop took about
-//! 92. The host's tests run it under every golden image with the feature.
+//! result stored as it is found (the depth and the zero word after it by one store of its
+//! 64-bit quotient): 83 instructions a vertex where the compiled loop took about 92. The
+//! host's tests run it under every golden image with the feature.
 //!
 //! The triangle walk's skip of back faces (`FrontFaces::next_stop`, on the walk's state in
 //! asm_faces.rs): for an object inside every clip plane culled to its front faces, each
@@ -772,7 +780,8 @@ macro_rules! rounded_axis {
 /// `div_round_word`, the depth by `fraction_in_words`, the position from the viewport's
 /// centre, no outcode and no colour), in one loop of assembly: 84 instructions a vertex
 /// (each product a copy and an `imul`) where the compiled loop took about 92, the reference
-/// frame 0.77% fewer (1.113 M → 1.104 M). Always true: 64-bit products need no bound on the
+/// frame 0.77% fewer (1.113 M → 1.104 M); now 83, the depth and the zero word of `rgb` and
+/// `outcode` by one store. Always true: 64-bit products need no bound on the
 /// positions' extent (the Cortex-M4's loop, whose call this shares, declines some).
 #[allow(unsafe_code)]
 pub(crate) fn project_known_in_words(
