@@ -567,7 +567,7 @@ $stages
   not cleared first (0.19%) and written into the block (0.33%), its sides tested once and
   only where not known short (0.19%): 1.993 M; since, the lights each face reads kept once
   an object (below): 1,983,574 on the M0 and 988,772 on the M4F. x86-64's is reached too:
-  0.990 M a frame (\`bench/host.sh\`, with the \`asm\` feature), from 1.175 M at the start
+  0.989 M a frame (\`bench/host.sh\`, with the \`asm\` feature), from 1.175 M at the start
   of the round before and 1.104 M at the start of the last. The round before: the windows
   of eight cells in SSE2 (3.5%), the edges' walks in one SSE2 register (0.64%),
   \`FractionStepper::new\`'s test of a 32-bit start by its low word sign-extended (0.48%),
@@ -576,7 +576,7 @@ $stages
   held in line: x86-64's triangle set-up, one function with LTO, sits at the edge of the
   inliner's budget, where a few instructions more anywhere took one of them out of line, 1%
   to 4.5% more) and the vertex loop of an object known inside in words in assembly (0.77%).
-  The last round (1.104 M → 0.990 M, 10.3%): the triangle's set-up in line in the walk
+  The last round (1.104 M → 0.989 M, 10.4%): the triangle's set-up in line in the walk
   (\`Prepared::fill_face\`, with its paint and the target's \`fill_triangle\` held in line:
   2.0%; in line alone it had cost 2.4% more, the paint and the fill leaving the line), a
   front face's corners left in registers by the walk's assembly, where they were copied to
@@ -586,7 +586,7 @@ $stages
   no second set-up by one comparison before \`reseed_row\`'s product (0.6%), each edge
   stored at its place rather than chosen by conditional moves (0.6%), the depth walk as the
   row's lanes at column 0 and the row's test by the sign of i = x0 − x1 (0.9%), the rows'
-  cells in 64-bit words without checked steps (0.5%), the lights each face reads kept once
+  cells in 64-bit words without checked steps (0.6%), the lights each face reads kept once
   an object rather than chosen for each face (0.27%), the losing lanes' colour merge
   (0.8%), the vertex loop's depth and the zero word after it by one store (0.12%: 83
   instructions a vertex) and the first row's colour address, the buffers' distance, the
@@ -599,7 +599,7 @@ $stages
   the assembly (0.1% to 1.1% more: the compiler's code around it moved), the general span
   loop out of line (0.7% more), the cells after the rows compared once with the shorter
   buffer (0.5% more) and a saturating count by \`cmp\` and \`adc\` (0.1% more). Where the
-  0.990 M go: rows and pixels in assembly about 0.32 M (10 a row within the columns, 8 to
+  0.989 M go: rows and pixels in assembly about 0.32 M (10 a row within the columns, 8 to
   enter a span and 19 a window), each drawn triangle's set-up, inputs and shading about 525
   instructions (0.50 M), the walk 0.07 M (24 a back face) and the vertex stage 0.10 M.
   Before the round before, with the

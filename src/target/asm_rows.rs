@@ -429,7 +429,6 @@ pub(super) fn color_bits<C: Copy>(color: &C) -> Option<u32> {
 /// with the [`WINDOW_SPARE`] cells after them where both buffers hold those too (and,
 /// counted, the rows hold at most 2¹⁵ windows), and then true (the loop's windows of eight
 /// cells, `x86_64::rows`).
-#[cfg(not(target_pointer_width = "64"))]
 #[inline(always)]
 fn run_cells<'b, C, K: FragmentCount>(
     colors: &'b mut [C],
@@ -438,10 +437,7 @@ fn run_cells<'b, C, K: FragmentCount>(
     rows: u32,
     width: usize,
 ) -> Option<(&'b mut [C], &'b mut [u16], bool)> {
-    // The end first: `first · width` is no larger, so it cannot overflow where the end does
-    // not (one product checked rather than two and their sum: the M4's frame 0.35% fewer
-    // instructions, the M0's 0.1%, x86-64's 0.27% more, from its registers' moves).
-    let end = product(first.checked_add(rows)?, width)?;
+    let (start, end) = rows_cells(first, rows, width)?;
     // Counted, each lane's count of wins stays within a word: at most 2¹⁵ windows, a row
     // holding at most width / 8 + 1.
     let windows = cfg!(target_arch = "x86_64")
@@ -449,7 +445,7 @@ fn run_cells<'b, C, K: FragmentCount>(
         && end
             .checked_add(WINDOW_SPARE)
             .is_some_and(|e| e <= colors.len());
-    let cells = (first as usize).wrapping_mul(width)..end.wrapping_add(spare(windows));
+    let cells = start..end.wrapping_add(spare(windows));
     Some((
         colors.get_mut(cells.clone())?,
         depths.get_mut(cells)?,
@@ -457,38 +453,33 @@ fn run_cells<'b, C, K: FragmentCount>(
     ))
 }
 
-/// `run_cells` in 64-bit words, for `width` below 2¹⁶ (as `block_width` makes it): the ends
-/// `first · width` and `(first + rows) · width`, below 2³³ · 2¹⁶, cannot overflow, so that no
-/// step needs a check (x86-64's frame 0.5% fewer instructions; comparing the cells after the
-/// rows with the shorter buffer's length once, rather than each buffer's, measured 0.5% more).
+/// The first cell of `rows` rows of `width` from row `first`, and the cell past their last;
+/// `None` where that overflows.
+#[cfg(not(target_pointer_width = "64"))]
+#[inline(always)]
+fn rows_cells(first: u32, rows: u32, width: usize) -> Option<(usize, usize)> {
+    // The end first: `first · width` is no larger, so it cannot overflow where the end does
+    // not (one product checked rather than two and their sum: the M4's frame 0.35% fewer
+    // instructions, the M0's 0.1%).
+    let end = product(first.checked_add(rows)?, width)?;
+    Some(((first as usize).wrapping_mul(width), end))
+}
+
+/// `rows_cells` in 64-bit words, for `width` below 2¹⁶ (as `block_width` makes it; `None`
+/// otherwise): the ends, below 2³³ · 2¹⁶, cannot overflow, so that no step needs a check
+/// (x86-64's frame 0.5% fewer instructions; comparing the cells after the rows with the
+/// shorter buffer's length once, rather than each buffer's, measured 0.5% more).
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
-fn run_cells<'b, C, K: FragmentCount>(
-    colors: &'b mut [C],
-    depths: &'b mut [u16],
-    first: u32,
-    rows: u32,
-    width: usize,
-) -> Option<(&'b mut [C], &'b mut [u16], bool)> {
+fn rows_cells(first: u32, rows: u32, width: usize) -> Option<(usize, usize)> {
     // (Known to the callers, after `block_width`: compiled away.)
     if width >= 1 << 16 {
         return None;
     }
-    let start = (first as usize).wrapping_mul(width);
     let end = (first as usize)
         .wrapping_add(rows as usize)
         .wrapping_mul(width);
-    // Counted, each lane's count of wins stays within a word: at most 2¹⁵ windows, a row
-    // holding at most width / 8 + 1.
-    let windows = cfg!(target_arch = "x86_64")
-        && (!K::COUNTED || (rows as usize).wrapping_mul(width / 8 + 1) <= 1 << 15)
-        && end.wrapping_add(WINDOW_SPARE) <= colors.len();
-    let cells = start..end.wrapping_add(spare(windows));
-    Some((
-        colors.get_mut(cells.clone())?,
-        depths.get_mut(cells)?,
-        windows,
-    ))
+    Some(((first as usize).wrapping_mul(width), end))
 }
 
 /// The cells x86-64's loop in windows reads and writes back unchanged after the rows' last
