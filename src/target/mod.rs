@@ -11,11 +11,14 @@
 //!   the dither keeps shading visible on 1-bit and grey displays.
 //!
 //! With the `asm` feature each core's hand-written code lives here too (thumb1.rs, thumb2.rs,
-//! x86_64.rs: the crate's only `unsafe`): the row and pixel loops, and for the pipeline's
-//! earlier stages the triangle walk's skip of back faces (its state in asm_faces.rs) and on
-//! Cortex-M3/M4 a triangle's row set-up, a small triangle's depth walk and the vertex loop of
-//! an object known inside the clip planes (on the M4 and M7 the row loop takes an uncounted
-//! span's pixels in pairs, with the DSP extension's halfword instructions).
+//! x86_64.rs, with asm_rows.rs the crate's only `unsafe`): the row and pixel loops, and for
+//! the pipeline's earlier stages the triangle walk's skip of back faces (its state in
+//! asm_faces.rs) and the vertex loop of an object known inside the clip planes on every core;
+//! on Cortex-M a triangle's row set-up and a small triangle's depth walk (on the M4 and M7 the
+//! row loop takes an uncounted span's pixels in pairs, with the DSP extension's halfword
+//! instructions); on x86-64 the floor division of the edges' set-up (`floor_divide`, which
+//! `raster` calls: the only assembly outside the target's own stages, kept here with the rest
+//! of the crate's `unsafe`).
 
 #[cfg(all(feature = "asm", fixed3d_asm_rows))]
 mod asm_faces;
