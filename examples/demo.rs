@@ -37,7 +37,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     std::fs::create_dir_all(&out)?;
 
-    // The torus of bench/SCENE.md: R = 1, r = 0.4, 48 x 24, turned 20 degrees about x, then 30
+    // The torus of docs/reference-scene.md: R = 1, r = 0.4, 48 x 24, turned 20 degrees about x, then 30
     // about y, seen from (0, 0, 2.6).
     let (nv, nt) = torus_counts(RING, TUBE);
     let (mut p, mut n, mut t) = (

@@ -11,9 +11,7 @@
 //! and `FlatKept` lights each face from them, unless the example is built with
 //! `TORUS_BENCH_PER_FRAME_NORMALS` set (see [`PER_FRAME_NORMALS`]).
 //! The target counts no fragments (the scene needs no counts) unless the example is built with
-//! `TORUS_BENCH_COUNTED` set (see [`COUNTED`]). `bench/host.sh` builds it with the crate's `asm`
-//! feature, as the firmware presets are (`--features asm`: the row loop in x86-64 assembly),
-//! and without it.
+//! `TORUS_BENCH_COUNTED` set (see [`COUNTED`]).
 //! The same scene is then drawn by the crate's f64 reference renderer, timed side by side.
 
 #[path = "common/reference.rs"]
@@ -51,7 +49,7 @@ const COUNTED: bool = option_env!("TORUS_BENCH_COUNTED").is_some();
 /// difference); otherwise `FlatKept` reads the normals the mesh keeps. The same colours.
 const PER_FRAME_NORMALS: bool = option_env!("TORUS_BENCH_PER_FRAME_NORMALS").is_some();
 
-/// One frame's drawing: what bench/SCENE.md times.
+/// One frame's drawing: what docs/reference-scene.md times.
 #[inline(never)]
 fn draw_scene(
     frame: &Frame,

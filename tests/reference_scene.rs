@@ -1,4 +1,4 @@
-//! The reference scene of bench/SCENE.md (a tilted torus, 320x240): covered pixels and counts
+//! The reference scene of docs/reference-scene.md (a tilted torus, 320x240): covered pixels and counts
 //! against the reference, its wireframe variant, and exact golden images.
 
 mod common;
@@ -37,7 +37,7 @@ fn render_flat_counted(data: &TorusData, counted: bool) -> (Vec<Rgb565>, Stats) 
     (c, stats)
 }
 
-/// Covered pixels within 0.1% of 28,515; the other counts within a few of SCENE.md's f32
+/// Covered pixels within 0.1% of 28,515; the other counts within a few of docs/reference-scene.md's f32
 /// reference (which does not snap to sub-pixels).
 #[test]
 fn torus_counts_match_the_reference() {
@@ -183,7 +183,7 @@ fn t38_rendering_is_repeatable() {
     assert_eq!(render_flat(&data).0, render_flat(&data).0);
 }
 
-/// SCENE.md's wireframe variant: same culling, white edges of front faces. Its counts come from
+/// docs/reference-scene.md's wireframe variant: same culling, white edges of front faces. Its counts come from
 /// Bresenham between whole-pixel endpoints, inclusive; ours use sub-pixel endpoints and a
 /// half-open end (R9), so the lit pixels agree closely but not exactly, and every edge plots
 /// one pixel fewer.
@@ -199,7 +199,7 @@ fn torus_wireframe_variant() {
     let mut color = FrameBuffer::new(&mut c, 320, 240).unwrap();
     let stats = prepared.draw_wireframe(&mut color).unwrap();
     let lit = c.iter().filter(|&&p| p != Rgb565::BLACK).count();
-    // SCENE.md's own algorithm (inclusive Bresenham between floored endpoints) on our
+    // docs/reference-scene.md's own algorithm (inclusive Bresenham between floored endpoints) on our
     // projected vertices reproduces its counts: the difference is the line rule, not the
     // geometry.
     let mut scene_lit = vec![false; 320 * 240];
@@ -238,7 +238,7 @@ fn torus_wireframe_variant() {
     golden::check("torus_wire", 320, 240, &rgb);
 }
 
-/// The all-octant integer Bresenham of SCENE.md, endpoints inclusive.
+/// The all-octant integer Bresenham of docs/reference-scene.md, endpoints inclusive.
 fn bresenham(a: (i32, i32), b: (i32, i32)) -> Vec<(i32, i32)> {
     let (mut x, mut y) = a;
     let (dx, dy) = ((b.0 - x).abs(), -(b.1 - y).abs());
@@ -262,7 +262,7 @@ fn bresenham(a: (i32, i32), b: (i32, i32)) -> Vec<(i32, i32)> {
     }
 }
 
-/// The crate's own f64 reference renderer reproduces SCENE.md's reference counts (it has no
+/// The crate's own f64 reference renderer reproduces docs/reference-scene.md's reference counts (it has no
 /// snapping, like the f32 renderer behind them), and the crate's image agrees with it outside
 /// the half-pixel band along silhouettes.
 #[test]

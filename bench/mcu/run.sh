@@ -40,9 +40,6 @@ else
     TARGETS=${TARGETS:-"thumbv6m-none-eabi thumbv7em-none-eabihf"}
     PRESETS=${PRESETS:-"wire flat full gouraud bands obj display"}
     features=()
-    # ASM=0: without the library's `asm` feature (the Thumb-2 pixel loop), which the presets
-    # have by default.
-    [[ ${ASM:-1} == 0 ]] && features=(--no-default-features --features board-mps2)
     # NORMALS=per-frame: `full` finds each face's normal every frame instead of keeping them.
     [[ ${NORMALS:-kept} == per-frame ]] && features+=(--features per-frame-normals)
 fi

@@ -239,7 +239,7 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
     let torus = Model::shape("torus").unwrap_or_else(|| sliver_fan(3));
     let base = SceneDef {
         name: "torus",
-        what: "the reference scene of bench/SCENE.md (48x24 torus turned 20° about x, 30° about y)",
+        what: "the reference scene of docs/reference-scene.md (48x24 torus turned 20° about x, 30° about y)",
         model: torus.clone(),
         rot_x: Angle::from_degrees(20),
         rot_y: Angle::from_degrees(30),

@@ -65,15 +65,6 @@ impl SplitTransform {
         self.transform_words(p).map(i64::from)
     }
 
-    /// The rows' coefficients (x, y, z and w), their translations times 2^(16−k), and `k`:
-    /// what the Cortex-M0's vertex loop in assembly computes [`transform_words`] from.
-    ///
-    /// [`transform_words`]: Self::transform_words
-    #[cfg(all(feature = "asm", fixed3d_thumb1))]
-    pub(crate) fn parts(&self) -> (&[[i32; 3]; 4], [i32; 4], u32) {
-        (&self.rows, self.t, self.k)
-    }
-
     /// [`transform`](Self::transform)'s coordinates, each a word (their sums are bounded
     /// below 2³¹, see the type).
     #[inline(always)]
@@ -546,7 +537,7 @@ mod tests {
         (held, refused)
     }
 
-    /// The reference scene's clip-from-model matrix (bench/SCENE.md: its camera, the torus's
+    /// The reference scene's clip-from-model matrix (docs/reference-scene.md: its camera, the torus's
     /// extent of 1.4), its extent and three points within it.
     fn reference_clip_from_model() -> (Mat4, u32, [[i32; 3]; 3]) {
         let viewport = crate::projection::Viewport::new(320, 240).unwrap();

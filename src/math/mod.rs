@@ -27,13 +27,7 @@ pub(crate) use scalar::{
     short_sides_cross, shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 
-#[cfg(all(feature = "asm", fixed3d_thumb1))]
-pub(crate) use divide::RECIPROCALS;
 pub(crate) use divide::{div_round, div_round_word, fraction_in_words, DivideBy, ShortQuotients};
-#[cfg(all(feature = "asm", fixed3d_thumb1))]
-pub(crate) use matrix::SplitTransform;
-#[cfg(all(feature = "asm", fixed3d_thumb1))]
-pub(crate) use scalar::BYTE_ZEROS;
 pub(crate) use sqrt::{isqrt_ceil, isqrt_u64, sqrt_above};
 #[cfg(test)]
 pub(crate) use vector::dot_wide;

@@ -54,7 +54,7 @@ pub(crate) const fn leading_zeros32(v: u32) -> u32 {
 }
 
 /// `BYTE_ZEROS[i]` is `(i as u8).leading_zeros()`: the top byte's count for
-/// [`leading_zeros_by_halves`] (and the Cortex-M0's vertex loop in assembly).
+/// [`leading_zeros_by_halves`].
 pub(crate) static BYTE_ZEROS: [u8; 256] = {
     let mut t = [0u8; 256];
     let mut i = 0;

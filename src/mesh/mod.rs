@@ -93,9 +93,7 @@ impl core::error::Error for MeshError {}
 pub struct Mesh<'a> {
     positions: &'a [Vec3],
     /// Every index below `positions.len()`: checked by `new`, the only constructor that sets
-    /// `positions` or `triangles` (the others copy both). The triangle walk in assembly of the
-    /// `asm` feature (`target::asm_faces::FrontFaces`) reads vertices by these indices
-    /// unchecked.
+    /// `positions` or `triangles` (the others copy both).
     triangles: &'a [Triangle],
     normals: Option<&'a [Vec3]>,
     face_normals: Option<&'a [FaceNormal]>,

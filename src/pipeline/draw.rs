@@ -14,8 +14,6 @@ use crate::mesh::{FaceNormal, Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-use crate::target::FrontFaces;
 use crate::target::{RasterTarget, ScreenTriangle};
 
 /// The vertex colours handed to shadings that do not interpolate them.
@@ -80,28 +78,6 @@ const FRONT: u8 = 1;
 const NO_CULL: u8 = 2;
 /// The frame's mode, read at run time.
 const ANY_CULL: u8 = 3;
-
-/// Where a walk of back faces in assembly stopped (`FrontFaces::next_stop`, with `asm` on the
-/// cores with a row loop in assembly), after the back faces it skipped.
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-pub(crate) enum FaceStop<'t> {
-    /// At the end of the triangles.
-    End,
-    /// On front face `k`: the triangle and its doubled signed area (below 0).
-    Front(usize, &'t Triangle, i64),
-    /// On a triangle of zero area.
-    Degenerate,
-}
-
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-impl FaceStop<'_> {
-    /// The assembly's code for [`FaceStop::End`].
-    pub(crate) const END: u32 = 0;
-    /// The assembly's code for [`FaceStop::Front`].
-    pub(crate) const FRONT: u32 = 1;
-    /// The assembly's code for [`FaceStop::Degenerate`].
-    pub(crate) const DEGENERATE: u32 = 2;
-}
 
 /// Per-object constants for drawing.
 struct ObjectSetup<'o, const N: usize> {
@@ -267,13 +243,6 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             let triangles = setup.object.mesh.triangles();
             // Counted once per object (an error returns no statistics at all).
             add_count(&mut stats.primitives, triangles.len());
-            #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-            if setup.inside && cull == Cull::Back && !S::PER_VERTEX {
-                if let Some(faces) = FrontFaces::new(setup.object.mesh, setup.vertices) {
-                    self.walk_front_faces(target, &setup, faces, &mut stats)?;
-                    continue;
-                }
-            }
             let inside = setup.inside;
             for (k, tri) in triangles.iter().enumerate() {
                 let (Some(a), Some(b), Some(c)) = (
@@ -332,54 +301,6 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             }
         }
         Ok(stats)
-    }
-
-    /// The walk of an object whose every vertex lies inside every clip plane, culled to its
-    /// front faces, with `asm` on the cores with a row loop in assembly: the back faces
-    /// skipped in assembly (`FrontFaces`), which copies a front face's corners for
-    /// `fill_face`; the counts as [`walk`](Self::walk) makes them. The reference frame 3.4%
-    /// fewer instructions on the Cortex-M4F, 2.8% on the M0, 3.3% on x86-64. Out of line (its
-    /// own registers for its loop) on the M4 and x86-64, 0.24% fewer there; on the M0 in line
-    /// (out of line 0.26% more).
-    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-    #[cfg_attr(
-        not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
-        inline(never)
-    )]
-    fn walk_front_faces<T: RasterTarget>(
-        &self,
-        target: &mut T,
-        setup: &ObjectSetup<'_, N>,
-        mut faces: FrontFaces<'_, '_>,
-        stats: &mut Stats,
-    ) -> Result<(), T::Error> {
-        // The triangles the walk stopped on; the others are back faces.
-        let mut stops = 0usize;
-        let mut v = [(ScreenPoint::new(0, 0), 0); 3];
-        loop {
-            match faces.next_stop(&mut v) {
-                FaceStop::Front(k, tri, area) => {
-                    let face = (Self::face_normal(setup, k), tri);
-                    let short_sides = NARROW_CORE;
-                    self.fill_face(
-                        target,
-                        setup,
-                        face,
-                        &v,
-                        &NO_COLORS,
-                        area,
-                        short_sides,
-                        stats,
-                    )?
-                }
-                FaceStop::Degenerate => bump(&mut stats.degenerate),
-                FaceStop::End => break,
-            }
-            stops += 1;
-        }
-        let triangles = setup.object.mesh.triangles().len();
-        add_count(&mut stats.culled, triangles.saturating_sub(stops));
-        Ok(())
     }
 
     /// Triangle `k`'s kept face normal where the shading reads it (none otherwise: a constant
@@ -445,21 +366,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// clipping), which culling kept: vertices are (snapped position, depth), `colors` their
     /// lit colours (Gouraud), `area` its doubled signed area, `short_sides` true only when every
     /// side is known to lie within ±2¹⁵ (its vertices inside every clip plane).
-    // Not inlined: one call per triangle costs little and keeps the stage measurable. The
-    // vertices' positions and colours come as two arguments: in one struct (by value or by
-    // reference, with or without the area) they cost the Cortex-M4 0.05% to 0.3% more and
-    // 48 to 96 bytes. On x86-64 with the `asm` feature in line in the walk, with its paint
-    // and the target's fill (`fill_triangle`) held in line too: the frame 2.0% fewer
-    // instructions (in line alone, 2.4% more: the paint and the fill left the line). Out of
-    // line for bench/host.sh's stage breakdown (`fixed3d_stages`).
-    #[cfg_attr(
-        all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages)),
-        inline(always)
-    )]
-    #[cfg_attr(
-        not(all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages))),
-        inline(never)
-    )]
+    // Not inlined: one call per triangle costs little and keeps the stage measurable.
+    #[inline(never)]
     #[allow(clippy::too_many_arguments)]
     fn fill_face<T: RasterTarget>(
         &self,

@@ -24,9 +24,6 @@ mod vertex;
 pub use precision::{MatrixFormat, Precision};
 pub use vertex::ScreenVertex;
 
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-pub(crate) use draw::FaceStop;
-
 use core::fmt;
 
 use crate::math::{Mat4, NARROW_CORE};
@@ -259,36 +256,6 @@ impl Frame {
             let rest = core::mem::take(&mut slots);
             let (these, after) = rest.split_at_mut(positions.len().min(rest.len()));
             slots = after;
-            // With `asm` on Cortex-M3/M4 and x86-64, an object known inside in words without lit
-            // colours takes the vertex loop in assembly (`target::thumb2::project_known_in_words`,
-            // `target::x86_64::project_known_in_words`).
-            #[cfg(all(feature = "asm", any(fixed3d_thumb2, target_arch = "x86_64")))]
-            // (The M4's declines only matrices and meshes near `fits_32_bits`' bound.)
-            if fits
-                && known == Known::InWords
-                && normals.is_none()
-                && crate::target::project_known_in_words(
-                    &clip_from_model,
-                    map.half_sizes(),
-                    (positions, extent),
-                    these,
-                )
-            {
-                if k < 64 {
-                    inside |= 1 << k;
-                }
-                continue;
-            }
-            // On Cortex-M0 the same with the split transform in assembly
-            // (`target::thumb1::project_split_in_words`).
-            #[cfg(all(feature = "asm", fixed3d_thumb1))]
-            if let (Some(h), Known::InWords, None) = (&split, known, normals) {
-                crate::target::project_split_in_words(h, map.half_sizes(), positions, these);
-                if k < 64 {
-                    inside |= 1 << k;
-                }
-                continue;
-            }
             for (i, (p, slot)) in positions.iter().zip(these).enumerate() {
                 let (code, pt, z) = if !NARROW_CORE && fits {
                     // Known short (`fits` implies the extent below 2²⁹): where products are

@@ -19,9 +19,7 @@ use crate::raster::{ScreenPoint, PIPELINE_LIMIT};
 /// One transformed vertex in the per-frame cache: snapped screen position, depth, lit colour
 /// (Gouraud) and the clip planes it is outside of. 16 bytes; a frame needs one per vertex of
 /// the scene.
-// In this order (`repr(C)`): the triangle walks in assembly read x and y as a pair.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-#[repr(C)]
 pub struct ScreenVertex {
     pub(crate) x: i32,
     pub(crate) y: i32,
@@ -92,12 +90,6 @@ impl ScreenMap {
             half_h: v.height() as i64 * 8,
             snap: precision.snap_shift(),
         }
-    }
-
-    /// Half the viewport's width and height in sub-pixels (at most 2¹⁴ each).
-    #[cfg(all(feature = "asm", any(fixed3d_thumb, target_arch = "x86_64")))]
-    pub(crate) fn half_sizes(&self) -> (i32, i32) {
-        (self.half_w as i32, self.half_h as i32)
     }
 
     /// What holds for every point within `radius` of the origin (raw Q16.16) through `m`, its
@@ -579,7 +571,7 @@ mod tests {
         assert!(in_words > 50 && held > in_words + 500 && failed > 500);
         assert!(split > 50, "{split}");
         assert!(held > 500 && failed > 500, "{held} {failed}");
-        // The reference scene's torus and view (bench/SCENE.md).
+        // The reference scene's torus and view (docs/reference-scene.md).
         use crate::camera::LookAt;
         use crate::math::{Angle, Scalar, Vec3};
         use crate::mesh::{torus, torus_counts, Mesh};

@@ -27,18 +27,6 @@ mod triangle;
 
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-pub(crate) use triangle::columns_bound;
-#[cfg(all(feature = "asm", fixed3d_thumb))]
-pub(crate) use triangle::within_columns;
-#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb2)))]
-pub(crate) use triangle::EdgeWalk;
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-pub(crate) use triangle::RunEdges;
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-pub(crate) use triangle::Runs;
-#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
-pub(crate) use triangle::TriangleRows;
 pub(crate) use triangle::{rows_in_range, spans_in_range};
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
@@ -64,8 +52,6 @@ pub(crate) const PIPELINE_LIMIT: i32 = (1 << 15) - 16;
 /// assert_eq!(ScreenPoint::pixel_center(2, 3), ScreenPoint::new(40, 56));
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-// Two words, x then y: the `asm` feature's triangle set-up on Cortex-M3/M4 reads them so.
-#[repr(C)]
 pub struct ScreenPoint {
     /// Sub-pixels to the right of the screen's left edge.
     pub x: i32,
@@ -332,11 +318,7 @@ fn floor_divmod32<const SHORT: i32>(n: i32, d: i32) -> (i32, i32) {
 /// Walks `ceil(N(k) / D)` or `floor(N(k) / D)` for `N(k) = N0 + k·step` over consecutive
 /// integers `k`, exactly, with an i32 quotient and remainder (Bresenham's error term). Used for
 /// triangle edges (ceil) and lines (floor).
-///
-/// Its five words lie in the order of its fields (`repr(C)`): the `asm` feature's row loop on
-/// Cortex-M0 (`target::thumb1`) reads them at offsets 0 to 16.
 #[derive(Clone, Copy, Debug)]
-#[repr(C)]
 pub(crate) struct RationalStepper<const CEIL: bool> {
     /// The current value.
     pub value: i32,
@@ -363,9 +345,7 @@ pub(crate) type FloorStepper = RationalStepper<false>;
 impl<const CEIL: bool> RationalStepper<CEIL> {
     /// The constant 0 (for iterators that yield nothing, which never step it). A ceiling
     /// walk's is all zero bytes, so that memory holding some is cleared rather than copied
-    /// from a constant (when Cortex-M0's `asm` row block held some, 1% of its frame); a floor
-    /// walk's keeps a denominator of 1 (with 0 the M0's wireframe took 0.25% more
-    /// instructions).
+    /// from a constant; a floor walk's keeps a denominator of 1.
     pub(crate) const ZERO: Self = RationalStepper {
         value: 0,
         rem: 0,
@@ -477,12 +457,8 @@ impl CeilStepper {
 /// `(k + 1)(D − 1)/D`, below `2³² / D`; the exact sum is a multiple of `2³² / D`, so a multiple
 /// of 2³² lies at or below both or above both: the carries, and so the high word, are
 /// `q(k)`'s.
-///
-/// Its two words lie in the order of its fields (`repr(C)`): the `asm` feature's row loop on
-/// x86-64 (`target::x86_64`) reads them at offsets 0 and 8.
 #[cfg(any(test, doc, target_pointer_width = "64"))]
 #[derive(Clone, Copy, Debug)]
-#[repr(C)]
 pub(crate) struct FractionStepper {
     acc: u64,
     step: u64,
@@ -535,9 +511,6 @@ impl FractionStepper {
 /// loop only reads but one, where the exact stepper keeps five and corrects its remainder
 /// (Cortex-M4: 5.8% fewer instructions per frame and 450 bytes less flash; its divide takes 2
 /// to 12 cycles where most instructions take one, so in cycles the gain is smaller).
-///
-/// The `asm` feature's row loop (`target::thumb2`) walks the same numerators, steps and
-/// denominators with no base, from words of its own layout (`RunEdges`).
 #[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct DivideStepper {
@@ -588,14 +561,6 @@ impl DivideStepper {
     }
 }
 
-// The layout `target::thumb1` reads: value, remainder, denominator, whole and fractional step.
-const _: () = {
-    use core::mem::{offset_of, size_of};
-    assert!(offset_of!(CeilStepper, value) == 0 && offset_of!(CeilStepper, rem) == 4);
-    assert!(offset_of!(CeilStepper, den) == 8 && offset_of!(CeilStepper, step_q) == 12);
-    assert!(offset_of!(CeilStepper, step_r) == 16 && size_of::<CeilStepper>() == 20);
-};
-
 // The layout `target::x86_64` reads: the walk (its value in the high half), then the step.
 #[cfg(any(test, target_pointer_width = "64"))]
 const _: () = {
@@ -624,13 +589,6 @@ fn packed_quotient32(v: i32, d: i64) -> u64 {
     // ⌊n / d⌋ by one unsigned division (`floor_div`'s signed one and its correction took
     // about 12 instructions more): for n < 0, !n = −n − 1 = q·d + r with 0 ≤ r < d, so
     // n = (−q − 1)·d + (d − 1 − r) and ⌊n / d⌋ = −q − 1 = !q.
-    // With the `asm` feature on x86-64 by one `idiv` and the correction of its truncation
-    // (`target::floor_divide`): the compiler's form tests for 32-bit operands and turns the
-    // sign twice (the frame 0.3% fewer instructions).
-    #[cfg(all(feature = "asm", target_arch = "x86_64"))]
-    if let Some(q) = core::num::NonZeroI64::new(d).and_then(|d| crate::target::floor_divide(n, d)) {
-        return q as u64;
-    }
     let sign = n >> 63;
     let q = core::num::NonZeroU64::new(d as u64).map_or(0, |d| (n ^ sign) as u64 / d);
     q ^ sign as u64

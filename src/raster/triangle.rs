@@ -97,47 +97,6 @@ pub struct TriangleSpans {
     x_max: i32,
 }
 
-/// A triangle's rows for a target's own row loop (`TriangleRows::runs`, or on Cortex-M
-/// `thumb1::triangle_runs` and `thumb2::triangle_runs` in assembly): from its first row
-/// with the edges `edges[0]` (left) and `edges[1]` (right), `rows` rows, each row's span
-/// `max(left, x0)..min(right, x1)` for the clip rectangle's columns `x0..x1`, both edges stepped
-/// after each row; after the first `upper` rows (at least one; `rows` when no edge changes),
-/// `edges[2]`, the lower short edge set up at that row, takes the place of the left edge if
-/// `lower_is_left`, else the right one (on Cortex-M the assembly writes that place straight
-/// into its row loop's block instead).
-#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
-#[derive(Clone, Copy, Debug)]
-#[repr(C)]
-pub(crate) struct Runs {
-    #[cfg(not(fixed3d_thumb2))]
-    pub(crate) edges: [EdgeWalk; 3],
-    #[cfg(fixed3d_thumb2)]
-    pub(crate) edges: RunEdges,
-    pub(crate) upper: u32,
-    pub(crate) rows: u32,
-    #[cfg(not(fixed3d_thumb))]
-    pub(crate) lower_is_left: bool,
-}
-
-/// [`Runs`]' edges on Cortex-M3/M4 with the `asm` feature, as `target::thumb2::triangle_runs`
-/// writes them and its row loop reads them: each the walk of a [`DivideStepper`] with a base
-/// of 0 (its numerator signed, see `triangle_runs`), as words: the left and right edges'
-/// numerators, then their steps, then their denominators (the row loop loads all six with one
-/// `ldm` and stores both numerators back with one `strd`), then the lower short edge's
-/// numerator, step and denominator.
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-#[derive(Clone, Copy, Debug)]
-#[repr(C)]
-pub(crate) struct RunEdges([u32; 9]);
-
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-impl RunEdges {
-    /// The bytes from an edge's word to the right edge's (its numerator's from the left's).
-    pub(crate) const RIGHT: usize = 4;
-    /// The lower short edge's offset in bytes (its numerator, then its step and denominator).
-    pub(crate) const LOWER: usize = 24;
-}
-
 /// The pixels a triangle covers, as spans clipped to `clip`, by the top-left rule (see the
 /// [module documentation](super)). Either winding is accepted; a triangle of zero area, or one
 /// with a coordinate beyond [`COORD_LIMIT`](super::COORD_LIMIT), yields nothing.
@@ -299,102 +258,6 @@ impl TriangleRows {
             x_max,
         }
     }
-
-    /// True when every span end of these rows lies in `0..=width` before any clamp to the
-    /// columns (a target's row loop then needs none), for the `bound` of `width` columns
-    /// ([`columns_bound`]): when every vertex's x lies in `[−7, 16·width + 8]`. A row's span
-    /// ends are `ceil((x − 8) / 16)` of points on its edges (the exact values every edge walk
-    /// steps through), whose x lie between their edge's vertices', and the ceiling is
-    /// monotonic: from `ceil(−15 / 16) = 0` to `ceil(16·width / 16) = width`.
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))))]
-    #[inline(always)]
-    pub(crate) fn within_columns(&self, bound: u32) -> bool {
-        within_columns(&self.v, bound)
-    }
-
-    /// These rows for a target's own row loop, of a triangle within the pipeline's range
-    /// (whose edges walk all its rows from one set-up on Cortex-M: `seed_rows` is `u32::MAX`):
-    /// the left, right and lower short edges set up where the loop reads them, and the counts
-    /// of rows; `None` where the edges would be set up again on the way down (x86-64's
-    /// [`FractionStepper`] for a triangle of more than 2¹² rows of edges beyond 2¹⁶
-    /// sub-pixels: none of the pipeline's). Without a split the lower edge is only a
-    /// placeholder, zero (a copy of the left edge cost x86-64 0.6%). (The Cortex-M cores set
-    /// their runs up in assembly instead, `triangle_runs`.)
-    #[cfg(any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))))]
-    // In line, with its edges and their steppers' set-up: left to the compiler, x86-64's
-    // triangle set-up (one function, `fill_face`, with LTO) sits at the edge of its inlining
-    // budget, and a few instructions more anywhere in it took one of them out of line (the
-    // frame 1% to 4.5% more). Out of line for bench/host.sh's stage breakdown.
-    #[cfg_attr(not(fixed3d_stages), inline(always))]
-    #[cfg_attr(fixed3d_stages, inline(never))]
-    pub(crate) fn runs(&self) -> Option<Runs> {
-        let TriangleRows {
-            v: [a, b, c],
-            y,
-            y_end,
-            y_split,
-            long_is_left,
-        } = *self;
-        #[cfg(target_pointer_width = "64")]
-        if reseed_row(y, y_end, c.y.wrapping_sub(a.y)) != i32::MAX {
-            return None;
-        }
-        // y < y_end: a positive count of rows, and of those above a split within them.
-        let rows = y_end.wrapping_sub(y) as u32;
-        // The first row's edges as in `spans`, written out again: through one method both
-        // share, the frame measured 1.3% more instructions on the Cortex-M4, 0.6% more on the
-        // M0 and on x86-64.
-        let long = edge_to_end(a, c, y);
-        let short = if y < y_split {
-            edge_to_end(a, b, y)
-        } else {
-            edge_to_end(b, c, y)
-        };
-        let split = y < y_split && y_split < y_end;
-        let lower = if split {
-            edge(b, c, y_split, u32::MAX)
-        } else {
-            EdgeWalk::ZERO
-        };
-        // The long edge left or right, each edge stored at its place.
-        let mut edges = [lower; 3];
-        edges[usize::from(!long_is_left)] = long;
-        edges[usize::from(long_is_left)] = short;
-        Some(Runs {
-            edges,
-            upper: if split {
-                y_split.wrapping_sub(y) as u32
-            } else {
-                rows
-            },
-            rows,
-            lower_is_left: !long_is_left,
-        })
-    }
-}
-
-/// `TriangleRows::within_columns` of the triangle `v`, in any order.
-#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
-#[inline(always)]
-pub(crate) fn within_columns(v: &[ScreenPoint; 3], bound: u32) -> bool {
-    let [a, b, c] = *v;
-    let at = |x: i32| x.wrapping_add(7) as u32;
-    at(a.x).max(at(b.x)).max(at(c.x)) <= bound
-}
-
-/// The bound of [`within_columns`] for `width` columns: one unsigned comparison a
-/// vertex, `x + 7 ≤ 16·width + 15` (a wrapped negative fails it). Widths from 2²⁷ on are taken
-/// as 2²⁷ − 1, which only tests more strictly, so that the bound stays below 2³¹.
-#[cfg(any(test, all(feature = "asm", fixed3d_asm_rows)))]
-pub(crate) const fn columns_bound(width: i32) -> u32 {
-    let w = if width < 0 {
-        0
-    } else if width > (1 << 27) - 1 {
-        (1 << 27) - 1
-    } else {
-        width
-    };
-    w as u32 * 16 + 15
 }
 
 /// The stepper for `ceil((x(16·py + 8) − 8) / 16)` along edge `p → q` (`p.y < q.y`), at row `py`
@@ -409,29 +272,6 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, rows: u32) -> EdgeWalk {
     } else {
         edge_by_division_for(p, q, py, rows)
     }
-}
-
-/// [`edge`] walking to the edge's end (`rows` = `u32::MAX`), for the first row's edges of
-/// [`TriangleRows::runs`]: on Cortex-M3/M4 [`edge_by_division`] in line there (the M4's frame
-/// 0.9% fewer instructions than through its call, for 160 bytes of flash; in line for the
-/// lower edge too, 0.7% more than that).
-#[cfg(all(
-    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))),
-    all(target_pointer_width = "32", target_has_atomic = "32")
-))]
-#[inline(always)]
-fn edge_to_end(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
-    edge_by_division(p, q, py)
-}
-
-/// [`edge_to_end`] on the other cores: `edge` itself.
-#[cfg(all(
-    any(test, all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb))),
-    not(all(target_pointer_width = "32", target_has_atomic = "32"))
-))]
-#[inline(always)]
-fn edge_to_end(p: ScreenPoint, q: ScreenPoint, py: i32) -> EdgeWalk {
-    edge(p, q, py, u32::MAX)
 }
 
 /// [`edge_by_division`] as a call: the edges of the spans and the lower edge of the runs.
@@ -859,11 +699,7 @@ mod tests {
 
     /// The rows of all of `for_each_row`'s loops (in runs, one by one, and one by one with
     /// re-seeding out of line), which must agree: each target compiles one or two of them.
-    fn rows_both_ways(
-        spans: &TriangleSpans,
-        p: [ScreenPoint; 3],
-        clip: PixelRect,
-    ) -> Vec<(i32, i32)> {
+    fn rows_both_ways(spans: &TriangleSpans) -> Vec<(i32, i32)> {
         let (mut in_runs, mut one_by_one, mut reseeding) = (Vec::new(), Vec::new(), Vec::new());
         spans.clone().rows_in_runs(|x0, x1| in_runs.push((x0, x1)));
         spans
@@ -874,56 +710,7 @@ mod tests {
             .rows_reseeding(&mut |x0, x1| reseeding.push((x0, x1)));
         assert_eq!(in_runs, one_by_one);
         assert_eq!(in_runs, reseeding);
-        // As runs for a target's own loop, where the edges need no second set-up; where
-        // `within_columns` holds, every end lies in the columns before the clamp.
-        if let Some((runs, within)) = runs_of(p, clip) {
-            assert_eq!(walk_runs(runs, (clip.x0, clip.x1)), in_runs);
-            if within && clip.x0 == 0 {
-                assert!(unclamped_ends_within(runs, clip.x1), "{p:?} {clip:?}");
-            }
-        }
         in_runs
-    }
-
-    /// The runs of `p` in `clip` for a target's own row loop, if it has rows and its edges need
-    /// no second set-up, and whether `within_columns` holds for the columns `0..clip.x1`.
-    fn runs_of(p: [ScreenPoint; 3], clip: PixelRect) -> Option<(Runs, bool)> {
-        let area = doubled_area(p[0], p[1], p[2]);
-        if area == 0 {
-            return None;
-        }
-        let rows = rows_in_range(p, clip, area)?;
-        Some((rows.runs()?, rows.within_columns(columns_bound(clip.x1))))
-    }
-
-    /// Every span end of `runs`, before any clamp, lies in `0..=width`.
-    fn unclamped_ends_within(runs: Runs, width: i32) -> bool {
-        let ends = walk_runs(runs, (i32::MIN, i32::MAX));
-        ends.iter()
-            .all(|&(x0, x1)| (0..=width).contains(&x0) && (0..=width).contains(&x1))
-    }
-
-    /// The rows of [`Runs`] as their documentation describes them (as the `asm` feature's row
-    /// loop walks them).
-    fn walk_runs(runs: Runs, (x_min, x_max): (i32, i32)) -> Vec<(i32, i32)> {
-        let Runs {
-            mut edges,
-            upper,
-            rows,
-            lower_is_left,
-            ..
-        } = runs;
-        assert!((1..=rows).contains(&upper));
-        let mut out = Vec::new();
-        for k in 0..rows {
-            if k == upper {
-                edges[usize::from(!lower_is_left)] = edges[2];
-            }
-            out.push((edges[0].value().max(x_min), edges[1].value().min(x_max)));
-            edges[0].step();
-            edges[1].step();
-        }
-        out
     }
 
     /// The span end of edge `p → q` on row `py`, `ceil((x(16·py + 8) − 8) / 16)`, from its
@@ -1175,7 +962,7 @@ mod tests {
             reseeded += usize::from(spans.y_reseed != i32::MAX);
             let expected: Vec<Span> = spans.clone().collect();
             let (mut walked, mut y) = (Vec::new(), spans.row());
-            for (x0, x1) in rows_both_ways(&spans, p, clip) {
+            for (x0, x1) in rows_both_ways(&spans) {
                 if x0 < x1 {
                     walked.push(Span { y, x0, x1 });
                 }
@@ -1195,7 +982,7 @@ mod tests {
         use crate::raster::RowStarts;
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let clip = PixelRect::new(3, 5, 60, 144);
-        let (mut spans_seen, mut split_runs) = (0, 0);
+        let mut spans_seen = 0;
         for _ in 0..20_000 {
             let scale = rng.pick(&[40, 400, 1200, 16_000]);
             let p = rng.triangle(ScreenPoint::new(500, 1200), scale);
@@ -1209,11 +996,10 @@ mod tests {
                 .map(|s| (s, plane.at(s.x0, s.y)))
                 .collect();
             let spans = triangle_spans(p, clip);
-            split_runs += usize::from(runs_of(p, clip).is_some_and(|(r, _)| r.upper < r.rows));
             let y0 = spans.row();
             let mut wide = plane.rows(clip.x0, y0);
             let (mut walked, mut y) = (Vec::new(), y0);
-            for (x0, x1) in rows_both_ways(&spans, p, clip) {
+            for (x0, x1) in rows_both_ways(&spans) {
                 if x0 < x1 {
                     walked.push((Span { y, x0, x1 }, wide.at(x0)));
                 }
@@ -1224,58 +1010,6 @@ mod tests {
             spans_seen += walked.len();
         }
         assert!(spans_seen > 100_000, "{spans_seen}");
-        // Runs that switch an edge on the way down, which `rows_both_ways` walks too.
-        assert!(split_runs > 5_000, "{split_runs}");
-    }
-
-    /// `within_columns` holds exactly for triangles whose vertices lie in `[−7, 16·w + 8]`, and
-    /// where it holds every row's span ends, before any clamp, lie in `0..=w` (what the `asm`
-    /// row loops rely on to leave their clamps out): triangles of every size around both sides
-    /// of a 40-pixel-wide target, the bound's ends, and widths from 2²⁷ on (tested more
-    /// strictly, never wrongly).
-    #[test]
-    fn within_columns_bounds_every_span_end() {
-        let mut rng = crate::testing::XorShift(0xB7E1_5162_8AED_2A6Bu64);
-        let w = 40;
-        let clip = PixelRect::new(0, 0, w, 64);
-        let rows_of = |p: [ScreenPoint; 3], clip| {
-            let area = doubled_area(p[0], p[1], p[2]);
-            (area != 0).then(|| rows_in_range(p, clip, area)).flatten()
-        };
-        let (mut within, mut outside) = (0, 0);
-        for _ in 0..20_000 {
-            let scale = rng.pick(&[16, 100, 400, 1000]);
-            let x = rng.pick(&[0, 8, 16 * w / 2, 16 * w - 8, 16 * w]);
-            let p = rng.triangle(ScreenPoint::new(x, 32 * 16), scale);
-            let (Some(rows), Some((runs, ok))) = (rows_of(p, clip), runs_of(p, clip)) else {
-                continue;
-            };
-            assert_eq!(ok, rows.within_columns(columns_bound(w)));
-            assert_eq!(
-                ok,
-                p.iter().all(|q| (-7..=16 * w + 8).contains(&q.x)),
-                "{p:?}"
-            );
-            if ok {
-                within += 1;
-                assert!(unclamped_ends_within(runs, w), "{p:?}");
-            } else {
-                outside += 1;
-            }
-        }
-        assert!(within > 2_000 && outside > 2_000, "{within} {outside}");
-        // The bound's ends, and the widths it caps.
-        let q = ScreenPoint::new;
-        let tall = |x0: i32, x1: i32| [q(x0, 0), q(x1, 16 * 30), q(x0, 16 * 60)];
-        let within_at = |p, w| rows_of(p, clip).is_some_and(|r| r.within_columns(columns_bound(w)));
-        assert!(within_at(tall(-7, 16 * w + 8), w));
-        assert!(!within_at(tall(-8, 16 * w + 8), w));
-        assert!(!within_at(tall(-7, 16 * w + 9), w));
-        for wide in [1 << 27, i32::MAX] {
-            assert!(within_at(tall(-7, 1 << 30), wide));
-            assert!(!within_at(tall(-8, 1 << 30), wide));
-        }
-        assert!(within_at(tall(-7, 8), 0) && !within_at(tall(-7, 9), 0));
     }
 
     /// `spans_in_range` tests neither the clip rectangle nor the area: a rectangle without
@@ -1301,9 +1035,7 @@ mod tests {
             covering += usize::from(spans_in_range(p, full, area, u32::MAX).next().is_some());
             for clip in empties {
                 let spans = spans_in_range(p, clip, area, u32::MAX);
-                assert!(rows_both_ways(&spans, p, clip)
-                    .iter()
-                    .all(|(x0, x1)| x0 >= x1));
+                assert!(rows_both_ways(&spans).iter().all(|(x0, x1)| x0 >= x1));
                 assert_eq!(spans.count(), 0, "{p:?} {clip:?}");
             }
         }

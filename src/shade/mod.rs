@@ -208,12 +208,6 @@ impl Shading for Flat {
     type Paint = SolidPaint;
     const PER_VERTEX: bool = false;
     const FACE_LIGHTING: bool = true;
-    // In line on x86-64 with the `asm` feature, as `fill_triangle` is (apart for
-    // bench/host.sh's stage breakdown).
-    #[cfg_attr(
-        all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages)),
-        inline(always)
-    )]
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
         SolidPaint(flat_color(
             face.base,
@@ -231,12 +225,6 @@ impl Shading for FlatKept {
     const PER_VERTEX: bool = false;
     const FACE_LIGHTING: bool = true;
     const KEPT_FACE_NORMALS: bool = true;
-    // In line on x86-64 with the `asm` feature, as `fill_triangle` is (apart for
-    // bench/host.sh's stage breakdown).
-    #[cfg_attr(
-        all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages)),
-        inline(always)
-    )]
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
         if let Some(n) = face.face_normal {
             if let Some(color) = kept_face_color(face.base, &n.0, lighting) {

@@ -2,11 +2,7 @@
 
 use core::num::NonZeroU64;
 
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-use super::asm_rows;
 use super::grid::{BufferError, Grid};
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-use super::thumb2;
 use crate::math::{
     mul_short, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE,
 };
@@ -49,20 +45,9 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         false
     }
 
-    /// The cells as u16s, for the row loops in assembly (`target::thumb1`, `target::thumb2`,
-    /// `target::x86_64`); `None` for other formats.
-    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-    #[doc(hidden)]
-    #[inline(always)]
-    fn u16_cells(cells: &mut [Self]) -> Option<&mut [u16]> {
-        let _ = cells;
-        None
-    }
-
     /// [`test_span`](Self::test_span) for a span of a triangle that
     /// [`unclamped`](Self::unclamped) accepted: `start` and `step` in the 32-bit loop's unit,
-    /// 2⁻³¹ of the depth range (2⁻¹³ of the interpolator's), half a u16 step added; `solid`
-    /// is the span's one colour when it has one (`next_color` then gives it every time).
+    /// 2⁻³¹ of the depth range (2⁻¹³ of the interpolator's), half a u16 step added.
     #[doc(hidden)]
     #[inline(always)]
     fn test_span_unclamped<C: Copy, T: DepthTest, K: FragmentCount>(
@@ -70,11 +55,9 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         colors: &mut [C],
         start: i32,
         step: i32,
-        solid: Option<SolidColor<C>>,
         next_color: impl FnMut() -> C,
         failed: u32,
     ) -> u32 {
-        let _ = solid;
         // Formats without a fast path never hand out a step; this only keeps the contract.
         let start = ((start as i64) << DROPPED).wrapping_sub(HALF_STEP);
         Self::test_span::<C, T, K>(
@@ -166,7 +149,7 @@ impl DepthFormat for u16 {
             return clamped_span::<u16, C, T, K>(depths, colors, start, step, next_color, failed);
         }
         Self::test_span_unclamped::<C, T, K>(
-            depths, colors, a as i32, st as i32, None, next_color, failed,
+            depths, colors, a as i32, st as i32, next_color, failed,
         )
     }
 
@@ -180,62 +163,17 @@ impl DepthFormat for u16 {
         max <= (1 << 30) - (1 << 14)
     }
 
-    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-    #[inline(always)]
-    fn u16_cells(cells: &mut [u16]) -> Option<&mut [u16]> {
-        Some(cells)
-    }
-
     #[inline(always)]
     fn test_span_unclamped<C: Copy, T: DepthTest, K: FragmentCount>(
         depths: &mut [u16],
         colors: &mut [C],
         acc: i32,
         st: i32,
-        solid: Option<SolidColor<C>>,
         next_color: impl FnMut() -> C,
         failed: u32,
     ) -> u32 {
         // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
-        #[cfg(all(feature = "asm", fixed3d_thumb2))]
-        if let Some(bits) = solid.and_then(|s| s.bits) {
-            return thumb2::solid_span::<C, T, K>(
-                depths, colors, acc as u32, st as u32, bits, failed,
-            );
-        }
-        let _ = solid;
         unclamped_u16::<C, T, K>(depths, colors, acc, st, next_color, failed)
-    }
-}
-
-/// A span's one colour, prepared once a triangle for the span loops that take it whole (with
-/// the `asm` feature on Cortex-M cores and x86-64: its two bytes as a word, see
-/// `asm_rows::color_bits`).
-#[doc(hidden)]
-#[derive(Clone, Copy, Debug)]
-pub struct SolidColor<C> {
-    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-    bits: Option<u32>,
-    _color: core::marker::PhantomData<C>,
-}
-
-impl<C: Copy> SolidColor<C> {
-    /// Its two bytes as a word, for colours of 2 bytes (see `asm_rows::color_bits`).
-    #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-    #[inline(always)]
-    pub(super) fn bits(&self) -> Option<u32> {
-        self.bits
-    }
-
-    /// Prepares `color`.
-    #[inline(always)]
-    pub(crate) fn new(color: &C) -> Self {
-        let _ = color;
-        SolidColor {
-            #[cfg(all(feature = "asm", fixed3d_asm_rows))]
-            bits: asm_rows::color_bits(color),
-            _color: core::marker::PhantomData,
-        }
     }
 }
 
@@ -380,8 +318,7 @@ impl<W: LoopWord> RoundedRows<W> {
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
     /// nearly edge-on, which the general loop takes). `short_sides`: every side known to lie
     /// within ±2¹⁵ (see [`Plane::numerators_given`]).
-    #[cfg_attr(fixed3d_thumb, inline(always))]
-    #[cfg_attr(not(fixed3d_thumb), inline)]
+    #[inline]
     pub(crate) fn new(
         p: &[ScreenPoint; 3],
         z: [i32; 3],
@@ -548,13 +485,8 @@ impl DepthTest for LessOrEqual {
 ///
 /// A type, chosen when the target is built
 /// ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)): a frame that does not need the
-/// counts does not pay for them (on the reference torus, 5.5% of the Cortex-M4's instructions
-/// (11.6% with the `asm` feature, whose uncounted spans take their pixels in pairs), 4.1% of
-/// the Cortex-M0's (3.1% with it), 1.6% of
-/// x86-64's (5.4% with it, whose windows of eight cells count each window's winning lanes
-/// and, uncounted, merge the colours by the losing ones):
-/// a count per span and one per failed fragment, and the registers they hold in the row
-/// loop).
+/// counts does not pay for them (a count per span and one per failed fragment, and the
+/// registers they hold in the row loop; docs/performance.md gives the cost).
 pub trait FragmentCount: sealed::Sealed + Copy + Default + core::fmt::Debug {
     /// True when fragments and writes are counted.
     const COUNTED: bool;

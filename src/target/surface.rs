@@ -5,26 +5,16 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 
-#[cfg(all(feature = "asm", fixed3d_asm_rows))]
-use super::asm_rows;
 use super::depth::{
-    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LoopWord, NativeWord,
-    RoundedRows, SolidColor, Uncounted,
+    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
+    Uncounted,
 };
 use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
-#[cfg(all(feature = "asm", fixed3d_thumb1))]
-use super::thumb1 as core_walk;
-#[cfg(all(feature = "asm", fixed3d_thumb2))]
-use super::thumb2 as core_walk;
-use crate::math::is_short;
 use crate::pipeline::Stats;
-#[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
-use crate::raster::TriangleRows;
 use crate::raster::{
-    doubled_area, rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span,
-    TriangleSpans, PIPELINE_LIMIT,
+    rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span, TriangleSpans,
 };
 use crate::shade::Paint;
 
@@ -74,66 +64,6 @@ impl ScreenTriangle {
     }
 }
 
-/// [`RoundedRows::new`] in the loop's word for the general loops: out of line on Cortex-M3/M4
-/// with the `asm` feature, whose solid triangles set their walks up in line
-/// (`solid_triangle`), so that only the triangles of other paints and those it declines come
-/// here (in line there too, the M4's frame measured 0.28% more instructions, for 70 bytes
-/// less).
-#[cfg_attr(all(feature = "asm", fixed3d_thumb), inline(never))]
-#[cfg_attr(not(all(feature = "asm", fixed3d_thumb)), inline(always))]
-fn rounded_rows(
-    p: &[ScreenPoint; 3],
-    z: [i32; 3],
-    area: i64,
-    y: i32,
-    short_sides: bool,
-) -> Option<(RoundedRows<NativeWord>, i32)> {
-    RoundedRows::<NativeWord>::new(p, z, area, y, short_sides)
-}
-
-/// The depth walk of a solid triangle into u16 depth on row `y`, as
-/// [`ColorDepth`]'s row loops in assembly take it: with the `asm` feature on Cortex-M a small
-/// triangle's set up in assembly (`depth_walk`), the others' (and every core's without it) in
-/// Rust, the same walks.
-#[cfg_attr(not(all(feature = "asm", fixed3d_thumb)), allow(dead_code))]
-#[inline(always)]
-fn solid_walk(triangle: &ScreenTriangle, y: i32) -> Option<(RoundedRows<NativeWord>, i32)> {
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
-    if let Some(walk) = core_walk::depth_walk(triangle, y) {
-        return Some((walk, walk.step_x));
-    }
-    let (p, z, area) = (&triangle.p, triangle.z, triangle.area);
-    rounded_rows(p, z, area, y, triangle.short_sides)
-}
-
-/// The depth walk a solid triangle's pixels take in a u16 target (with the `asm` feature on
-/// Cortex-M set up in assembly where it can), for the triangle `p` with depths `z` (Q1.30) on
-/// row `y`: its value at column 0 and its steps along a row and down a column, as words;
-/// `None` for a triangle the pipeline never hands a target (a point beyond its range, a
-/// depth outside [0, 2³⁰], zero area) or whose steps do not fit words. Not a stable API: the
-/// firmware benchmark's check of the assembly against the host's walks, bit for bit.
-#[doc(hidden)]
-#[must_use]
-pub fn solid_depth_walk(p: [ScreenPoint; 3], z: [i32; 3], y: i32) -> Option<[i32; 3]> {
-    let within = |q: &ScreenPoint| {
-        q.x.unsigned_abs() <= PIPELINE_LIMIT as u32 && q.y.unsigned_abs() <= PIPELINE_LIMIT as u32
-    };
-    if !p.iter().all(within) || !z.iter().all(|v| (0..=1 << 30).contains(v)) {
-        return None;
-    }
-    let [a, b, c] = p;
-    let area = doubled_area(a, b, c);
-    if area == 0 {
-        return None;
-    }
-    let short = |u: ScreenPoint, v: ScreenPoint| {
-        is_short(v.x.wrapping_sub(u.x)) && is_short(v.y.wrapping_sub(u.y))
-    };
-    let triangle = ScreenTriangle::new(p, z, area, short(a, b) && short(b, c) && short(a, c));
-    let (walk, _) = solid_walk(&triangle, y)?;
-    Some([walk.row, walk.step_x, walk.step_y].map(LoopWord::to_i32))
-}
-
 /// Something the triangle filler can write spans into: [`ColorDepth`] or [`Direct`].
 pub trait RasterTarget {
     /// The error a write can return.
@@ -171,9 +101,8 @@ pub trait RasterTarget {
 pub struct ColorDepth<'t, 'a, C, D, Q = Nearest, T = Less, K = Counted> {
     color: &'t mut FrameBuffer<'a, C>,
     depth: &'t mut DepthBuffer<'a, D>,
-    /// The frame's pixels the buffers hold (rows from the band's first, every column: the row
-    /// loops in assembly clamp spans to the buffers' columns), found once here rather than for
-    /// each triangle.
+    /// The frame's pixels the buffers hold (rows from the band's first, every column), found once
+    /// here rather than for each triangle.
     clip: PixelRect,
     test: T,
     quantize: Q,
@@ -280,22 +209,14 @@ where
     K: FragmentCount,
 {
     /// Depth-tests the spans of one triangle; `colors_for(span)` gives the colour of each of
-    /// the span's pixels in turn, `solid` the triangle's one colour if it has one.
+    /// the span's pixels in turn.
     #[inline(always)]
     fn depth_tested_spans<G: FnMut() -> C>(
         &mut self,
         triangle: &ScreenTriangle,
         stats: &mut Stats,
-        solid: Option<SolidColor<C>>,
         colors_for: impl FnMut(Span) -> G,
     ) {
-        // On Cortex-M with the `asm` feature the same, its rows set up in assembly too.
-        #[cfg(all(feature = "asm", fixed3d_thumb))]
-        if let Some(bits) = solid.and_then(|s| s.bits()) {
-            if D::unclamped(triangle.max()) && self.solid_triangle(triangle, bits, stats) {
-                return;
-            }
-        }
         let Some(rows) = rows_in_range(triangle.p, self.clip, triangle.area) else {
             return;
         };
@@ -306,24 +227,15 @@ where
         // starts them as the whole frame does.
         let unclamped = if D::unclamped(triangle.max()) {
             let (p, z, area) = (&triangle.p, triangle.z, triangle.area);
-            rounded_rows(p, z, area, y, triangle.short_sides)
+            RoundedRows::<NativeWord>::new(p, z, area, y, triangle.short_sides)
         } else {
             None
         };
         match unclamped {
             Some((walk, st)) => {
-                // With the `asm` feature, a solid colour of 2 bytes into u16 depth takes the
-                // row loop in assembly (rows the pipeline's triangles always have), its edges
-                // set up in the loop's block.
-                #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
-                if let Some(bits) = solid.and_then(|s| s.bits()) {
-                    if self.solid_rows(&rows, &walk, bits, stats) {
-                        return;
-                    }
-                }
                 let spans = rows.spans(columns, u32::MAX);
                 self.each_span(spans, walk, stats, colors_for, |ds, cs, start, g, w| {
-                    D::test_span_unclamped::<C, T, K>(ds, cs, start, st, solid, g, w)
+                    D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w)
                 });
             }
             None => {
@@ -339,73 +251,6 @@ where
                 )
             }
         }
-    }
-
-    /// The row loop in assembly ([`asm_rows::solid_rows`]) into these
-    /// buffers, when the depth format is u16: false where it declines the triangle.
-    #[cfg(all(feature = "asm", fixed3d_asm_rows, not(fixed3d_thumb)))]
-    #[inline(always)]
-    fn solid_rows(
-        &mut self,
-        rows: &TriangleRows,
-        walk: &RoundedRows,
-        bits: u32,
-        stats: &mut Stats,
-    ) -> bool {
-        let width = self.color.width();
-        let Some(depths) = D::u16_cells(self.depth.cells_all_mut()) else {
-            return false;
-        };
-        let colors = self.color.cells_all_mut();
-        asm_rows::solid_rows::<C, T, K, _>(
-            rows,
-            walk,
-            colors,
-            depths,
-            self.clip.y0,
-            width,
-            bits,
-            stats,
-        )
-    }
-
-    /// [`asm_rows::solid_triangle`] into these buffers (the triangle's rows and its depth
-    /// walk set up there), when the depth format is u16: false where it declines the
-    /// triangle, which then takes the general path.
-    #[cfg(all(feature = "asm", fixed3d_thumb))]
-    #[inline(always)]
-    fn solid_triangle(&mut self, triangle: &ScreenTriangle, bits: u32, stats: &mut Stats) -> bool {
-        let width = self.color.width();
-        let Some(depths) = D::u16_cells(self.depth.cells_all_mut()) else {
-            return false;
-        };
-        let colors = self.color.cells_all_mut();
-        asm_rows::solid_triangle::<C, T, K, _>(
-            #[cfg(fixed3d_thumb1)]
-            triangle,
-            &triangle.p,
-            triangle.area,
-            (self.clip.y0, self.clip.y1),
-            // On Cortex-M0 the walk of a small triangle is written into the row loop's block
-            // by the assembly itself, and this is the others'.
-            #[cfg(fixed3d_thumb1)]
-            |y| {
-                rounded_rows(
-                    &triangle.p,
-                    triangle.z,
-                    triangle.area,
-                    y,
-                    triangle.short_sides,
-                )
-            },
-            #[cfg(fixed3d_thumb2)]
-            |y| solid_walk(triangle, y),
-            colors,
-            depths,
-            width,
-            bits,
-            stats,
-        )
     }
 
     /// Runs `test_span(depths, colours, depth at the first pixel, colour source, failures so
@@ -474,17 +319,7 @@ where
         self.clip
     }
 
-    // Held in line on x86-64 with the `asm` feature, where the pipeline's walk takes the
-    // triangle's whole set-up in line (see `Prepared::fill_face`; apart for bench/host.sh's
-    // stage breakdown).
-    #[cfg_attr(
-        all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages)),
-        inline(always)
-    )]
-    #[cfg_attr(
-        not(all(feature = "asm", target_pointer_width = "64", not(fixed3d_stages))),
-        inline
-    )]
+    #[inline]
     fn fill_triangle<P: Paint>(
         &mut self,
         triangle: &ScreenTriangle,
@@ -495,13 +330,11 @@ where
             Some(rgb) if Q::UNIFORM => {
                 // One conversion per triangle.
                 let c = self.quantize.quantize(rgb, 0, 0);
-                self.depth_tested_spans(triangle, stats, Some(SolidColor::new(&c)), |_| {
-                    move || c
-                });
+                self.depth_tested_spans(triangle, stats, |_| move || c);
             }
             _ => {
                 let q = self.quantize;
-                self.depth_tested_spans(triangle, stats, None, |span| {
+                self.depth_tested_spans(triangle, stats, |span| {
                     let mut cursor = paint.cursor(span.x0, span.y);
                     let (mut x, y) = (span.x0, span.y);
                     move || {
@@ -604,8 +437,8 @@ mod tests {
 
     use super::*;
 
-    /// A `ColorDepth`'s clip rectangle spans every column of its buffers, the columns the row
-    /// loops in assembly clamp spans to, for a whole frame and for a band.
+    /// A `ColorDepth`'s clip rectangle spans every column of its buffers, for a whole frame
+    /// and for a band.
     #[test]
     fn r6_color_depth_clips_to_its_buffers_columns() {
         for (w, h, first) in [(1, 1, 0), (320, 16, 32), (7, 3, 1000)] {

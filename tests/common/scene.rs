@@ -1,4 +1,4 @@
-//! The reference scene of bench/SCENE.md, built exactly as written there (f64 vertices, rounded
+//! The reference scene of docs/reference-scene.md, built exactly as written there (f64 vertices, rounded
 //! to Q16.16 once).
 #![allow(dead_code)]
 

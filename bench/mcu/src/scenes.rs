@@ -11,12 +11,9 @@ use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
 use fixed3d::pipeline::{Cull, Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
-use fixed3d::raster::ScreenPoint;
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, FlatKept, Gouraud, Unlit};
-use fixed3d::target::{
-    solid_depth_walk, ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual,
-};
+use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 
 /// Frames per preset (the hash chains over them).
 pub const FRAMES: u32 = 4;
@@ -256,10 +253,9 @@ pub fn full_per_frame(
 /// `clipped`, the strict counted target with the eye so close that the tori cross the near
 /// plane and every side of the screen (spans clamped to the target's columns, polygons cut by
 /// the near plane), then [`random_mesh`] drawn whole (`triangles`) and, shrunk inside every
-/// clip plane, culled to its front faces (`front`), `full`'s vertex stage alone (`vertices`,
-/// see [`torus_vertices`]) and last the depth walks of random screen triangles (`walks`, see
-/// [`random_walks`]).
-pub const VARIANTS: [&str; 9] = [
+/// clip plane, culled to its front faces (`front`), and last `full`'s vertex stage alone
+/// (`vertices`, see [`torus_vertices`]).
+pub const VARIANTS: [&str; 8] = [
     "less",
     "less-counted",
     "less-or-equal",
@@ -268,7 +264,6 @@ pub const VARIANTS: [&str; 9] = [
     "triangles",
     "front",
     "vertices",
-    "walks",
 ];
 
 /// Triangles of the `triangles` variant's mesh ([`random_mesh`]), three vertices each.
@@ -363,9 +358,6 @@ pub fn variant(
     if name == "vertices" {
         return torus_vertices(mesh, f, cache);
     }
-    if name == "walks" {
-        return Some(random_walks(f));
-    }
     let objects = [
         Object::new(mesh, torus_model(f), ORANGE),
         Object::new(mesh, torus_model(f), Rgb888::new(40, 90, 255)),
@@ -402,7 +394,7 @@ pub fn variant(
 
 /// The `vertices` variant: `full`'s torus in frame `f` through the vertex stage alone, the
 /// word a hash of every vertex it left in the cache (its screen position and its depth):
-/// the vertex loop's exact output (with `asm`, in assembly on both cores), of which the
+/// the vertex loop's exact output, of which the
 /// frame's colours show only part (a vertex's depth one unit off changes no colour).
 fn torus_vertices(mesh: &Mesh<'_>, f: u32, cache: &mut [ScreenVertex]) -> Option<u32> {
     let objects = [Object::new(mesh, torus_model(f), ORANGE)];
@@ -416,45 +408,6 @@ fn torus_vertices(mesh: &Mesh<'_>, f: u32, cache: &mut [ScreenVertex]) -> Option
         h.write(v.depth() as u32);
     }
     Some(h.0)
-}
-
-/// The `walks` variant: the depth walks a u16 target's solid triangles take
-/// (`solid_depth_walk`: with `asm` on Cortex-M set up in assembly where they can) of 300
-/// random screen triangles for frame `f`, small, medium and large in turn (the large ones
-/// beyond what the assembly takes, so that the Rust set-up answers), with depths near each
-/// other or anywhere in [0, 2³⁰], each at its first row and two others: a hash of every
-/// word, which the frames show only in part (a walk one unit off changes few depths).
-fn random_walks(f: u32) -> u32 {
-    let mut x = 0x9E37_79B9u32 ^ f.wrapping_mul(0x85EB_CA6B);
-    let mut next = move || {
-        x ^= x << 13;
-        x ^= x >> 17;
-        x ^= x << 5;
-        x
-    };
-    // A random value within ±`r`.
-    let mut within = |r: u32| (next() % (2 * r + 1)) as i32 - r as i32;
-    let mut h = Fnv::new();
-    for k in 0..300u32 {
-        let span = [1 << 6, 1 << 9, 1 << 13][k as usize % 3];
-        let (cx, cy) = (within(1 << 13), within(1 << 13));
-        let p = [0; 3].map(|_| ScreenPoint::new(cx + within(span), cy + within(span)));
-        let z0 = within(1 << 29) + (1 << 29);
-        let z = if k % 2 == 0 {
-            [0; 3].map(|_| (z0 + within(1 << 16)).clamp(0, 1 << 30))
-        } else {
-            [0; 3].map(|_| within(1 << 29) + (1 << 29))
-        };
-        let top = p.iter().map(|q| q.y).min().unwrap_or(0);
-        let first = (top + 7) >> 4;
-        for y in [first, first + 3, first - 5] {
-            let walk = solid_depth_walk(p, z, y).unwrap_or([-1; 3]);
-            for w in walk {
-                h.write(w as u32);
-            }
-        }
-    }
-    h.0
 }
 
 /// The `triangles` variant: [`random_mesh`] turned by frame `f` about x, both windings drawn

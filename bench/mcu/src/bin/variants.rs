@@ -3,14 +3,10 @@
 //! into each frame's hash, then once more from so near (`clipped`) that the near plane cuts
 //! triangles and spans reach every side of the screen, and last 600 random triangles of every
 //! row set-up case into a band (`triangles`, see `scenes::random_mesh`): every u16 row and
-//! pixel loop the library has (Rust, and with the `asm` feature its Thumb-2 variants and
-//! row set-up on the Cortex-M4F, its Thumb-1 loop on the M0) checked against the host's
-//! (`tests/firmware.rs`); and the same random triangles shrunk inside every clip plane and
-//! culled to their front faces (`front`, every count in its hash), the triangle walk each
-//! core takes in assembly with `asm`; and `full`'s vertex stage alone (`vertices`, a hash
-//! of every vertex's position and depth), its vertex loop on either core in assembly with
-//! `asm`; and the depth walks of random screen triangles (`walks`, every word), which each
-//! core sets up in assembly with `asm` for small ones. Not in footprint.md's table.
+//! pixel loop each core compiles, checked against the host's (`tests/firmware.rs`); and the
+//! same random triangles shrunk inside every clip plane and culled to their front faces
+//! (`front`, every count in its hash); and `full`'s vertex stage alone (`vertices`, a hash of
+//! every vertex's position and depth). Not in footprint.md's table.
 #![no_std]
 #![no_main]
 
