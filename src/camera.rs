@@ -7,8 +7,8 @@
 
 use core::fmt;
 
-use crate::math::{normalize, shr_round, Angle, Mat4, Scalar, Vec3, UNIT_ONE};
-use crate::projection::Projection;
+use crate::math::{normalize, shr_round, Angle, Mat4, Number, Scalar, Vec3, UNIT_ONE};
+use crate::projection::{Projection, ProjectionError, Viewport};
 
 /// Why a camera could not build its view matrix.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -324,5 +324,119 @@ impl Framing {
             near: Scalar::from_bits(sat(near)),
             far: Scalar::from_bits(sat(far)),
         })
+    }
+}
+
+/// How a [`Camera`] projects: a perspective or orthographic lens.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum Lens {
+    Perspective {
+        fov_y: Angle,
+        near: Scalar,
+        far: Scalar,
+    },
+    Orthographic {
+        height: Scalar,
+        near: Scalar,
+        far: Scalar,
+    },
+}
+
+/// Where the camera stands and looks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum Placement {
+    LookAt(LookAt),
+    View(Mat4),
+}
+
+/// A camera as the [`Renderer`](crate::render::Renderer) takes it: a lens and a placement.
+/// The aspect ratio is not part of it: the renderer takes it from the display it draws into,
+/// so the two cannot disagree. Bad values (a zero field of view, the far plane not beyond the
+/// near one, the eye at the target) are reported when a frame is drawn, by
+/// [`projection`](Self::projection) and [`view`](Self::view).
+///
+/// ```
+/// use fixed3d::camera::Camera;
+/// use fixed3d::projection::Viewport;
+/// let camera = Camera::perspective(60, 1, 10).looking_at([0, 1, 4], [0, 0, 0]);
+/// let viewport = Viewport::new(320, 240).unwrap();
+/// assert!(camera.view().is_ok());
+/// assert!(camera.projection(&viewport).is_ok());
+/// // The far plane must lie beyond the near one:
+/// assert!(Camera::perspective(60, 10, 1).projection(&viewport).is_err());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Camera {
+    lens: Lens,
+    placement: Placement,
+}
+
+impl Camera {
+    /// A perspective camera with a vertical field of view of `fov_y_degrees` and near and far
+    /// planes at those distances, at the origin looking down −Z until placed.
+    #[must_use]
+    pub fn perspective(fov_y_degrees: impl Number, near: impl Number, far: impl Number) -> Self {
+        Camera {
+            lens: Lens::Perspective {
+                fov_y: Angle::degrees(fov_y_degrees),
+                near: near.to_scalar(),
+                far: far.to_scalar(),
+            },
+            placement: Placement::View(Mat4::IDENTITY),
+        }
+    }
+
+    /// An orthographic camera showing a box `height` units tall (as wide as the display's
+    /// aspect makes it), from `near` to `far`.
+    #[must_use]
+    pub fn orthographic(height: impl Number, near: impl Number, far: impl Number) -> Self {
+        Camera {
+            lens: Lens::Orthographic {
+                height: height.to_scalar(),
+                near: near.to_scalar(),
+                far: far.to_scalar(),
+            },
+            placement: Placement::View(Mat4::IDENTITY),
+        }
+    }
+
+    /// This camera at `eye`, looking at `target`, with +Y up.
+    #[must_use]
+    pub fn looking_at(self, eye: impl Into<Vec3>, target: impl Into<Vec3>) -> Self {
+        let look = LookAt::new(eye.into(), target.into(), Vec3::Y);
+        Camera {
+            placement: Placement::LookAt(look),
+            ..self
+        }
+    }
+
+    /// This camera placed by a view matrix (world to view), e.g. a [`FlyCamera`]'s.
+    #[must_use]
+    pub fn with_view(self, view: Mat4) -> Self {
+        Camera {
+            placement: Placement::View(view),
+            ..self
+        }
+    }
+
+    /// The view matrix (world to view).
+    pub fn view(&self) -> Result<Mat4, CameraError> {
+        match self.placement {
+            Placement::LookAt(look) => look.view(),
+            Placement::View(m) => Ok(m),
+        }
+    }
+
+    /// The projection for `viewport`, whose aspect ratio it takes.
+    pub fn projection(&self, viewport: &Viewport) -> Result<Projection, ProjectionError> {
+        let aspect = viewport.aspect();
+        match self.lens {
+            Lens::Perspective { fov_y, near, far } => {
+                Projection::perspective(fov_y, aspect, near, far)
+            }
+            Lens::Orthographic { height, near, far } => {
+                Projection::orthographic(height, aspect, near, far)
+            }
+        }
     }
 }

@@ -25,6 +25,21 @@ pub mod obj;
 pub mod pipeline;
 pub mod projection;
 pub mod raster;
+pub mod render;
 pub mod scene;
 pub mod shade;
 pub mod target;
+
+pub use camera::Camera;
+pub use render::{Model, Renderer, Shade, Storage, Style, Wireframe};
+pub use scene::Light;
+
+/// The names of the common path, for `use fixed3d::prelude::*`: the renderer and what it
+/// takes, the built-in shapes, and the number types of their arguments.
+pub mod prelude {
+    pub use crate::camera::Camera;
+    pub use crate::math::{Angle, Number, Scalar, Vec3};
+    pub use crate::mesh::{Mesh, CUBE, OCTAHEDRON, TETRAHEDRON};
+    pub use crate::render::{Model, RenderError, Renderer, Shade, Storage, Style, Wireframe};
+    pub use crate::scene::Light;
+}

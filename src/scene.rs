@@ -8,7 +8,7 @@ use core::fmt;
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-use crate::math::{is_scaled_rotation, normalize, Scalar, Vec3};
+use crate::math::{is_scaled_rotation, normalize, Number, Scalar, Vec3};
 use crate::mesh::Object;
 
 /// The colour and intensity of a light: one [`Scalar`] per channel, 1.0 is full strength
@@ -60,6 +60,67 @@ impl LightColor {
 /// True for a channel (raw Q16.16) in [0, 1].
 const fn unit_channel(c: i64) -> bool {
     0 <= c && c <= 1 << 16
+}
+
+impl<T: Number> From<T> for LightColor {
+    /// White light of this intensity (see [`Number`]).
+    ///
+    /// ```
+    /// use fixed3d::scene::LightColor;
+    /// assert_eq!(LightColor::from(1), LightColor::WHITE);
+    /// ```
+    fn from(intensity: T) -> Self {
+        LightColor::gray(intensity.to_scalar())
+    }
+}
+
+impl From<Rgb888> for LightColor {
+    /// Light of this colour at full strength.
+    fn from(c: Rgb888) -> Self {
+        LightColor::from_rgb888(c, Scalar::ONE)
+    }
+}
+
+/// A light of a scene, as the [`Renderer`](crate::render::Renderer) takes them: a slice of
+/// ambient and directional lights. Ambient lights add up.
+///
+/// ```
+/// use fixed3d::scene::Light;
+/// let lights = [Light::ambient(0.2), Light::directional([-1, 1, 1], 0.8)];
+/// # let _ = lights;
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Light {
+    /// Light from everywhere, added to every surface whatever its facing.
+    Ambient(LightColor),
+    /// Light from far away: `towards` is the direction from a surface to the light (any
+    /// length but zero).
+    Directional {
+        /// From the surface towards the light.
+        towards: Vec3,
+        /// Its colour and strength.
+        color: LightColor,
+    },
+}
+
+impl Light {
+    /// An ambient light: a number for white light of that strength, an `Rgb888`, or a
+    /// [`LightColor`].
+    #[must_use]
+    pub fn ambient(color: impl Into<LightColor>) -> Self {
+        Light::Ambient(color.into())
+    }
+
+    /// A directional light shining from direction `towards` (from the surface to the light:
+    /// `[-1, 1, 1]` is up, left and in front of a camera on +z).
+    #[must_use]
+    pub fn directional(towards: impl Into<Vec3>, color: impl Into<LightColor>) -> Self {
+        Light::Directional {
+            towards: towards.into(),
+            color: color.into(),
+        }
+    }
 }
 
 /// A light infinitely far away, shining along `-direction`.
@@ -160,6 +221,36 @@ impl<const N: usize> Lighting<N> {
         self.grey &= r == g && g == b;
         self.words &= self.grey && unit_channel(r);
         Ok(())
+    }
+
+    /// The lighting of a slice of [`Light`]s: the ambient lights summed (each channel
+    /// saturated), the directional ones in order. [`LightError::Full`] when there are more
+    /// than `N` directional lights, [`LightError::ZeroDirection`] for a zero direction.
+    ///
+    /// ```
+    /// use fixed3d::scene::{Light, LightError, Lighting};
+    /// let lights = [Light::ambient(0.2), Light::directional([0, 0, 1], 0.8)];
+    /// assert_eq!(Lighting::<1>::from_lights(&lights).map(|l| l.len()), Ok(1));
+    /// assert_eq!(Lighting::<0>::from_lights(&lights).err(), Some(LightError::Full));
+    /// ```
+    pub fn from_lights(lights: &[Light]) -> Result<Self, LightError> {
+        let ambient = lights
+            .iter()
+            .fold(LightColor::BLACK, |sum, light| match light {
+                Light::Ambient(c) => LightColor::new(
+                    sum.r.saturating_add(c.r),
+                    sum.g.saturating_add(c.g),
+                    sum.b.saturating_add(c.b),
+                ),
+                Light::Directional { .. } => sum,
+            });
+        let mut lighting = Lighting::new(ambient);
+        for light in lights {
+            if let Light::Directional { towards, color } = *light {
+                lighting.push(DirectionalLight::new(towards, color))?;
+            }
+        }
+        Ok(lighting)
     }
 
     /// The ambient colour.

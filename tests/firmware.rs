@@ -12,7 +12,7 @@ use embedded_graphics::geometry::Size;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
 use fixed3d::math::Vec3;
 use fixed3d::mesh::FaceNormal;
-use fixed3d::pipeline::ScreenVertex;
+use fixed3d::pipeline::{Bin, ScreenVertex};
 use scenes::*;
 
 fn frame_hash(fb: &[Rgb565]) -> u32 {
@@ -111,12 +111,19 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     }
     let rows = (W * BAND_ROWS) as usize;
     let (mut band, mut band_depth) = (vec![Rgb565::BLACK; rows], vec![0u16; rows]);
-    let bands_hash =
-        chain(|f| bands(&mesh, f, &mut cache, &mut band, &mut band_depth).unwrap_or(0));
+    let mut bins = vec![Bin::EMPTY; BAND_BINS];
+    let mut banded = |f, cache: &mut [ScreenVertex]| {
+        let (b, d) = (&mut bins, &mut band_depth);
+        bands(&mesh, f, cache, b, &mut band, d, &mut NoDisplay, &mut |w| {
+            w()
+        })
+        .unwrap_or(0)
+    };
+    let bands_hash = chain(|f| banded(f, &mut cache));
     let mono_n = (MONO_W * MONO_H) as usize;
     let (mut mono_px, mut mono_depth) = (vec![BinaryColor::Off; mono_n], vec![0u16; mono_n]);
     let display_chain = chain(|f| {
-        let colour = bands(&mesh, f, &mut cache, &mut band, &mut band_depth).unwrap_or(0);
+        let colour = banded(f, &mut cache);
         mono(&mesh, f, &mut cache, &mut mono_px, &mut mono_depth);
         display_hash(colour, mono_hash(&mono_px))
     });

@@ -30,6 +30,16 @@ for line in doc.read_text().split("\n"):
         flash = rows[(m.group(1), "thumbv6m-none-eabi")][0]
         status = "reached" if flash <= int(m.group(2)) * 1024 else "not reached"
         line = f"| thumbv6m library flash, `{m.group(1)}` at most {m.group(2)} KiB | {flash:,} B | {status} |"
+    m = re.match(r"^\| `full` instructions per frame on (thumbv6m|thumbv7em) at most ([\d.]+) M \| .* \| .* \|$", line)
+    if m and ("full", triples[m.group(1)]) in rows:
+        n = rows[("full", triples[m.group(1)])][3]
+        status = "reached" if n <= float(m.group(2)) * 1e6 else "not reached"
+        line = f"| `full` instructions per frame on {m.group(1)} at most {m.group(2)} M | {n:,} | {status} |"
+    m = re.match(r"^\| `bands` at most 1.25x `full` on (thumbv6m|thumbv7em) \| .* \| .* \|$", line)
+    if m and ("bands", triples[m.group(1)]) in rows and ("full", triples[m.group(1)]) in rows:
+        ratio = rows[("bands", triples[m.group(1)])][3] / rows[("full", triples[m.group(1)])][3]
+        status = "reached" if ratio <= 1.25 else "not reached"
+        line = f"| `bands` at most 1.25x `full` on {m.group(1)} | {ratio:.2f}x | {status} |"
     out.append(line)
 doc.write_text("\n".join(out))
 print(f"updated {doc} from {len(rows)} results")

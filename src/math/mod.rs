@@ -10,6 +10,7 @@ mod angle;
 mod divide;
 mod matrix;
 mod methods;
+mod number;
 mod scalar;
 mod sqrt;
 mod vector;
@@ -19,6 +20,7 @@ pub use matrix::Mat4;
 pub(crate) use matrix::{is_scaled_rotation, product3};
 pub(crate) use methods::NewtonDirection;
 pub use methods::{Normalize, Trig};
+pub use number::Number;
 pub use scalar::{Scalar, Unit, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 pub use vector::Vec3;
 

@@ -3,7 +3,7 @@
 use core::cell::Cell;
 
 use embedded_graphics::draw_target::DrawTarget;
-use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::Pixel;
 
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
@@ -14,7 +14,9 @@ use crate::mesh::{FaceNormal, Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
-use crate::target::{RasterTarget, ScreenTriangle};
+use crate::target::{
+    ColorDepth, DepthFormat, DepthTest, FragmentCount, Quantize, RasterTarget, ScreenTriangle,
+};
 
 /// The vertex colours handed to shadings that do not interpolate them.
 const NO_COLORS: [[i32; 3]; 3] = [[0; 3]; 3];
@@ -79,6 +81,32 @@ const NO_CULL: u8 = 2;
 /// The frame's mode, read at run time.
 const ANY_CULL: u8 = 3;
 
+/// A triangle of a prepared frame that may cover pixels, with the rows it may touch: a
+/// frame drawn in bands is binned once, so that each band reads only the triangles that touch
+/// its rows. Storage for them is the caller's (see [`Storage`](crate::render::Storage)).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Bin {
+    triangle: u32,
+    object: u16,
+    top: u16,
+    bottom: u16,
+}
+
+impl Bin {
+    /// An unused entry (storage is overwritten before it is read).
+    pub const EMPTY: Bin = Bin {
+        triangle: 0,
+        object: 0,
+        top: 0,
+        bottom: 0,
+    };
+
+    /// The tag of the objects whose triangle this is (see `Prepared::bin`).
+    pub(crate) fn object(&self) -> u16 {
+        self.object
+    }
+}
+
 /// Per-object constants for drawing.
 struct ObjectSetup<'o, const N: usize> {
     object: &'o Object<'o>,
@@ -107,6 +135,20 @@ struct ObjectSetup<'o, const N: usize> {
 }
 
 impl<const N: usize> ObjectSetup<'_, N> {
+    /// The cached vertices of triangle `tri`; `None` if an index refers to no vertex.
+    #[inline(always)]
+    fn corners(&self, tri: &Triangle) -> Option<[&ScreenVertex; 3]> {
+        let v = self.vertices;
+        match (
+            v.get(tri[0] as usize),
+            v.get(tri[1] as usize),
+            v.get(tri[2] as usize),
+        ) {
+            (Some(a), Some(b), Some(c)) => Some([a, b, c]),
+            _ => None,
+        }
+    }
+
     fn clip_from_model(&self) -> Mat4 {
         if let Some(m) = self.clip_from_model.get() {
             return m;
@@ -206,7 +248,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         })
     }
 
-    /// Fills every triangle of the scene into `target` (a [`ColorDepth`](crate::target::ColorDepth)
+    /// Fills every triangle of the scene into `target` (a [`ColorDepth`]
     /// frame or band, or a [`Direct`](crate::target::Direct) draw target). Returns what was
     /// drawn, or the target's first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
@@ -245,61 +287,187 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             add_count(&mut stats.primitives, triangles.len());
             let inside = setup.inside;
             for (k, tri) in triangles.iter().enumerate() {
-                let (Some(a), Some(b), Some(c)) = (
-                    setup.vertices.get(tri[0] as usize),
-                    setup.vertices.get(tri[1] as usize),
-                    setup.vertices.get(tri[2] as usize),
-                ) else {
+                self.triangle(target, &setup, (k, tri), inside, cull, &map, &mut stats)?;
+            }
+        }
+        Ok(stats)
+    }
+
+    /// One triangle of the walk: fetched, tested against the clip planes (unless its object is
+    /// `inside` them all), culled, clipped where it crosses a plane, shaded and filled.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn triangle<T: RasterTarget>(
+        &self,
+        target: &mut T,
+        setup: &ObjectSetup<'_, N>,
+        (k, tri): (usize, &Triangle),
+        inside: bool,
+        cull: Cull,
+        map: &ScreenMap,
+        stats: &mut Stats,
+    ) -> Result<(), T::Error> {
+        let Some([a, b, c]) = setup.corners(tri) else {
+            bump(&mut stats.invalid);
+            return Ok(());
+        };
+        // Inside every plane first (the usual case), then outside one of them. An
+        // object that `prepare` found inside every plane reads no outcode (the frame
+        // 0.4% fewer instructions on the Cortex-M4F, 0.35% on the M0, 0.7% on x86-64;
+        // for wireframes the same test measured slower on the M4).
+        if inside || a.outcode | b.outcode | c.outcode == 0 {
+            // Culled before anything else is gathered: half the triangles of a closed
+            // mesh end here.
+            let area = inside_area2(&[a.point(), b.point(), c.point()]);
+            if !kept(cull, area, stats) {
+                return Ok(());
+            }
+            // Written out: at the firmware's opt-level "s" `array::map` stays a loop.
+            let v = [(a.point(), a.z), (b.point(), b.z), (c.point(), c.z)];
+            // Vertex colours matter only to per-vertex shading: the others share one
+            // array of zeros, which no triangle stores (Cortex-M4: 1% of the frame).
+            let lit;
+            let colors = if S::PER_VERTEX {
+                let rgb = |v: &ScreenVertex| map3(v.rgb, |c| (c as i32) << 8);
+                lit = [rgb(a), rgb(b), rgb(c)];
+                &lit
+            } else {
+                &NO_COLORS
+            };
+            // Every side short (see `inside_area2`): what only Cortex-M0 reads (false
+            // elsewhere, as from the clipper, so the compiler drops the argument: as
+            // true everywhere it cost the M4 0.13% of its frame).
+            let short_sides = NARROW_CORE;
+            self.fill_face(
+                target,
+                setup,
+                (Self::face_normal(setup, k), tri),
+                &v,
+                colors,
+                area,
+                short_sides,
+                stats,
+            )?;
+            return Ok(());
+        }
+        if a.outcode & b.outcode & c.outcode != 0 {
+            bump(&mut stats.outside);
+            return Ok(());
+        }
+        let planes = a.outcode | b.outcode | c.outcode;
+        self.fill_clipped(target, setup, (k, tri), planes, map, stats)
+    }
+
+    /// Bins the frame: every triangle that may cover a pixel goes into `bins` (from `*len` on)
+    /// with the rows it may touch, tagged `tag` plus its object's index in the scene; invalid,
+    /// outside, culled and degenerate ones and those that cover no pixel row are counted in
+    /// `stats` instead. A triangle that crosses a clip plane is binned for every row (its
+    /// clipping and culling wait for the draw). False when `bins` is full: the frame must then
+    /// be drawn by [`draw`](Self::draw) for every band.
+    pub(crate) fn bin(
+        &self,
+        tag: u16,
+        bins: &mut [Bin],
+        len: &mut usize,
+        stats: &mut Stats,
+    ) -> bool {
+        let cull = self.frame.cull;
+        for (j, setup) in self.objects(false).enumerate() {
+            let object = tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX));
+            let triangles = setup.object.mesh.triangles();
+            add_count(&mut stats.primitives, triangles.len());
+            for (k, tri) in triangles.iter().enumerate() {
+                let Some([a, b, c]) = setup.corners(tri) else {
                     bump(&mut stats.invalid);
                     continue;
                 };
-                // Inside every plane first (the usual case), then outside one of them. An
-                // object that `prepare` found inside every plane reads no outcode (the frame
-                // 0.4% fewer instructions on the Cortex-M4F, 0.35% on the M0, 0.7% on x86-64;
-                // for wireframes the same test measured slower on the M4).
-                if inside || a.outcode | b.outcode | c.outcode == 0 {
-                    // Culled before anything else is gathered: half the triangles of a closed
-                    // mesh end here.
-                    let area = inside_area2(&[a.point(), b.point(), c.point()]);
-                    if !kept(cull, area, &mut stats) {
+                let rows = if setup.inside || a.outcode | b.outcode | c.outcode == 0 {
+                    let p = [a.point(), b.point(), c.point()];
+                    if !kept(cull, inside_area2(&p), stats) {
                         continue;
                     }
-                    // Written out: at the firmware's opt-level "s" `array::map` stays a loop.
-                    let v = [(a.point(), a.z), (b.point(), b.z), (c.point(), c.z)];
-                    // Vertex colours matter only to per-vertex shading: the others share one
-                    // array of zeros, which no triangle stores (Cortex-M4: 1% of the frame).
-                    let lit;
-                    let colors = if S::PER_VERTEX {
-                        let rgb = |v: &ScreenVertex| map3(v.rgb, |c| (c as i32) << 8);
-                        lit = [rgb(a), rgb(b), rgb(c)];
-                        &lit
-                    } else {
-                        &NO_COLORS
-                    };
-                    // Every side short (see `inside_area2`): what only Cortex-M0 reads (false
-                    // elsewhere, as from the clipper, so the compiler drops the argument: as
-                    // true everywhere it cost the M4 0.13% of its frame).
-                    let short_sides = NARROW_CORE;
-                    self.fill_face(
-                        target,
-                        &setup,
-                        (Self::face_normal(&setup, k), tri),
-                        &v,
-                        colors,
-                        area,
-                        short_sides,
-                        &mut stats,
-                    )?;
-                    continue;
-                }
-                if a.outcode & b.outcode & c.outcode != 0 {
+                    // Rows whose centres (16·row + 8) lie in [min y, max y): see `rows_overlap`.
+                    let ymin = p.iter().map(|q| q.y).min().unwrap_or(0);
+                    let ymax = p.iter().map(|q| q.y).max().unwrap_or(0);
+                    let first = crate::raster::first_centre_from(ymin as i64);
+                    let end = crate::raster::first_centre_from(ymax as i64);
+                    let row = |r: i64| r.clamp(0, u16::MAX as i64) as u16;
+                    if end <= first.max(0) || first > u16::MAX as i64 {
+                        continue;
+                    }
+                    (row(first), row(end - 1))
+                } else if a.outcode & b.outcode & c.outcode != 0 {
                     bump(&mut stats.outside);
                     continue;
-                }
-                let planes = a.outcode | b.outcode | c.outcode;
-                self.fill_clipped(target, &setup, (k, tri), planes, &map, &mut stats)?;
+                } else {
+                    bump(&mut stats.clipped);
+                    (0, u16::MAX)
+                };
+                let Some(slot) = bins.get_mut(*len) else {
+                    return false;
+                };
+                *slot = Bin {
+                    triangle: u32::try_from(k).unwrap_or(u32::MAX),
+                    object,
+                    top: rows.0,
+                    bottom: rows.1,
+                };
+                *len += 1;
             }
         }
+        true
+    }
+
+    /// Fills the triangles of `bins` tagged for this frame (`tag` plus an object's index, as
+    /// [`bin`](Self::bin) wrote them) whose rows meet the target's. Counts only what it draws
+    /// (`drawn`, `fragments`, `written`): the rest was counted when binning.
+    pub(crate) fn draw_binned<T: RasterTarget>(
+        &self,
+        target: &mut T,
+        tag: u16,
+        bins: &[Bin],
+    ) -> Result<Stats, T::Error> {
+        let clip = target.clip();
+        let (y0, y1) = (clip.y0, clip.y1);
+        let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
+        let band = y0 > 0 || y1 < self.frame.viewport.height() as i32;
+        let mut stats = Stats::default();
+        // Counts of a triangle's second look (clipped again, culled after clipping) go here.
+        let mut again = Stats::default();
+        let mut current: Option<(u16, ObjectSetup<'_, N>)> = None;
+        for bin in bins {
+            if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
+                continue;
+            }
+            let Some(j) = bin.object.checked_sub(tag) else {
+                continue;
+            };
+            if current.as_ref().is_none_or(|(o, _)| *o != bin.object) {
+                current = self
+                    .objects(band)
+                    .nth(j as usize)
+                    .map(|setup| (bin.object, setup));
+            }
+            let Some((_, setup)) = &current else {
+                continue;
+            };
+            let k = bin.triangle as usize;
+            let Some(tri) = setup.object.mesh.triangles().get(k) else {
+                continue;
+            };
+            self.triangle(
+                target,
+                setup,
+                (k, tri),
+                setup.inside,
+                self.frame.cull,
+                &map,
+                &mut again,
+            )?;
+        }
+        stats.drawn = again.drawn;
+        stats.fragments = again.fragments;
+        stats.written = again.written;
         Ok(stats)
     }
 
@@ -432,12 +600,33 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         D: DrawTarget,
         D::Color: From<Rgb888>,
     {
-        let mut stats = Stats::default();
         let clip = PixelRect::from_rectangle(&target.bounding_box());
+        self.wireframe(&mut Plain { target, clip })
+    }
+
+    /// [`draw_wireframe`](Self::draw_wireframe) into a z-buffered target: each line's pixels
+    /// depth-tested against what the target holds (its stats count only what it draws).
+    pub(crate) fn draw_wireframe_tested<T: LineSink>(
+        &self,
+        target: &mut T,
+    ) -> Result<Stats, T::Error> {
+        let mut all = self.wireframe(target)?;
+        all.primitives = 0;
+        all.invalid = 0;
+        all.outside = 0;
+        all.clipped = 0;
+        all.culled = 0;
+        all.degenerate = 0;
+        Ok(all)
+    }
+
+    /// The wireframe walk, into any [`LineSink`].
+    fn wireframe<L: LineSink>(&self, target: &mut L) -> Result<Stats, L::Error> {
+        let mut stats = Stats::default();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
         for setup in self.objects(false) {
-            let color = D::Color::from(setup.object.color);
-            let mut segment = |i: u16, j: u16, stats: &mut Stats| -> Result<(), D::Error> {
+            let color = target.color(setup.object.color);
+            let mut segment = |i: u16, j: u16, stats: &mut Stats| -> Result<(), L::Error> {
                 let (Some(a), Some(b)) = (
                     setup.vertices.get(i as usize),
                     setup.vertices.get(j as usize),
@@ -450,7 +639,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     return Ok(());
                 }
                 let (pa, pb) = if a.outcode | b.outcode == 0 {
-                    (a.point(), b.point())
+                    ((a.point(), a.z), (b.point(), b.z))
                 } else {
                     bump(&mut stats.clipped);
                     let Some((ca, cb)) = clip_segment(
@@ -461,18 +650,13 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     ) else {
                         return Ok(());
                     };
-                    let (Some((pa, _)), Some((pb, _))) = (project(ca.c, &map), project(cb.c, &map))
-                    else {
+                    let (Some(pa), Some(pb)) = (project(ca.c, &map), project(cb.c, &map)) else {
                         return Ok(());
                     };
                     (pa, pb)
                 };
                 bump(&mut stats.drawn);
-                let pixels = line_pixels(pa, pb, clip);
-                let n = pixels.len() as u32;
-                stats.fragments = stats.fragments.saturating_add(n);
-                stats.written = stats.written.saturating_add(n);
-                target.draw_iter(pixels.map(|p| Pixel(p, color)))
+                target.line(pa, pb, color, stats)
             };
             if let Some(edges) = setup.object.mesh.edges() {
                 add_count(&mut stats.primitives, edges.len());
@@ -509,6 +693,86 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             }
         }
         Ok(stats)
+    }
+}
+
+/// Where the wireframe walk puts its lines: any `DrawTarget` as it is ([`Plain`]), or a
+/// z-buffered target that depth-tests each pixel.
+pub(crate) trait LineSink {
+    /// The error a write can return.
+    type Error;
+    /// A colour as the lines take it (converted once per object).
+    type Color: Copy;
+    /// `rgb` as the lines take it.
+    fn color(&self, rgb: Rgb888) -> Self::Color;
+    /// Draws the line from `a` to `b` (snapped position and Q1.30 depth), counting its
+    /// fragments and writes.
+    fn line(
+        &mut self,
+        a: (ScreenPoint, i32),
+        b: (ScreenPoint, i32),
+        color: Self::Color,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error>;
+}
+
+/// A `DrawTarget` taking lines with no depth test, clipped to its bounding box.
+struct Plain<'t, D> {
+    target: &'t mut D,
+    clip: PixelRect,
+}
+
+impl<D> LineSink for Plain<'_, D>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    type Error = D::Error;
+    type Color = D::Color;
+
+    fn color(&self, rgb: Rgb888) -> D::Color {
+        D::Color::from(rgb)
+    }
+
+    fn line(
+        &mut self,
+        (a, _): (ScreenPoint, i32),
+        (b, _): (ScreenPoint, i32),
+        color: D::Color,
+        stats: &mut Stats,
+    ) -> Result<(), D::Error> {
+        let pixels = line_pixels(a, b, self.clip);
+        let n = pixels.len() as u32;
+        stats.fragments = stats.fragments.saturating_add(n);
+        stats.written = stats.written.saturating_add(n);
+        self.target.draw_iter(pixels.map(|p| Pixel(p, color)))
+    }
+}
+
+impl<C, D, Q, T, K> LineSink for ColorDepth<'_, '_, C, D, Q, T, K>
+where
+    C: PixelColor + From<Rgb888>,
+    D: DepthFormat,
+    Q: Quantize<C>,
+    T: DepthTest,
+    K: FragmentCount,
+{
+    type Error = core::convert::Infallible;
+    type Color = Rgb888;
+
+    fn color(&self, rgb: Rgb888) -> Rgb888 {
+        rgb
+    }
+
+    fn line(
+        &mut self,
+        a: (ScreenPoint, i32),
+        b: (ScreenPoint, i32),
+        color: Rgb888,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error> {
+        self.depth_line(a, b, color, stats);
+        Ok(())
     }
 }
 

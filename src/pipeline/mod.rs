@@ -21,6 +21,7 @@ mod draw;
 mod precision;
 mod vertex;
 
+pub use draw::Bin;
 pub use precision::{MatrixFormat, Precision};
 pub use vertex::ScreenVertex;
 
@@ -328,6 +329,31 @@ pub struct Prepared<'s, 'c, const N: usize, S> {
     shading: S,
     /// Bit k set: every vertex of object k (of the first 64) lies inside every clip plane.
     inside: u64,
+}
+
+impl<'s, 'c, const N: usize, S> Prepared<'s, 'c, N, S> {
+    /// A frame `prepare` made before, drawn again from its cache: `inside` is what its
+    /// [`inside_bits`](Self::inside_bits) were, `scene` and `shading` what it was given.
+    pub(crate) fn resume(
+        frame: Frame,
+        scene: &'s Scene<'s, N>,
+        cache: &'c [ScreenVertex],
+        shading: S,
+        inside: u64,
+    ) -> Self {
+        Prepared {
+            frame,
+            scene,
+            cache,
+            shading,
+            inside,
+        }
+    }
+
+    /// Bit k set: every vertex of object k (of the first 64) lies inside every clip plane.
+    pub(crate) fn inside_bits(&self) -> u64 {
+        self.inside
+    }
 }
 
 impl<const N: usize, S> Prepared<'_, '_, N, S> {

@@ -5,13 +5,15 @@
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{BinaryColor, IntoStorage, Rgb565, Rgb888, RgbColor};
+use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Pixel;
-use fixed3d::camera::LookAt;
+use fixed3d::camera::{Camera, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
-use fixed3d::pipeline::{Cull, Frame, Prepared, ScreenVertex, Stats};
+use fixed3d::pipeline::{Bin, Cull, Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
-use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
+use fixed3d::render::{Model, Renderer};
+use fixed3d::scene::{DirectionalLight, Light, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, FlatKept, Gouraud, Unlit};
 use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 
@@ -515,47 +517,127 @@ pub fn gouraud(
     depth_frame(frame(W, H)?, &scene, Gouraud, cache, color, depth)
 }
 
-/// `bands`: the `full` frame drawn band by band through small buffers; each band is hashed as
-/// it would be sent to the display, so the hash equals `full`'s.
-pub fn bands(
+/// `bands`: `full`'s torus drawn by the [`Renderer`] through `BAND_ROWS`-row buffers into
+/// `display`, each band sent with one `fill_contiguous` whose colours are hashed on their way
+/// (the frame's hash, as [`frame_hash`] gives it for `full`). Each band's write runs inside
+/// `exclude`: the `bands` firmware leaves it out of the count (a real display takes the band
+/// by DMA, and `full` leaves out its clears alike); the `display` firmware counts it.
+#[allow(clippy::too_many_arguments)]
+pub fn bands<D: DrawTarget<Color = Rgb565>>(
     mesh: &Mesh<'_>,
     f: u32,
-    cache: &mut [ScreenVertex],
+    vertices: &mut [ScreenVertex],
+    bins: &mut [Bin],
     color: &mut [Rgb565],
     depth: &mut [u16],
+    display: &mut D,
+    exclude: &mut dyn FnMut(&mut dyn FnMut()),
 ) -> Option<u32> {
-    bands_into(mesh, f, cache, color, depth, |_, _, _| {})
+    let models = [Model::new(mesh, ORANGE).with_matrix(torus_model(f))];
+    let lights = [
+        Light::ambient(s(1, 5)),
+        Light::directional(Vec3::from_int(-1, 1, 1), s(4, 5)),
+    ];
+    let camera = Camera::perspective(60, 1, 10)
+        .looking_at(Vec3::new(Scalar::ZERO, Scalar::ZERO, s(13, 5)), Vec3::ZERO);
+    let mut sent = SentFrame {
+        hash: Fnv::new(),
+        display,
+        exclude,
+    };
+    Renderer::from_slices(vertices, bins, color, depth)
+        .render(&models, &lights, &camera, &mut sent)
+        .ok()?;
+    Some(sent.hash.0)
 }
 
-/// [`bands`], handing each finished band (its pixels, first row and row count) to `send`.
-pub fn bands_into(
-    mesh: &Mesh<'_>,
-    f: u32,
-    cache: &mut [ScreenVertex],
-    color: &mut [Rgb565],
-    depth: &mut [u16],
-    mut send: impl FnMut(&[Rgb565], u32, u32),
-) -> Option<u32> {
-    let objects = [Object::new(mesh, torus_model(f), ORANGE)];
-    let scene = Scene::new(&objects, sun());
-    let mut hash = Fnv::new();
-    let p = frame(W, H)?.prepare(&scene, cache, Flat).ok()?;
-    let mut y0 = 0;
-    while y0 < H {
-        let rows = BAND_ROWS.min(H - y0);
-        let (mut c, mut d) = (
-            FrameBuffer::new(&mut *color, W, rows).ok()?,
-            DepthBuffer::new(&mut *depth, W, rows).ok()?,
-        );
-        c.fill(Rgb565::BLACK);
-        d.clear();
-        p.draw(&mut ColorDepth::band(&mut c, &mut d, y0).ok()?.uncounted())
-            .ok()?;
-        hash.pixels(c.pixels());
-        send(c.pixels(), y0, rows);
-        y0 += rows;
+/// Bins for `bands`: the torus's triangles that can face the camera at once (about half of a
+/// closed mesh's), with room to spare.
+pub const BAND_BINS: usize = TORUS_TRIANGLES / 2 + 256;
+
+/// A display that takes everything and keeps nothing (the `bands` preset's, 320x240).
+pub struct NoDisplay;
+
+impl OriginDimensions for NoDisplay {
+    fn size(&self) -> Size {
+        Size::new(W, H)
     }
-    Some(hash.0)
+}
+
+impl DrawTarget for NoDisplay {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        _: I,
+    ) -> Result<(), Self::Error> {
+        Ok(())
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        _: &Rectangle,
+        colors: I,
+    ) -> Result<(), Self::Error> {
+        colors.into_iter().for_each(drop);
+        Ok(())
+    }
+}
+
+/// `display`, hashing the colours it is sent, in order, each write inside `exclude`.
+pub struct SentFrame<'e, D> {
+    pub hash: Fnv,
+    pub display: &'e mut D,
+    pub exclude: &'e mut dyn FnMut(&mut dyn FnMut()),
+}
+
+impl<D: DrawTarget<Color = Rgb565>> OriginDimensions for SentFrame<'_, D> {
+    fn size(&self) -> Size {
+        self.display.bounding_box().size
+    }
+}
+
+impl<D: DrawTarget<Color = Rgb565>> DrawTarget for SentFrame<'_, D> {
+    type Color = Rgb565;
+    type Error = D::Error;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), D::Error> {
+        let (hash, display) = (&mut self.hash, &mut *self.display);
+        let mut pixels = Some(pixels);
+        let mut sent = Ok(());
+        (self.exclude)(&mut || {
+            if let Some(pixels) = pixels.take() {
+                let hashed = pixels
+                    .into_iter()
+                    .inspect(|Pixel(_, c)| hash.write(c.into_storage() as u32));
+                sent = display.draw_iter(hashed);
+            }
+        });
+        sent
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), D::Error> {
+        let (hash, display) = (&mut self.hash, &mut *self.display);
+        let mut colors = Some(colors);
+        let mut sent = Ok(());
+        (self.exclude)(&mut || {
+            if let Some(colors) = colors.take() {
+                let hashed = colors
+                    .into_iter()
+                    .inspect(|c| hash.write(c.into_storage() as u32));
+                sent = display.fill_contiguous(area, hashed);
+            }
+        });
+        sent
+    }
 }
 
 /// `flat`: a convex mesh (the cube) filled flat, back-face culling only, no depth buffer.

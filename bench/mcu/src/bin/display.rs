@@ -7,10 +7,8 @@
 #![no_main]
 
 use cortex_m_rt::entry;
-use embedded_graphics::draw_target::DrawTarget;
-use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
-use embedded_graphics::primitives::Rectangle;
+use fixed3d::pipeline::Bin;
 use fixed3d::target::FrameBuffer;
 use mcu_bench::scenes::*;
 use mcu_bench::Op;
@@ -83,9 +81,10 @@ mod bus {
 #[entry]
 fn main() -> ! {
     let (cache, pos, nor, tri) = mcu_bench::torus_storage!();
-    let (band, band_depth, mono_px, mono_depth, spi_buffer) = mcu_bench::storage!(
+    let (band, band_depth, bins, mono_px, mono_depth, spi_buffer) = mcu_bench::storage!(
         BAND: [Rgb565; (W * BAND_ROWS) as usize] = [Rgb565::BLACK; (W * BAND_ROWS) as usize],
         BAND_DEPTH: [u16; (W * BAND_ROWS) as usize] = [0; (W * BAND_ROWS) as usize],
+        BINS: [Bin; BAND_BINS] = [Bin::EMPTY; BAND_BINS],
         MONO: [BinaryColor; (MONO_W * MONO_H) as usize] = [BinaryColor::Off; (MONO_W * MONO_H) as usize],
         MONO_DEPTH: [u16; (MONO_W * MONO_H) as usize] = [0; (MONO_W * MONO_H) as usize],
         SPI_BUFFER: [u8; 512] = [0; 512],
@@ -112,10 +111,16 @@ fn main() -> ! {
     mcu_bench::run("display", |op| match op {
         Op::Clear => 0,
         Op::Draw(f) => {
-            let colour = bands_into(&mesh, f, cache, band, band_depth, |px, y0, rows| {
-                let area = Rectangle::new(Point::new(0, y0 as i32), Size::new(W, rows));
-                let _ = lcd.fill_contiguous(&area, px.iter().copied());
-            })
+            let colour = bands(
+                &mesh,
+                f,
+                cache,
+                bins,
+                band,
+                band_depth,
+                &mut lcd,
+                &mut |w| w(),
+            )
             .unwrap_or(0);
             let _ = mono(&mesh, f, cache, mono_px, mono_depth);
             if let Ok(fb) = FrameBuffer::new(&mut mono_px[..], MONO_W, MONO_H) {

@@ -1,0 +1,373 @@
+//! The common path (`render::Renderer`): the reference torus through it equals its golden
+//! image in one pass and in bands of any height, with bins and without; a prepared frame drawn
+//! from two threads gives the image of one pass; wire and solid models occlude each other;
+//! each setup error is reported, never a panic.
+
+mod common;
+
+use common::golden;
+use common::scene::*;
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::geometry::{OriginDimensions, Size};
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use embedded_graphics::Pixel;
+use fixed3d::camera::{Camera, CameraError};
+use fixed3d::mesh::{Mesh, CUBE};
+use fixed3d::pipeline::{Bin, Cull, ScreenVertex, Stats};
+use fixed3d::projection::{ProjectionError, Viewport};
+use fixed3d::render::{Model, PreparedFrame, RenderError, Renderer, Shade, MAX_LIGHTS};
+use fixed3d::scene::{Light, LightError};
+
+/// A display that keeps what it is sent, and counts the writes.
+struct Screen {
+    w: u32,
+    h: u32,
+    pixels: Vec<Rgb565>,
+    writes: usize,
+}
+
+impl Screen {
+    fn new(w: u32, h: u32) -> Self {
+        Screen {
+            w,
+            h,
+            pixels: vec![Rgb565::new(1, 2, 3); (w * h) as usize],
+            writes: 0,
+        }
+    }
+
+    fn rgb(&self) -> Vec<Rgb888> {
+        self.pixels.iter().map(|&p| p.into()).collect()
+    }
+}
+
+impl OriginDimensions for Screen {
+    fn size(&self) -> Size {
+        Size::new(self.w, self.h)
+    }
+}
+
+impl DrawTarget for Screen {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        for Pixel(p, c) in pixels {
+            if p.x >= 0 && p.y >= 0 && (p.x as u32) < self.w && (p.y as u32) < self.h {
+                self.pixels[(p.y as u32 * self.w + p.x as u32) as usize] = c;
+                self.writes += 1;
+            }
+        }
+        Ok(())
+    }
+}
+
+fn camera() -> Camera {
+    Camera::perspective(60, 1, 10).looking_at([0.0, 0.0, 2.6], [0, 0, 0])
+}
+
+fn lights() -> [Light; 2] {
+    [Light::ambient(0.2), Light::directional([-1, 1, 1], 0.8)]
+}
+
+/// Renders `models` through buffers of `rows` rows and storage for `bins` bins.
+fn render(models: &[Model<'_>], rows: u32, bins: usize) -> (Screen, Stats) {
+    let mut screen = Screen::new(320, 240);
+    let vertices: usize = models.iter().map(|m| m.mesh().positions().len()).sum();
+    let (mut v, mut b) = (
+        vec![ScreenVertex::DEFAULT; vertices],
+        vec![Bin::EMPTY; bins],
+    );
+    let (mut c, mut d) = (
+        vec![Rgb565::BLACK; (320 * rows) as usize],
+        vec![0u16; (320 * rows) as usize],
+    );
+    let stats = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d)
+        .render(models, &lights(), &camera(), &mut screen)
+        .unwrap();
+    (screen, stats)
+}
+
+/// The reference torus through the renderer is the golden image of the lower layers, drawn in
+/// one pass, in bands of every kind of height (one row, a prime, a divisor of 240, the
+/// `bands` preset's 12, most of the frame), with bins for every triangle, for the visible
+/// ones only, and with too few (every band then walks every triangle).
+#[test]
+fn torus_through_the_renderer_equals_its_golden_image() {
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let torus = [Model::new(&mesh, BASE)];
+    let (one_pass, stats) = render(&torus, 240, 0);
+    golden::check("torus_flat", 320, 240, &one_pass.rgb());
+    assert_eq!(
+        one_pass.writes,
+        320 * 240,
+        "one fill_contiguous of the whole frame"
+    );
+    assert!(stats.drawn > 900 && stats.culled > 1100, "{stats:?}");
+    for rows in [1, 7, 12, 16, 100, 239] {
+        for bins in [2304, 1000, 10] {
+            let (banded, band_stats) = render(&torus, rows, bins);
+            assert!(
+                banded.pixels == one_pass.pixels,
+                "bands of {rows} rows with {bins} bins differ from one pass"
+            );
+            assert_eq!(banded.writes, 320 * 240);
+            if bins >= 1000 {
+                // Binned: each triangle culled once, not once a band.
+                assert_eq!(
+                    (band_stats.culled, band_stats.primitives),
+                    (stats.culled, 2304)
+                );
+            }
+        }
+    }
+}
+
+/// A prepared frame drawn band by band from two threads at once (odd and even bands, each
+/// thread with its own buffers, as two cores of an RP2040 would) gives the image of one pass.
+#[test]
+fn prepared_frame_drawn_from_two_threads_equals_one_pass() {
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let models = [
+        Model::new(&mesh, BASE).rotated_y(20),
+        Model::new(&CUBE, Rgb888::CYAN)
+            .scaled(0.3)
+            .translated([0.5, 0.2, 0.5]),
+    ];
+    let (one_pass, _) = render(&models, 240, 4000);
+    let vertices = mesh.positions().len() + CUBE.positions().len();
+    let (mut v, mut b) = (
+        vec![ScreenVertex::DEFAULT; vertices],
+        vec![Bin::EMPTY; 4000],
+    );
+    let viewport = Viewport::new(320, 240).unwrap();
+    let lights = lights();
+    let camera = camera();
+    let frame = PreparedFrame::new(
+        &models,
+        &lights,
+        &camera,
+        viewport,
+        Cull::Back,
+        &mut v,
+        &mut b,
+    )
+    .unwrap();
+    const ROWS: u32 = 10;
+    let bands = |parity: u32| {
+        let frame = &frame;
+        move || {
+            let mut out = Vec::new();
+            let (mut c, mut d) = (
+                vec![Rgb565::BLACK; 320 * ROWS as usize],
+                vec![0u16; 320 * ROWS as usize],
+            );
+            for band in (parity..240 / ROWS).step_by(2) {
+                c.fill(Rgb565::BLACK);
+                d.fill(u16::MAX);
+                frame.draw_band(band * ROWS, &mut c, &mut d).unwrap();
+                out.push((band, c.clone()));
+            }
+            out
+        }
+    };
+    let (even, odd) = std::thread::scope(|s| {
+        let even = s.spawn(bands(0));
+        let odd = s.spawn(bands(1));
+        (even.join().unwrap(), odd.join().unwrap())
+    });
+    let mut image = vec![Rgb565::BLACK; 320 * 240];
+    for (band, pixels) in even.into_iter().chain(odd) {
+        let start = (band * ROWS * 320) as usize;
+        image[start..start + pixels.len()].copy_from_slice(&pixels);
+    }
+    assert!(image == one_pass.pixels);
+}
+
+/// A wireframe model and a solid one in one scene: the cube's edges behind the torus are
+/// hidden by it, those in front are drawn over it (golden image), and the image is the same
+/// in bands.
+#[test]
+#[cfg(feature = "wireframe")]
+fn wire_and_solid_models_occlude_each_other() {
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let models = [
+        Model::new(&mesh, BASE),
+        Model::new(&CUBE, Rgb888::WHITE)
+            .scaled(0.9)
+            .rotated_y(30)
+            .wireframe(),
+    ];
+    let (one_pass, _) = render(&models, 240, 2304);
+    golden::check("renderer_wire_and_solid", 320, 240, &one_pass.rgb());
+    let (banded, _) = render(&models, 16, 2304);
+    assert!(banded.pixels == one_pass.pixels);
+    // Both kinds of occlusion happen: some wire pixels hidden, some drawn over the torus.
+    let (torus_only, _) = render(&models[..1], 240, 2304);
+    let (wire_only, _) = render(&models[1..], 240, 0);
+    let white = Rgb565::WHITE;
+    let (mut hidden, mut over) = (0, 0);
+    for i in 0..320 * 240 {
+        let torus_there = torus_only.pixels[i] != Rgb565::BLACK;
+        if wire_only.pixels[i] == white && torus_there {
+            if one_pass.pixels[i] == white {
+                over += 1;
+            } else {
+                hidden += 1;
+            }
+        }
+    }
+    assert!(hidden > 50 && over > 50, "hidden {hidden}, over {over}");
+}
+
+/// Every shading through the renderer, Gouraud on a mesh with vertex normals: each draws, and
+/// bands equal one pass.
+#[test]
+#[cfg(feature = "gouraud")]
+fn every_shade_draws_the_same_in_bands() {
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles)
+        .unwrap()
+        .with_normals(&data.normals)
+        .unwrap();
+    for shade in [
+        Shade::Unlit,
+        Shade::Flat,
+        Shade::Gouraud,
+        Shade::PerspectiveGouraud,
+    ] {
+        let models = [Model::new(&mesh, BASE).rotated_x(15).shaded(shade)];
+        let (one_pass, stats) = render(&models, 240, 2304);
+        assert!(stats.drawn > 900, "{shade:?}");
+        let (banded, _) = render(&models, 13, 2304);
+        assert!(banded.pixels == one_pass.pixels, "{shade:?}");
+    }
+}
+
+/// Setup errors are errors: too many lights, a zero light direction, a camera at its target,
+/// a bad lens, too little storage, buffers shorter than a row, an empty display.
+#[test]
+fn setup_errors_are_reported() {
+    let models = [Model::new(&CUBE, Rgb888::RED)];
+    let try_render = |lights: &[Light], camera: &Camera, vertices: usize, cells: usize, w: u32| {
+        let mut screen = Screen::new(w, 8);
+        let (mut v, mut b) = (vec![ScreenVertex::DEFAULT; vertices], vec![Bin::EMPTY; 12]);
+        let (mut c, mut d) = (vec![Rgb565::BLACK; cells], vec![0u16; cells]);
+        Renderer::from_slices(&mut v, &mut b, &mut c, &mut d)
+            .render(&models, lights, camera, &mut screen)
+            .map(|_| ())
+    };
+    let ok_camera = camera();
+    assert_eq!(try_render(&lights(), &ok_camera, 8, 64, 8), Ok(()));
+    let many = [Light::directional([0, 0, 1], 0.1); MAX_LIGHTS + 1];
+    assert_eq!(
+        try_render(&many, &ok_camera, 8, 64, 8),
+        Err(RenderError::Lights(LightError::Full))
+    );
+    let zero = [Light::directional([0, 0, 0], 1)];
+    assert_eq!(
+        try_render(&zero, &ok_camera, 8, 64, 8),
+        Err(RenderError::Lights(LightError::ZeroDirection))
+    );
+    let at_target = Camera::perspective(60, 1, 10).looking_at([1, 1, 1], [1, 1, 1]);
+    assert_eq!(
+        try_render(&lights(), &at_target, 8, 64, 8),
+        Err(RenderError::Camera(CameraError::EyeAtTarget))
+    );
+    let inverted = Camera::perspective(60, 10, 1).looking_at([0, 0, 3], [0, 0, 0]);
+    assert_eq!(
+        try_render(&lights(), &inverted, 8, 64, 8),
+        Err(RenderError::Projection(ProjectionError::FarNotBeyondNear))
+    );
+    assert_eq!(
+        try_render(&lights(), &ok_camera, 7, 64, 8),
+        Err(RenderError::CacheTooSmall {
+            needed: 8,
+            capacity: 7
+        })
+    );
+    assert_eq!(
+        try_render(&lights(), &ok_camera, 8, 7, 8),
+        Err(RenderError::BuffersTooSmall { row: 8 })
+    );
+    assert_eq!(
+        try_render(&lights(), &ok_camera, 8, 64, 0),
+        Err(RenderError::Viewport(ProjectionError::ViewportSize))
+    );
+}
+
+/// The common path stays short: examples/hello_cube.rs, a whole program, has a `main` of at
+/// most 25 lines and imports at most 6 names from fixed3d.
+#[test]
+fn hello_cube_is_short() {
+    let source = include_str!("../examples/hello_cube.rs");
+    let lines: Vec<&str> = source.lines().collect();
+    let start = lines.iter().position(|l| l.starts_with("fn main")).unwrap();
+    let end = start + lines[start..].iter().position(|l| *l == "}").unwrap();
+    assert!(end - start - 1 <= 25, "main has {} lines", end - start - 1);
+    let names: usize = lines
+        .iter()
+        .filter_map(|l| l.strip_prefix("use fixed3d::"))
+        .map(|l| match l.find('{') {
+            Some(i) => l[i..].split(',').count(),
+            None => 1,
+        })
+        .sum();
+    assert!(names <= 6, "{names} names imported from fixed3d");
+}
+
+/// An unlit model through the renderer (flat shading under a white ambient light alone) is the
+/// lower layers' `Unlit` image, pixel for pixel.
+#[test]
+fn unlit_models_keep_their_colour() {
+    use fixed3d::mesh::Object;
+    use fixed3d::scene::{LightColor, Lighting, Scene};
+    use fixed3d::shade::Unlit;
+    use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let (through_renderer, _) = render(&[Model::new(&mesh, BASE).shaded(Shade::Unlit)], 20, 2304);
+    let objects = [Object::new(&mesh, fixed3d::math::Mat4::IDENTITY, BASE)];
+    let scene = Scene::new(&objects, Lighting::<0>::new(LightColor::BLACK));
+    let mut cache = vec![ScreenVertex::DEFAULT; mesh.positions().len()];
+    let prepared = frame().prepare(&scene, &mut cache, Unlit).unwrap();
+    let (mut c, mut d) = (vec![Rgb565::BLACK; 320 * 240], vec![u16::MAX; 320 * 240]);
+    let mut color = FrameBuffer::new(&mut c, 320, 240).unwrap();
+    let mut depth = DepthBuffer::new(&mut d, 320, 240).unwrap();
+    prepared
+        .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
+        .unwrap();
+    assert!(through_renderer.pixels == c);
+    assert!(c.iter().filter(|&&p| p == Rgb565::from(BASE)).count() > 28_000);
+}
+
+/// Without the `gouraud` and `wireframe` features a model that needs one is an error naming
+/// it (and the build links neither's code).
+#[test]
+#[cfg(not(all(feature = "gouraud", feature = "wireframe")))]
+fn models_needing_a_missing_feature_are_errors() {
+    let mut screen = Screen::new(32, 32);
+    let (mut v, mut b) = (vec![ScreenVertex::DEFAULT; 8], vec![Bin::EMPTY; 12]);
+    let (mut c, mut d) = (vec![Rgb565::BLACK; 32 * 32], vec![0u16; 32 * 32]);
+    let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
+    let cube = Model::new(&CUBE, Rgb888::RED);
+    for (model, feature, on) in [
+        (
+            cube.shaded(Shade::Gouraud),
+            "gouraud",
+            cfg!(feature = "gouraud"),
+        ),
+        (cube.wireframe(), "wireframe", cfg!(feature = "wireframe")),
+    ] {
+        let drawn = renderer.render(&[model], &lights(), &camera(), &mut screen);
+        if !on {
+            assert_eq!(drawn, Err(RenderError::Disabled { feature }));
+        }
+    }
+}
