@@ -14,6 +14,7 @@ use std::time::Instant;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, Rgb888, RgbColor};
 use embedded_graphics::prelude::*;
 use embedded_graphics_simulator::{BinaryColorTheme, OutputSettingsBuilder, SimulatorDisplay};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{torus, torus_counts, FaceNormal, Object};
@@ -21,7 +22,6 @@ use fixed3d::pipeline::{Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{FlatKept, Gouraud, Unlit};
-use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
 const RING: u16 = 48;
 const TUBE: u16 = 24;

@@ -9,6 +9,7 @@
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use embedded_graphics::prelude::*;
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
 use fixed3d::camera::Framing;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{vertex_normals, Object};
@@ -17,7 +18,6 @@ use fixed3d::pipeline::{Frame, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::Gouraud;
-use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
 /// Parsed at compile time; an invalid file is a build error.
 static SUZANNE: StaticObj<507, 968> =

@@ -20,6 +20,7 @@ mod reference;
 use std::time::Instant;
 
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{torus, torus_counts, FaceNormal, Mesh, Object};
@@ -27,7 +28,6 @@ use fixed3d::pipeline::{Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, FlatKept, Shading};
-use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
 const W: u32 = 320;
 const H: u32 = 240;

@@ -18,6 +18,7 @@ extern crate std;
 #[cfg(test)]
 mod testing;
 
+pub mod buffer;
 pub mod camera;
 pub mod math;
 pub mod mesh;
@@ -28,7 +29,7 @@ pub mod raster;
 pub mod render;
 pub mod scene;
 pub mod shade;
-pub mod target;
+pub mod stats;
 
 pub use camera::Camera;
 pub use render::{Model, Renderer, Shade, Storage, Style, Wireframe};

@@ -23,7 +23,7 @@
 //! Beneath it, for firmware that drives bands itself (DMA double buffering, two cores drawing
 //! alternate bands): [`PreparedFrame`] runs the vertex stage and bins the triangles once, and
 //! [`PreparedFrame::draw_band`] draws any band into any buffers, from any thread. The layers
-//! below that ([`pipeline`](crate::pipeline), [`target`](crate::target)) stay public too.
+//! below that ([`pipeline`](crate::pipeline), [`target`](crate::buffer)) stay public too.
 
 use core::cell::Cell;
 use core::fmt;
@@ -34,6 +34,7 @@ use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Drawable;
 
+use crate::buffer::{BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
 use crate::camera::{Camera, CameraError};
 use crate::math::{Angle, Mat4, Number, Scalar, Vec3};
 use crate::mesh::{Mesh, Object};
@@ -41,7 +42,6 @@ use crate::pipeline::{Bin, Cull, Frame, PrepareError, Prepared, ScreenVertex, St
 use crate::projection::{ProjectionError, Viewport};
 use crate::scene::{Light, LightColor, LightError, Lighting, Scene};
 use crate::shade::{FlatKept, Gouraud, PerspectiveGouraud, Shading, Unlit};
-use crate::target::{BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
 
 /// The most directional lights a frame of the [`Renderer`] takes (ambient lights are summed
 /// into one and do not count).
@@ -443,7 +443,7 @@ where
                 .map_err(|_| RenderError::BuffersTooSmall { row: width })?;
             // The first band counts what was not binned (every band counts the same).
             if first == 0 {
-                stats = sum(stats, band);
+                stats = stats + band;
             } else {
                 stats.drawn = stats.drawn.saturating_add(band.drawn);
             }
@@ -470,7 +470,7 @@ where
 /// use fixed3d::pipeline::{Bin, Cull, ScreenVertex};
 /// use fixed3d::projection::Viewport;
 /// use fixed3d::render::{Model, PreparedFrame};
-/// use fixed3d::target::DepthFormat;
+/// use fixed3d::buffer::DepthFormat;
 /// use fixed3d::{camera::Camera, scene::Light};
 ///
 /// let camera = Camera::perspective(60, 1, 10).looking_at([2, 2, 3], [0, 0, 0]);
@@ -667,25 +667,9 @@ impl<'f> PreparedFrame<'f> {
                 })
             });
             let Ok(drawn) = drawn;
-            stats = sum(stats, drawn);
+            stats = stats + drawn;
         }
         Ok(stats)
-    }
-}
-
-/// `a` with `b`'s counts added (saturating).
-fn sum(a: Stats, b: Stats) -> Stats {
-    let add = |x: u32, y: u32| x.saturating_add(y);
-    Stats {
-        primitives: add(a.primitives, b.primitives),
-        invalid: add(a.invalid, b.invalid),
-        outside: add(a.outside, b.outside),
-        clipped: add(a.clipped, b.clipped),
-        culled: add(a.culled, b.culled),
-        degenerate: add(a.degenerate, b.degenerate),
-        drawn: add(a.drawn, b.drawn),
-        fragments: add(a.fragments, b.fragments),
-        written: add(a.written, b.written),
     }
 }
 
@@ -759,18 +743,18 @@ trait Drawing<T> {
     fn band(&self, target: &mut T, tag: u16, bins: &[Bin], binned: bool, style: Style) -> Stats;
 }
 
-impl<C, D, Q, K, S> Drawing<ColorDepth<'_, '_, C, D, Q, crate::target::Less, K>>
+impl<C, D, Q, K, S> Drawing<ColorDepth<'_, '_, C, D, Q, crate::buffer::Less, K>>
     for Prepared<'_, '_, MAX_LIGHTS, S>
 where
     C: PixelColor + From<Rgb888>,
     D: DepthFormat,
-    Q: crate::target::Quantize<C>,
-    K: crate::target::FragmentCount,
+    Q: crate::buffer::Quantize<C>,
+    K: crate::buffer::FragmentCount,
     S: Shading,
 {
     fn band(
         &self,
-        target: &mut ColorDepth<'_, '_, C, D, Q, crate::target::Less, K>,
+        target: &mut ColorDepth<'_, '_, C, D, Q, crate::buffer::Less, K>,
         tag: u16,
         bins: &[Bin],
         binned: bool,
@@ -888,7 +872,7 @@ impl Wireframe<'_> {
             let Ok(prepared) = frame.prepare(&scene, cache, Unlit) else {
                 break;
             };
-            stats = sum(stats, prepared.draw_wireframe(target)?);
+            stats = stats + prepared.draw_wireframe(target)?;
         }
         Ok(stats)
     }

@@ -5,6 +5,7 @@ mod common;
 
 use common::scene::*;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{Mesh, Object, Transform, CUBE};
@@ -12,7 +13,6 @@ use fixed3d::pipeline::{Cull, Frame, Prepared, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::Scene;
 use fixed3d::shade::{Flat, Gouraud, Shading};
-use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
 fn full<const N: usize, S: Shading>(p: &Prepared<'_, '_, N, S>, w: u32, h: u32) -> Vec<Rgb565> {
     let (mut c, mut d) = (

@@ -6,12 +6,12 @@ mod common;
 use common::reference::{classify, depth_at, Cover, V3};
 use common::world::{back, q, Setup};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, DepthTest, FrameBuffer, Less, LessOrEqual};
 use fixed3d::math::Mat4;
 use fixed3d::mesh::{Mesh, Object};
 use fixed3d::pipeline::{Cull, ScreenVertex, Stats};
 use fixed3d::scene::{LightColor, Lighting, Scene};
 use fixed3d::shade::Unlit;
-use fixed3d::target::{ColorDepth, DepthBuffer, DepthTest, FrameBuffer, Less, LessOrEqual};
 use proptest::prelude::*;
 
 const RED: Rgb888 = Rgb888::new(255, 0, 0);

@@ -90,10 +90,10 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     // The clipped variant does what it is there for: the near plane cuts triangles, and
     // spans reach every side of the screen (clamped to the target's columns).
     {
+        use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
         use fixed3d::mesh::Object;
         use fixed3d::scene::Scene;
         use fixed3d::shade::Flat;
-        use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
         let objects = [Object::new(&mesh, torus_model(0), ORANGE)];
         let scene = Scene::new(&objects, sun());
         let frame = clipped_frame(W, H).expect("frame");

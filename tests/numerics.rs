@@ -5,13 +5,13 @@ mod common;
 
 use common::world::Setup;
 use embedded_graphics::pixelcolor::Rgb888;
+use fixed3d::buffer::Direct;
 use fixed3d::camera::FlyCamera;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{Object, Transform, CUBE};
 use fixed3d::pipeline::{Cull, ScreenVertex};
 use fixed3d::scene::{LightColor, Lighting, Scene};
 use fixed3d::shade::Unlit;
-use fixed3d::target::Direct;
 
 fn orthonormality(m: &Mat4) -> (f64, f64) {
     let r: Vec<Vec<f64>> = (0..3)

@@ -6,11 +6,11 @@ mod common;
 use common::golden;
 use common::scene::*;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
 use fixed3d::mesh::{Mesh, Object};
 use fixed3d::pipeline::{ScreenVertex, Stats};
 use fixed3d::scene::Scene;
 use fixed3d::shade::{Flat, Unlit};
-use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
 fn render_flat(data: &TorusData) -> (Vec<Rgb565>, Stats) {
     render_flat_counted(data, true)

@@ -326,10 +326,10 @@ fn hello_cube_is_short() {
 /// lower layers' `Unlit` image, pixel for pixel.
 #[test]
 fn unlit_models_keep_their_colour() {
+    use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
     use fixed3d::mesh::Object;
     use fixed3d::scene::{LightColor, Lighting, Scene};
     use fixed3d::shade::Unlit;
-    use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
     let data = torus_f64();
     let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
     let (through_renderer, _) = render(&[Model::new(&mesh, BASE).shaded(Shade::Unlit)], 20, 2304);

@@ -9,6 +9,7 @@ use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use embedded_graphics::Pixel;
+use fixed3d::buffer::{BufferError, ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Vec3};
 use fixed3d::mesh::{FaceNormal, Mesh, MeshError, Object, CUBE};
@@ -16,7 +17,6 @@ use fixed3d::pipeline::{Cull, Frame, MatrixFormat, Precision, PrepareError, Scre
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, FlatKept, Gouraud, PerspectiveGouraud, Unlit};
-use fixed3d::target::{BufferError, ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use proptest::prelude::*;
 
 /// T38: a depth-tested scene drawn in reverse triangle order gives the same image.

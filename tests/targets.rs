@@ -6,6 +6,7 @@ mod common;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, Rgb888, RgbColor};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
+use fixed3d::buffer::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Scalar, Vec3};
 use fixed3d::mesh::{uv_sphere, Object, Transform, CUBE};
@@ -13,7 +14,6 @@ use fixed3d::pipeline::{Frame, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, Gouraud};
-use fixed3d::target::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 
 /// Records how a target was called.
 #[derive(Default)]

@@ -26,6 +26,7 @@ use crate::reference::{
     apply4, clip_near_far, cross, dot, inside_distance, mul4, norm, polygon_area, sub, Camera, V3,
 };
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Trig, Vec3};
 use fixed3d::mesh::{Mesh, Object, Transform};
@@ -34,7 +35,6 @@ use fixed3d::projection::{Projection, Viewport};
 use fixed3d::raster::{triangle_spans, PixelRect};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Shading};
-use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
 
 /// How a configuration shades.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -7,6 +7,7 @@ use std::fmt;
 use std::time::{Duration, Instant};
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+use fixed3d::buffer::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use fixed3d::camera::{Framing, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{self, vertex_normals, Mesh, Object, Triangle};
@@ -15,7 +16,6 @@ use fixed3d::pipeline::{Cull, Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, Gouraud, Unlit};
-use fixed3d::target::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 
 /// Lights a desktop scene holds at most.
 pub const MAX_LIGHTS: usize = 8;

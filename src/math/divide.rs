@@ -385,9 +385,8 @@ impl DivideBy {
     }
 
     /// [`round_shifted`](Self::round_shifted) where it fits an i32, else `None`; on 32-bit
-    /// cores by [`shifted_i32_in_words`] where it applies (the Cortex-M4's depth gradients:
-    /// its frame 0.8% fewer instructions than the 64-bit quotient's sign and check). (64-bit
-    /// cores find the depth walk's steps by `target::depth::steps_over_area` instead.)
+    /// cores by [`shifted_i32_in_words`] where it applies (the depth gradients). (64-bit
+    /// cores find the depth walk's steps by `buffer::depth::steps_over_area` instead.)
     #[inline(always)]
     pub(crate) fn round_shifted_i32(&self, n: i64, shift: u32) -> Option<i32> {
         if cfg!(target_pointer_width = "32")

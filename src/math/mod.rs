@@ -8,6 +8,7 @@
 
 mod angle;
 mod divide;
+mod face;
 mod matrix;
 mod methods;
 mod number;
@@ -30,6 +31,9 @@ pub(crate) use scalar::{
 };
 
 pub(crate) use divide::{div_round, div_round_word, fraction_in_words, DivideBy, ShortQuotients};
+#[cfg(test)]
+pub(crate) use face::shrink_below;
+pub(crate) use face::{apply, face_direction, face_newton_direction, shrink};
 pub(crate) use sqrt::{isqrt_ceil, isqrt_u64, sqrt_above};
 #[cfg(test)]
 pub(crate) use vector::dot_wide;

@@ -1,8 +1,8 @@
 //! Vertex normals for meshes that come without them, and the face normals flat shading keeps.
 
 use super::{MeshError, Triangle};
+use crate::math::face_newton_direction;
 use crate::math::{normalize, shr_round, NewtonDirection, Vec3};
-use crate::shade::face_newton_direction;
 
 /// A triangle's face normal as flat shading uses it, kept in a mesh by
 /// [`Mesh::with_face_normals`](super::Mesh::with_face_normals): the cross product of its edges

@@ -9,14 +9,14 @@ use embedded_graphics::Pixel;
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
 use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
+use crate::buffer::{
+    ColorDepth, DepthFormat, DepthTest, FragmentCount, Quantize, RasterTarget, ScreenTriangle,
+};
 use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
 use crate::mesh::{FaceNormal, Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
 use crate::shade::{FaceInputs, Flat, Paint, Shading};
-use crate::target::{
-    ColorDepth, DepthFormat, DepthTest, FragmentCount, Quantize, RasterTarget, ScreenTriangle,
-};
 
 /// The vertex colours handed to shadings that do not interpolate them.
 const NO_COLORS: [[i32; 3]; 3] = [[0; 3]; 3];
@@ -249,7 +249,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     }
 
     /// Fills every triangle of the scene into `target` (a [`ColorDepth`]
-    /// frame or band, or a [`Direct`](crate::target::Direct) draw target). Returns what was
+    /// frame or band, or a [`Direct`](crate::buffer::Direct) draw target). Returns what was
     /// drawn, or the target's first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
         // One walk per culling mode on x86-64 (its frame 0.5% fewer instructions); on Cortex-M
@@ -813,6 +813,7 @@ mod tests {
     use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 
     use super::*;
+    use crate::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
     use crate::camera::LookAt;
     use crate::math::{Angle, Scalar, Vec3};
     use crate::mesh::CUBE;
@@ -822,7 +823,6 @@ mod tests {
     use crate::raster::short_sides_area;
     use crate::scene::{LightColor, Scene};
     use crate::shade::Flat;
-    use crate::target::{ColorDepth, DepthBuffer, FrameBuffer};
 
     /// The cross product in words of triangles whose vertices lie within `GUARD` of a screen
     /// centre (every vertex inside every clip plane) is the exact doubled area: at random

@@ -21,6 +21,7 @@ mod draw;
 mod precision;
 mod vertex;
 
+pub use crate::stats::Stats;
 pub use draw::Bin;
 pub use precision::{MatrixFormat, Precision};
 pub use vertex::ScreenVertex;
@@ -45,31 +46,6 @@ pub enum Cull {
     Front,
     /// Keep both.
     None,
-}
-
-/// What one drawing call did. Counts saturate. Drawing a frame band by band gives every band
-/// the same `primitives`, `invalid`, `outside`, `clipped`, `culled` and `degenerate` counts;
-/// `drawn`, `fragments` and `written` are that band's.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Stats {
-    /// Triangles (or edges, for wireframes with an edge list) looked at.
-    pub primitives: u32,
-    /// Dropped: an index refers to no vertex.
-    pub invalid: u32,
-    /// Dropped: entirely outside the near plane, the far plane or the guard band.
-    pub outside: u32,
-    /// Went through homogeneous clipping (crossing the near/far plane or the guard band).
-    pub clipped: u32,
-    /// Dropped by back-face culling.
-    pub culled: u32,
-    /// Dropped: zero area after snapping.
-    pub degenerate: u32,
-    /// Triangles (or lines) handed to the rasteriser.
-    pub drawn: u32,
-    /// Pixels depth-tested (or drawn, without depth).
-    pub fragments: u32,
-    /// Pixels written.
-    pub written: u32,
 }
 
 fn bump(c: &mut u32) {

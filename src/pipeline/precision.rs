@@ -8,7 +8,7 @@ use crate::math::{magnitude_bits, product3, shr_round, Mat4, Normalize, SUBPIXEL
 /// report shows which of them save anything).
 ///
 /// The other knobs are types and values chosen elsewhere: the depth format
-/// ([`DepthBuffer`](crate::target::DepthBuffer) over `u16` or `u32`), the shading
+/// ([`DepthBuffer`](crate::buffer::DepthBuffer) over `u16` or `u32`), the shading
 /// ([`Flat`](crate::shade::Flat), [`Gouraud`](crate::shade::Gouraud) or
 /// [`PerspectiveGouraud`](crate::shade::PerspectiveGouraud)) and the sine method of model
 /// matrices ([`Transform::matrix_by`](crate::mesh::Transform::matrix_by)).

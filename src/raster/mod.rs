@@ -561,14 +561,6 @@ impl DivideStepper {
     }
 }
 
-// The layout `target::x86_64` reads: the walk (its value in the high half), then the step.
-#[cfg(any(test, target_pointer_width = "64"))]
-const _: () = {
-    use core::mem::{offset_of, size_of};
-    assert!(offset_of!(FractionStepper, acc) == 0 && offset_of!(FractionStepper, step) == 8);
-    assert!(size_of::<FractionStepper>() == 16);
-};
-
 /// `⌊v / d⌋` in the high word (modulo 2³²) and `⌈(v mod d)·2³² / d⌉` in the low word (`d` in
 /// `[1, 2³¹)`), by two divisions: see [`packed_quotient32`] for one.
 #[cfg(any(test, target_pointer_width = "64"))]

@@ -3,8 +3,8 @@
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{
-    below_bits, cosine_unit, cross_in_words, cross_short, cross_wide, dot_is_positive,
-    magnitude_bits, map3, mul_wide, NewtonDirection, Normalize, NARROW_CORE, UNIT_ONE,
+    apply, cosine_unit, dot_is_positive, face_direction, map3, mul_wide, shrink, NewtonDirection,
+    Normalize, NARROW_CORE, UNIT_ONE,
 };
 #[cfg(test)]
 use crate::math::{dot_wide, normalize};
@@ -143,39 +143,6 @@ fn lit(base: u8, intensity: i32) -> u8 {
     ((base as i32 * intensity) >> 16) as u8
 }
 
-/// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough
-/// headroom for one more product with Q16.16 before normalising.
-fn shrink(v: [i64; 3]) -> [i64; 3] {
-    shrink_below(v, 30)
-}
-
-/// Shifts a vector so that every component lies within ±(2^`bits` − 1).
-#[inline]
-fn shrink_below(v: [i64; 3], bits: u32) -> [i64; 3] {
-    // The common case, found by comparisons (counting bits is a library call on Cortex-M0).
-    if below_bits(v[0], bits) && below_bits(v[1], bits) && below_bits(v[2], bits) {
-        return v;
-    }
-    let magnitude = magnitude_bits(&v);
-    if magnitude > bits {
-        let s = magnitude - bits;
-        map3(v, |c| c >> s)
-    } else {
-        v
-    }
-}
-
-/// `m · v` for a normal matrix (entries within ±2³⁰) and a vector below 2³⁰.
-fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
-    // Each product is below 2⁶⁰ and three sum below 2⁶²: nothing to saturate.
-    let [x, y, z] = map3(v, |c| c as i32);
-    map3(*m, |[r0, r1, r2]| {
-        mul_wide(r0, x)
-            .wrapping_add(mul_wide(r1, y))
-            .wrapping_add(mul_wide(r2, z))
-    })
-}
-
 /// Unit face normal (Q2.30) of a model-space triangle, counter-clockwise front, in world space
 /// through `normal_matrix` (in model space without one); `None` for a zero-area triangle.
 #[cfg(test)]
@@ -206,15 +173,6 @@ pub(crate) fn flat_color<const N: usize>(
         method,
         lighting,
     )
-}
-
-/// The [`NewtonDirection`] of a model-space triangle's face normal (see [`face_direction`]);
-/// `None` for a zero-area triangle.
-pub(crate) fn face_newton_direction(
-    p: [[i32; 3]; 3],
-    (extent, edge_extent): (u32, u32),
-) -> Option<NewtonDirection> {
-    NewtonDirection::new(face_direction(p, None, extent, edge_extent))
 }
 
 /// [`flat_color`] in model space with [`Normalize::Newton`], from the face's kept
@@ -277,81 +235,6 @@ fn face_lambert<const N: usize>(
     lambert(base, unit, lighting)
 }
 
-/// The face normal of a model-space triangle, counter-clockwise front, at some scale that fits
-/// 32-bit words (every component within ±(2³¹ − 1); within ±2³⁰ through a normal matrix), in
-/// world space through `normal_matrix` (in model space without one); zero for a zero-area
-/// triangle. Without a normal matrix it is the exact cross product wherever that fits (every
-/// triangle whose edges lie within ±2¹⁵, on every core alike), and shifted right as little as
-/// brings it within range otherwise. Edges of any length: the cross product is exact in i64
-/// after the edges are shifted below 2³⁰ (case T33). `extent` bounds every coordinate's
-/// magnitude (the mesh's [`extent`](crate::mesh::Mesh::extent)): below 2²⁹ the edges need no
-/// shifting, and are not even checked. `edge_extent` bounds every component of the edges
-/// `b − a` and `c − a` (the mesh's `edge_extent`): below 2¹⁵ the cross product in words on
-/// 32-bit cores needs no test of them either.
-// In line at both its callers (`FlatKept`'s face normals are found by it too) on the 32-bit
-// cores with a long multiply: the torus by `FlatKept` 0.35% fewer instructions on the M4, for
-// 470 bytes. On x86-64 `FlatKept` measured 0.35% fewer too but `Flat` 1% more; on Cortex-M0
-// no fewer, 310 bytes more.
-#[cfg_attr(
-    all(target_pointer_width = "32", target_has_atomic = "32"),
-    inline(always)
-)]
-fn face_direction(
-    p: [[i32; 3]; 3],
-    normal_matrix: Option<&[[i32; 3]; 3]>,
-    extent: u32,
-    edge_extent: u32,
-) -> [i32; 3] {
-    let [a, b, c] = p;
-    let short = extent < 1 << 29;
-    let edge = |q: [i32; 3]| {
-        let [q0, q1, q2] = q;
-        let [a0, a1, a2] = a;
-        if short {
-            // Both coordinates below 2²⁹: the difference is below 2³⁰ and fits i32.
-            return [
-                q0.wrapping_sub(a0),
-                q1.wrapping_sub(a1),
-                q2.wrapping_sub(a2),
-            ];
-        }
-        let d = |q: i32, a: i32| q as i64 - a as i64;
-        map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
-    };
-    let (u, v) = (edge(b), edge(c));
-    // Edges within ±2¹⁵ on 32-bit cores: the exact cross product in words (Cortex-M0, without
-    // a long multiply: 1.1% of the frame; the M4 0.7% since its edges divide, 1.1% more
-    // before, when its pixel loop then reloaded two values per pixel; on x86-64, where each
-    // edge would be tested, the 64-bit path: 1% fewer instructions). It lies within
-    // ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)` leaves it too: the same direction on every
-    // core. (Halving it from 2³⁰ on, as the normal matrix's path does, cost the M4 1.3% and
-    // the M0 0.2% of the frame.)
-    if cfg!(not(target_pointer_width = "64")) && normal_matrix.is_none() {
-        // Every edge of the mesh within ±(2¹⁵ − 1), as the torus': no test of each (the
-        // frame 0.45% fewer instructions on the Cortex-M4, 0.3% on the M0).
-        if edge_extent < 1 << 15 {
-            return cross_in_words(u, v);
-        }
-        if let Some(n) = cross_short(u, v) {
-            return n;
-        }
-    }
-    // On x86-64 too for such a mesh, where no edge needs a test: the frame 0.4% fewer
-    // instructions than the 64-bit product and its shift (tested here first, the 32-bit
-    // cores' frames measured 0.1% and 0.3% more).
-    if cfg!(target_pointer_width = "64") && normal_matrix.is_none() && edge_extent < 1 << 15 {
-        return cross_in_words(u, v);
-    }
-    // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
-    let n = cross_wide(u, v);
-    let n = match normal_matrix {
-        Some(m) => shrink(apply(m, shrink(n))),
-        None => shrink_below(n, 31),
-    };
-    // Within ±(2³¹ − 1) after `shrink_below`.
-    map3(n, |c| c as i32)
-}
-
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
 /// zero normal (lit by ambient only, case T34).
 pub(crate) fn vertex_normal(
@@ -368,7 +251,10 @@ pub(crate) fn vertex_normal(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::{Angle, Mat4, Scalar, Vec3};
+    use crate::math::{
+        below_bits, cross_in_words, cross_short, cross_wide, face_newton_direction, shrink_below,
+        Angle, Mat4, Scalar, Vec3,
+    };
     use crate::scene::{DirectionalLight, LightColor, LightError};
 
     const IDENTITY: [[i32; 3]; 3] = [[1 << 16, 0, 0], [0, 1 << 16, 0], [0, 0, 1 << 16]];

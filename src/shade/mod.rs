@@ -11,9 +11,7 @@
 mod lambert;
 mod paint;
 
-pub(crate) use lambert::{
-    face_newton_direction, flat_color, kept_face_color, lambert, vertex_normal,
-};
+pub(crate) use lambert::{flat_color, kept_face_color, lambert, vertex_normal};
 pub use paint::{
     Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
 };
@@ -132,7 +130,7 @@ pub struct Flat;
 /// use fixed3d::projection::{Projection, Viewport};
 /// use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
 /// use fixed3d::shade::{Flat, FlatKept};
-/// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+/// use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
 ///
 /// // Once, at start-up: the cube's 12 face normals.
 /// let mut faces = [FaceNormal::ZERO; 12];

@@ -5,6 +5,7 @@
 use super::reference::{classify, Camera, Cover, V3};
 use super::HitCanvas;
 use embedded_graphics::pixelcolor::Rgb888;
+use fixed3d::buffer::Direct;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{Mesh, Object};
@@ -12,7 +13,6 @@ use fixed3d::pipeline::{Cull, Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{LightColor, Lighting, Scene};
 use fixed3d::shade::Unlit;
-use fixed3d::target::Direct;
 
 pub fn q(v: V3) -> Vec3 {
     Vec3::from_f32(v[0] as f32, v[1] as f32, v[2] as f32).expect("coordinate in range")

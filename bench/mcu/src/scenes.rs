@@ -7,6 +7,7 @@ use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{BinaryColor, IntoStorage, Rgb565, Rgb888, RgbColor};
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Pixel;
+use fixed3d::buffer::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 use fixed3d::camera::{Camera, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
@@ -15,7 +16,6 @@ use fixed3d::projection::{Projection, Viewport};
 use fixed3d::render::{Model, Renderer};
 use fixed3d::scene::{DirectionalLight, Light, LightColor, Lighting, Scene};
 use fixed3d::shade::{Flat, FlatKept, Gouraud, Unlit};
-use fixed3d::target::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 
 /// Frames per preset (the hash chains over them).
 pub const FRAMES: u32 = 4;

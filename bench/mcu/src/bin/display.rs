@@ -8,8 +8,8 @@
 
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
+use fixed3d::buffer::FrameBuffer;
 use fixed3d::pipeline::Bin;
-use fixed3d::target::FrameBuffer;
 use mcu_bench::scenes::*;
 use mcu_bench::Op;
 use mipidsi::interface::SpiInterface;

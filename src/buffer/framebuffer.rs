@@ -15,7 +15,7 @@ use super::grid::{BufferError, Grid};
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
-/// use fixed3d::target::FrameBuffer;
+/// use fixed3d::buffer::FrameBuffer;
 /// let mut pixels = [BinaryColor::Off; 4 * 2];
 /// let mut fb = FrameBuffer::new(&mut pixels, 4, 2).unwrap();
 /// Pixel(Point::new(1, 0), BinaryColor::On).draw(&mut fb).unwrap();

@@ -30,7 +30,7 @@ impl<C: From<Rgb888>> Quantize<C> for Nearest {
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::{BinaryColor, Rgb888};
-/// use fixed3d::target::{OrderedDither, Quantize};
+/// use fixed3d::buffer::{OrderedDither, Quantize};
 /// let grey = Rgb888::new(128, 128, 128);
 /// let on = (0..4)
 ///     .flat_map(|y| (0..4).map(move |x| (x, y)))

@@ -480,8 +480,8 @@ impl DepthTest for LessOrEqual {
 }
 
 /// Whether a target counts the fragments it depth-tests and writes
-/// ([`Stats::fragments`](crate::pipeline::Stats::fragments) and
-/// [`written`](crate::pipeline::Stats::written)): [`Counted`] (the default) or [`Uncounted`].
+/// ([`Stats::fragments`](crate::stats::Stats::fragments) and
+/// [`written`](crate::stats::Stats::written)): [`Counted`] (the default) or [`Uncounted`].
 ///
 /// A type, chosen when the target is built
 /// ([`ColorDepth::uncounted`](super::ColorDepth::uncounted)): a frame that does not need the
@@ -492,12 +492,12 @@ pub trait FragmentCount: sealed::Sealed + Copy + Default + core::fmt::Debug {
     const COUNTED: bool;
 }
 
-/// Fragments and writes are counted into [`Stats`](crate::pipeline::Stats) (the default).
+/// Fragments and writes are counted into [`Stats`](crate::stats::Stats) (the default).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Counted;
 
-/// Fragments and writes are not counted: [`Stats::fragments`](crate::pipeline::Stats::fragments)
-/// and [`written`](crate::pipeline::Stats::written) stay 0 (the other statistics are kept).
+/// Fragments and writes are not counted: [`Stats::fragments`](crate::stats::Stats::fragments)
+/// and [`written`](crate::stats::Stats::written) stay 0 (the other statistics are kept).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Uncounted;
 
@@ -515,7 +515,7 @@ impl FragmentCount for Uncounted {
 /// A `width × height` depth buffer over a caller-supplied slice.
 ///
 /// ```
-/// use fixed3d::target::{DepthBuffer, DepthFormat};
+/// use fixed3d::buffer::{DepthBuffer, DepthFormat};
 /// let mut values = [0u16; 320 * 16];
 /// let mut depth = DepthBuffer::new(&mut values, 320, 16).unwrap();
 /// depth.clear();

@@ -13,12 +13,12 @@ use super::dither::{Nearest, OrderedDither, Quantize};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::math::SUBPIXEL_SCALE;
-use crate::pipeline::Stats;
 use crate::raster::{
     line_pixels, rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span,
     TriangleSpans,
 };
 use crate::shade::Paint;
+use crate::stats::Stats;
 
 /// One screen triangle to fill: its snapped vertices, their depths and its doubled signed
 /// area, from which a target sets up its rows and the depth interpolation it needs (opaque).
@@ -92,7 +92,7 @@ pub trait RasterTarget {
 /// ```
 /// use embedded_graphics::pixelcolor::Rgb565;
 /// use fixed3d::raster::PixelRect;
-/// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer, RasterTarget};
+/// use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer, RasterTarget};
 /// let (mut c, mut d) = ([Rgb565::new(0, 0, 0); 320 * 16], [0u16; 320 * 16]);
 /// let mut color = FrameBuffer::new(&mut c, 320, 16).unwrap();
 /// let mut depth = DepthBuffer::new(&mut d, 320, 16).unwrap();
@@ -150,7 +150,7 @@ impl<'t, 'a, C, D, Q, T, K> ColorDepth<'t, 'a, C, D, Q, T, K> {
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::Rgb565;
-    /// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer, LessOrEqual};
+    /// use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer, LessOrEqual};
     /// let (mut c, mut d) = ([Rgb565::new(0, 0, 0); 16], [u16::MAX; 16]);
     /// let mut color = FrameBuffer::new(&mut c, 4, 4).unwrap();
     /// let mut depth = DepthBuffer::new(&mut d, 4, 4).unwrap();
@@ -167,7 +167,7 @@ impl<'t, 'a, C, D, Q, T, K> ColorDepth<'t, 'a, C, D, Q, T, K> {
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::Rgb565;
-    /// use fixed3d::target::{ColorDepth, DepthBuffer, FrameBuffer};
+    /// use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
     /// let (mut c, mut d) = ([Rgb565::new(0, 0, 0); 16], [u16::MAX; 16]);
     /// let mut color = FrameBuffer::new(&mut c, 4, 4).unwrap();
     /// let mut depth = DepthBuffer::new(&mut d, 4, 4).unwrap();
@@ -478,7 +478,7 @@ where
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Rgb565};
 /// use fixed3d::raster::PixelRect;
-/// use fixed3d::target::{Direct, RasterTarget};
+/// use fixed3d::buffer::{Direct, RasterTarget};
 /// let mut display = MockDisplay::<Rgb565>::new();
 /// let target = Direct::new(&mut display);
 /// assert_eq!(target.clip(), PixelRect::new(0, 0, 64, 64));
