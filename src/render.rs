@@ -281,8 +281,8 @@ impl<E: fmt::Debug> fmt::Display for RenderError<E> {
 impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 
 /// Storage for one frame's work, sized for the scene: a transformed vertex per vertex of all
-/// models (16 bytes each) and a bin per triangle that can face the camera (12 bytes each).
-/// [`bytes`](Self::bytes) gives its size.
+/// models and a bin per triangle that can face the camera. [`bytes`](Self::bytes) gives its
+/// size.
 ///
 /// Bins are what make bands cheap: each band reads only the triangles that touch its rows. A
 /// frame whose visible triangles do not fit is still drawn right, by walking every triangle

@@ -272,8 +272,7 @@ impl<const N: usize> Lighting<N> {
     }
 
     /// The directional lights, at most `N` as the iterator says: a loop over them then has a
-    /// known bound (for one light a test, not a loop: the torus on Cortex-M4 1% fewer
-    /// instructions, on the M0 0.7%).
+    /// known bound.
     pub(crate) fn lights(&self) -> impl Iterator<Item = &PreparedLight> + Clone {
         self.lights.iter().take(N)
     }

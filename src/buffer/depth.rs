@@ -207,8 +207,7 @@ fn unclamped_u16<C: Copy, T: DepthTest, K: FragmentCount>(
 
 /// The width the u16 loop compares depths in: 16 bits on x86-64, where a compare takes the
 /// stored halfword straight from memory, and 32 on 32-bit cores, where the halfword is loaded
-/// into a register anyway and a 16-bit value would cost a masking instruction (measured:
-/// 16 bits everywhere costs Cortex-M0 2% and the M4 0.6%, 32 bits everywhere x86-64 1.7%).
+/// into a register anyway and a 16-bit value would cost a masking instruction.
 #[cfg(target_pointer_width = "64")]
 type Compared = u16;
 /// The width the u16 loop compares depths in (see the 64-bit definition).
@@ -232,20 +231,17 @@ fn loop_step(step: i64) -> i64 {
 /// multiply and one addition a span, and one addition a row, and steps by `sx`.
 ///
 /// Each rounded step errs by at most half a unit, so a value errs from the exact plane by at
-/// most `(|x − x_r| + |y − y_r|) / 2 + 5/4` units: below 2¹² + 2 for the pipeline's
-/// triangles (2⁻³ of a u16 step; the stored depth stays within one step of the plane, rule
-/// R7, and is the exact plane's rounding at 99.6% of the pixels of the test below, triangles
-/// up to a thousand pixels across), and the walk depends on nothing but the triangle, so a
-/// band draws what the whole frame draws. The exact start it replaces took the plane in
-/// Q1.44 (two divisions with 64-bit quotients: on Cortex-M0 four two-by-one steps of the
-/// reciprocal division, where these two 32-bit quotients take two), its value at each span's
-/// first pixel (a 64-bit product and shift on the M4 and x86-64, two 32-bit products and six
-/// words of quotients and remainders on the M0) and a second rounding of its step.
+/// most `(|x − x_r| + |y − y_r|) / 2 + 5/4` units: below 2¹² + 2 for the pipeline's triangles,
+/// and the walk depends on nothing but the triangle, so a band draws what the whole frame
+/// draws. The exact start it replaces took the plane in Q1.44 (two divisions with 64-bit
+/// quotients: on Cortex-M0 four two-by-one steps of the reciprocal division, where these two
+/// 32-bit quotients take two), its value at each span's first pixel (a 64-bit product and shift
+/// on the M4 and x86-64, two 32-bit products and six words of quotients and remainders on the
+/// M0) and a second rounding of its step.
 ///
-/// 64-bit hosts hold the same values shifted up by 13 bits in 64-bit words, so that their
-/// loop takes the form of a 64-bit product and shift (in 32-bit words the torus measured
-/// 1.7% more instructions on x86-64). The sums stay far below 2⁶³, so shifting back and
-/// truncating to 32 bits gives the same values on every core (rule R10).
+/// 64-bit hosts hold the same values shifted up by 13 bits in 64-bit words, so that their loop
+/// takes the form of a 64-bit product and shift. The sums stay far below 2⁶³, so shifting back
+/// and truncating to 32 bits gives the same values on every core (rule R10).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RoundedRows<W: LoopWord = NativeWord> {
     /// The start at column 0 on the current row (as `W` holds values).
@@ -329,15 +325,14 @@ impl<W: LoopWord> RoundedRows<W> {
         let (nx, ny) = Plane::numerators_given(p, z, short_sides);
         let (sx, sy) = if cfg!(target_pointer_width = "64") {
             // With 64-bit words each step by one division of its numerator's magnitude by the
-            // area's, its sign both signs' (x86-64's frame 0.34% fewer instructions than
-            // making the numerators and the area positive first, as 32-bit cores do).
+            // area's, its sign both signs'.
             steps_over_area(nx, ny, area)?
         } else {
             let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
             // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area.
             // Without a divide instruction (Cortex-M0), for the usual triangle (a doubled
-            // area below 2²⁹, steps below 2³⁰), by two 15-bit digits each: the frame 2.4% fewer
-            // instructions than through a reciprocal to 32 bits, which the others take.
+            // area below 2²⁹, steps below 2³⁰), by two 15-bit digits each (fewer instructions
+            // than through a reciprocal to 32 bits, which the others take).
             let short = if NARROW_CORE {
                 ShortQuotients::new(den).and_then(|by| {
                     Some((by.round_below_2_30(nx << 5)?, by.round_below_2_30(ny << 5)?))
@@ -452,9 +447,8 @@ impl DepthFormat for u32 {
 /// Which fragment wins the depth test: [`Less`] (the default) or [`LessOrEqual`].
 ///
 /// The test is a type, chosen when the target is built
-/// ([`ColorDepth::with_test`](super::ColorDepth::with_test)), so a firmware links the one
-/// pixel loop it uses, and that loop tests no flag (a runtime choice cost the Cortex-M4 and
-/// x86-64 1% of the reference frame, and 170 to 210 bytes of flash).
+/// ([`ColorDepth::with_test`](super::ColorDepth::with_test)), so a firmware links the one pixel
+/// loop it uses, and that loop tests no flag.
 pub trait DepthTest: sealed::Sealed + Copy + Default + core::fmt::Debug {
     /// True when a fragment at the same depth as the stored one wins too.
     const OR_EQUAL: bool;

@@ -259,9 +259,8 @@ where
     /// far)`, which returns the failures so far with the span's added, on every span of a
     /// triangle, and counts the fragments and the writes (fragments less failures) into
     /// `stats`. One count of the fragments that fail (fewer than those that pass) carried
-    /// through the pixel loops, with no sum after each span: 1% to 3.4% of the Cortex-M4's
-    /// frame (by the checkout, see docs/performance.md) and 1% of the M0's against a count
-    /// of writes from zero for each span.
+    /// through the pixel loops, with no sum after each span, costs less than a count of
+    /// writes from zero for each span.
     #[inline(always)]
     fn each_span<G: FnMut() -> C, R: RowStarts>(
         &mut self,

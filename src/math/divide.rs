@@ -167,12 +167,11 @@ const SHIFTED_DIVISOR_BITS: u32 = 17;
 /// The largest shift [`shifted_by_short`] takes.
 const MAX_SHIFT: u32 = 14;
 
-/// `⌊(m · 2^s + ⌊d/2⌋) / d⌋` for `0 < d < 2¹⁷` and `s ≤ 14`, by two 32-bit divisions: with
-/// `m = q·d + r`, it is `q · 2^s + ⌊(r · 2^s + ⌊d/2⌋) / d⌋`, and `r · 2^s + ⌊d/2⌋` lies below
-/// `2¹⁷ · 2¹⁴ + 2¹⁶`, a 32-bit word. This is the magnitude [`div_round`] rounds for a
-/// numerator `±m · 2^s`: the depth gradients of most small triangles (a numerator below 2³²
-/// shifted by 14), in two divides where [`div_by_short`] takes four. (Numerators up to 2⁴⁶ by
-/// one more divide of a 14-bit digit measured slower on the Cortex-M4: 0.2% of the frame.)
+/// `⌊(m · 2^s + ⌊d/2⌋) / d⌋` for `0 < d < 2¹⁷` and `s ≤ 14`, by two 32-bit divisions: with `m =
+/// q·d + r`, it is `q · 2^s + ⌊(r · 2^s + ⌊d/2⌋) / d⌋`, and `r · 2^s + ⌊d/2⌋` lies below `2¹⁷ ·
+/// 2¹⁴ + 2¹⁶`, a 32-bit word. This is the magnitude [`div_round`] rounds for a numerator `±m ·
+/// 2^s`: the depth gradients of most small triangles (a numerator below 2³² shifted by 14), in
+/// two divides where [`div_by_short`] takes four.
 #[inline(always)]
 const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     let (q, r) = (m / d, m % d);
@@ -198,11 +197,9 @@ fn shifted_i32_in_words(n: i64, s: u32, d: u32) -> Option<i32> {
 const FRACTION_DIVISOR_BITS: u32 = 19;
 
 /// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁹` and `0 ≤ n ≤ d` (a
-/// vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁹ within
-/// eight units of the camera); `None` for another `d`. `d` is a word, its range one test (the
-/// Cortex-M4's frame 0.5% fewer instructions than the test of a 64-bit `d`). `n` must lie in
-/// `[0, d]`, which the caller knows (a vertex inside the near and far planes; checking it here
-/// cost the Cortex-M4's frame 0.2%); outside that the result means nothing, but nothing
+/// vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁹ within eight
+/// units of the camera); `None` for another `d`. `d` is a word, its range one test. `n` must
+/// lie in `[0, d]`, which the caller knows; outside that the result means nothing, but nothing
 /// overflows. `n·2³⁰ + ⌊d/2⌋ < 2⁵⁰` is the magnitude `div_round` rounds, and the quotient is at
 /// most 2³⁰.
 #[inline(always)]
@@ -235,11 +232,11 @@ pub(crate) const fn fraction_in_words(n: u32, d: NonZeroU32) -> i64 {
 const fn fraction_by_digits(n: u32, d: NonZeroU32) -> i64 {
     let d = d.get();
     // `div_round_by_short(n << 30, d)` without its sign and saturation, which n ≥ 0 and the
-    // bound need not (measured: 0.5% of the M4's frame), and with three divides instead of
-    // four: the numerator's low 30 bits are zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂,
-    // n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) + r₂·2⁴ + ⌊d/2⌋, whose last part divides to at most 16.
-    // n ≤ d < 2¹⁹: every shifted value below fits a word, and the sum is at most 2³⁰ (the
-    // sums wrap, without meaning, only for an n beyond d).
+    // bound need not, and with three divides instead of four: the numerator's low 30 bits are
+    // zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂, n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) +
+    // r₂·2⁴ + ⌊d/2⌋, whose last part divides to at most 16. n ≤ d < 2¹⁹: every shifted value
+    // below fits a word, and the sum is at most 2³⁰ (the sums wrap, without meaning, only for
+    // an n beyond d).
     let t = n << 13;
     let (q1, r1) = (t / d, t % d);
     let t = r1 << 13;
@@ -309,8 +306,7 @@ impl DivideBy {
     }
 
     /// [`new`](Self::new) of a `d` the caller knows to be positive (a vertex's `w` inside the
-    /// near plane, within 31 bits), without `new`'s tests of it: the Cortex-M4's frame 0.6%
-    /// fewer instructions. Where division is a library routine it prepares no [`Divisor`]
+    /// near plane, within 31 bits), without `new`'s tests of it. Where division is a library routine it prepares no [`Divisor`]
     /// (its divisions then take [`div_round`]): the vertex stage of such cores divides by
     /// `ShortQuotients` instead.
     #[inline(always)]
@@ -359,8 +355,7 @@ impl DivideBy {
     /// instruction when `d` lies below 2¹⁸: the depth gradients of small triangles.
     #[inline(always)]
     pub(crate) fn round_by_short(&self, n: i64) -> i64 {
-        // The 32-bit copy where the divisor is a positive word (else 0): one test of a word
-        // (the Cortex-M4's frame 0.9% fewer instructions than two tests of the 64-bit one).
+        // The 32-bit copy where the divisor is a positive word (else 0): one test of a word.
         if !NARROW_CORE
             && cfg!(target_pointer_width = "32")
             && (self.d32 as u32).wrapping_sub(1) < (1 << SHORT_DIVISOR_BITS) - 1
@@ -503,15 +498,13 @@ pub(crate) struct ShortQuotients {
 
 impl ShortQuotients {
     /// Prepares `d`; `None` unless `0 < d < 2²⁹`. In line: the vertex stage prepares one a
-    /// vertex and the depth walk one a triangle (called, the Cortex-M0's frame 1.4% more).
+    /// vertex and the depth walk one a triangle.
     #[inline(always)]
     pub(crate) fn new(d: i64) -> Option<ShortQuotients> {
         Self::new32(u32::try_from(d).ok()?)
     }
 
-    /// [`new`](Self::new) of a word (a vertex's `w`, which the vertex stage knows to be a
-    /// positive word: the Cortex-M0's frame 0.2% fewer instructions than through `new`'s
-    /// tests of a 64-bit value), one unsigned test of its range.
+    /// [`new`](Self::new) of a word, one unsigned test of its range.
     #[inline(always)]
     pub(crate) fn new32(d: u32) -> Option<ShortQuotients> {
         if d.wrapping_sub(1) >= (1 << 29) - 1 {
@@ -544,12 +537,10 @@ impl ShortQuotients {
     /// `(⌊N / d⌋, N mod d)` from N's bits from `b` up (`m`) and its low word, for `m < 2¹⁶`
     /// and a quotient of at most 2¹⁵, which every caller's numerator meets (the bound is
     /// written where it calls): then the estimate is at most three below (see the type's
-    /// documentation), and three steps correct it. The steps are written out: as a loop of
-    /// up to five, its count in a register, they cost the Cortex-M0's frame 2.1% more. Not
-    /// testing `m` saved the Cortex-M0's frame 1.1% of its instructions, and taking no
-    /// fallback to the exact division (for an estimate the steps would leave short, which no
-    /// caller's is) 0.3% and 220 bytes; another numerator gives a meaningless digit, but
-    /// nothing overflows.
+    /// documentation), and three steps correct it. The steps are written out (a loop
+    /// measured slower), `m` is not tested, and there is no fallback to the exact division
+    /// (for an estimate the steps would leave short, which no caller's is): another numerator
+    /// gives a meaningless digit, but nothing overflows.
     #[inline(always)]
     fn digit(&self, m: u32, low: u32) -> (u32, u32) {
         let d = self.d;
@@ -568,12 +559,11 @@ impl ShortQuotients {
     }
 
     /// [`div_round`]`(n, d)` for `|n| < 2¹⁴·d`, which the caller knows (a vertex's screen
-    /// offset inside the guard band), in words: `a = |n| + d/2` lies below `2¹⁵·d`, so its
-    /// high word is below `2^b` and needs no test (the Cortex-M0's frame 0.24% fewer
-    /// instructions than with one), its bits from `b` up, a digit's `m`, are below 2¹⁵, and
-    /// the quotient, below 2¹⁵, takes its sign in a word. In line: out of line it cost the
-    /// Cortex-M0 1.3% of the frame. Outside that range the quotient means nothing, but nothing
-    /// overflows.
+    /// offset inside the guard band), in words: `a = |n| + d/2` lies below `2¹⁵·d`, so its high
+    /// word is below `2^b` and needs no test, its bits from `b` up, a digit's `m`, are below
+    /// 2¹⁵, and the quotient, below 2¹⁵, takes its sign in a word. In line (out of line measured
+    /// slower). Outside that range the quotient means nothing, but
+    /// nothing overflows.
     #[inline(always)]
     pub(crate) fn round(&self, n: i64) -> i32 {
         let a = n.unsigned_abs() + (self.d / 2) as u64;
@@ -609,12 +599,11 @@ impl ShortQuotients {
         Some(with_sign_of(n, ((q1 << 15) | q0) as u64) as i32)
     }
 
-    /// [`div_round`]`(z · 2³⁰, d)` for `0 ≤ z ≤ d`, which the caller knows (a vertex's depth
-    /// `z / w` in Q1.30, inside the near and far planes; any other `z` gives a meaningless
-    /// quotient), as a long division of two 15-bit digits. In line: called from the vertex
-    /// loop's path in words, it cost the Cortex-M0 1% of the frame. `z` is not checked
-    /// against `d`: the caller knows it (the Cortex-M0's frame 0.9% fewer instructions than
-    /// with the check).
+    /// [`div_round`]`(z · 2³⁰, d)` for `0 ≤ z ≤ d`, which the caller knows (a vertex's depth `z
+    /// / w` in Q1.30, inside the near and far planes; any other `z` gives a meaningless
+    /// quotient), as a long division of two 15-bit digits. In line (called, it measured
+    /// slower). `z` is not checked against
+    /// `d`: the caller knows it.
     #[inline(always)]
     pub(crate) fn round_fraction(&self, z: i64) -> i64 {
         let (d, z) = (self.d, z as u32);
@@ -630,12 +619,9 @@ impl ShortQuotients {
 }
 
 /// `⌊2³¹ / den⌋` for `2¹⁵ < den ≤ 2¹⁶`, from a table seed of 8 bits and one Newton step in
-/// 32-bit words (the steps of [`newton_reciprocal`], in words: shared with it in 64 bits they
-/// cost the Cortex-M0's frame 0.2%). The step leaves the root exact or one below, for every
-/// such `den` (`reciprocal16_is_exact` tries each): one test of the remainder `2³¹ − x·den`
-/// against `den` makes it exact, where a loop of up to four steps either way cost the
-/// Cortex-M0's frame 0.8% more. Outside that range the result means nothing, but nothing
-/// overflows.
+/// 32-bit words. The step leaves the root exact or one below, for every such `den`
+/// (`reciprocal16_is_exact` tries each): one test of the remainder `2³¹ − x·den` against `den`
+/// makes it exact, where a loop of up to four steps either way measured slower. Outside that range the result means nothing, but nothing overflows.
 fn reciprocal16(den: u32) -> u32 {
     // x0 ≈ 2³¹ / den (the table's 2⁴⁷ / (den · 2¹⁶)), below 2¹⁶.
     let x0 = RECIPROCALS
@@ -650,9 +636,8 @@ fn reciprocal16(den: u32) -> u32 {
     x.wrapping_add((rem >= den) as u32)
 }
 
-/// `RECIPROCALS[i] = ⌊2⁴⁷ / ((128.5 + i) · 2²⁴)⌋`: `2⁴⁷ / d` to 8 bits for a normalised `d`
-/// by its top byte (256 bytes), the seed of both [`newton_reciprocal`] and
-/// [`reciprocal16`].
+/// `RECIPROCALS[i] = ⌊2⁴⁷ / ((128.5 + i) · 2²⁴)⌋`: `2⁴⁷ / d` to 8 bits for a normalised `d` by
+/// its top byte, the seed of both [`newton_reciprocal`] and [`reciprocal16`].
 pub(crate) static RECIPROCALS: [u16; 128] = {
     let mut t = [0u16; 128];
     let mut i = 0;

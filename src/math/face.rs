@@ -52,9 +52,7 @@ pub(crate) fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
 /// `b − a` and `c − a` (the mesh's `edge_extent`): below 2¹⁵ the cross product in words on
 /// 32-bit cores needs no test of them either.
 // In line at both its callers (`FlatKept`'s face normals are found by it too) on the 32-bit
-// cores with a long multiply: the torus by `FlatKept` 0.35% fewer instructions on the M4, for
-// 470 bytes. On x86-64 `FlatKept` measured 0.35% fewer too but `Flat` 1% more; on Cortex-M0
-// no fewer, 310 bytes more.
+// cores with a long multiply, where that measured faster; elsewhere it did not.
 #[cfg_attr(
     all(target_pointer_width = "32", target_has_atomic = "32"),
     inline(always)
@@ -82,16 +80,10 @@ pub(crate) fn face_direction(
         map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
     };
     let (u, v) = (edge(b), edge(c));
-    // Edges within ±2¹⁵ on 32-bit cores: the exact cross product in words (Cortex-M0, without
-    // a long multiply: 1.1% of the frame; the M4 0.7% since its edges divide, 1.1% more
-    // before, when its pixel loop then reloaded two values per pixel; on x86-64, where each
-    // edge would be tested, the 64-bit path: 1% fewer instructions). It lies within
-    // ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)` leaves it too: the same direction on every
-    // core. (Halving it from 2³⁰ on, as the normal matrix's path does, cost the M4 1.3% and
-    // the M0 0.2% of the frame.)
+    // Edges within ±2¹⁵ on 32-bit cores: the exact cross product in words. It lies within ±(2³¹
+    // − 2¹⁵), where `shrink_below(…, 31)` leaves it too: the same direction on every core.
     if cfg!(not(target_pointer_width = "64")) && normal_matrix.is_none() {
-        // Every edge of the mesh within ±(2¹⁵ − 1), as the torus': no test of each (the
-        // frame 0.45% fewer instructions on the Cortex-M4, 0.3% on the M0).
+        // Every edge of the mesh within ±(2¹⁵ − 1), as the torus': no test of each.
         if edge_extent < 1 << 15 {
             return cross_in_words(u, v);
         }
@@ -99,9 +91,8 @@ pub(crate) fn face_direction(
             return n;
         }
     }
-    // On x86-64 too for such a mesh, where no edge needs a test: the frame 0.4% fewer
-    // instructions than the 64-bit product and its shift (tested here first, the 32-bit
-    // cores' frames measured 0.1% and 0.3% more).
+    // On x86-64 too for such a mesh, where no edge needs a test (fewer instructions than the
+    // 64-bit product and its shift).
     if cfg!(target_pointer_width = "64") && normal_matrix.is_none() && edge_extent < 1 << 15 {
         return cross_in_words(u, v);
     }

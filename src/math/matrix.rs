@@ -34,21 +34,18 @@ const fn split(v: i32, k: u32) -> (i32, i32) {
 }
 
 /// A matrix prepared for 32-bit vertex transforms (from [`Mat4::split_transform`]), for cores
-/// without a long multiply, where each of [`Mat4::transform_short`]'s twelve 64-bit products
-/// is four multiplies put back together. Each coordinate is split as `x = xh·2^k + xl` (`xl`
-/// its low `k` bits, signed), so that a row's `Σ m·x + t·2¹⁶ + 2¹⁵` is
-/// `2^k·A + L + t·2¹⁶ + 2¹⁵` with `A = Σ m·xh` and `L = Σ m·xl`, two 32-bit products a term:
-/// `k` is as large as keeps `L + 2¹⁵` a word for the matrix's entries, and
-/// `Mat4::split_transform` bounds `A + t·2^(16−k)` and the rounded `L` below 2³¹ for the
-/// mesh's extent. The row's floor over 2¹⁶ is `(A + t·2^(16−k) + ⌊(L + 2¹⁵) / 2^k⌋) >> (16 − k)`
-/// (`2^k·A` and `t·2¹⁶` are multiples of 2^k, so the fraction dropped inside cannot carry),
-/// the rounded row, exactly. The two bounds pull `k` apart (the entries' sums down, the
-/// extent up): a unit-scale scene meets both (the reference view at `k` = 13 or 14, by the
-/// model's rotation), a mesh more than about a thousand units across at unit scale does not,
-/// and takes the general 64-bit transform. (The entries split at bit 15 as well, three
-/// products a term, held for meshes about four times larger, but cost the reference torus's
-/// frame on the Cortex-M0 1.7% more instructions; both kinds, each where it serves, 580
-/// bytes more.)
+/// without a long multiply, where each of [`Mat4::transform_short`]'s twelve 64-bit products is
+/// four multiplies put back together. Each coordinate is split as `x = xh·2^k + xl` (`xl` its
+/// low `k` bits, signed), so that a row's `Σ m·x + t·2¹⁶ + 2¹⁵` is `2^k·A + L + t·2¹⁶ + 2¹⁵`
+/// with `A = Σ m·xh` and `L = Σ m·xl`, two 32-bit products a term: `k` is as large as keeps
+/// `L + 2¹⁵` a word for the matrix's entries, and `Mat4::split_transform` bounds
+/// `A + t·2^(16−k)` and the rounded `L` below 2³¹ for the mesh's extent. The row's floor over
+/// 2¹⁶ is `(A + t·2^(16−k) + ⌊(L + 2¹⁵) / 2^k⌋) >> (16 − k)` (`2^k·A` and `t·2¹⁶` are
+/// multiples of 2^k, so the fraction dropped inside cannot carry), the rounded row, exactly.
+/// The two bounds pull `k` apart (the entries' sums down, the extent up): a unit-scale scene
+/// meets both (the reference view at `k` = 13 or 14, by the model's rotation), a mesh more
+/// than about a thousand units across at unit scale does not, and takes the general 64-bit
+/// transform.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SplitTransform {
     rows: [[i32; 3]; 4],
@@ -261,9 +258,7 @@ impl Mat4 {
     pub(crate) fn transform_short(&self, p: [i32; 3]) -> [i64; 4] {
         let [x, y, z] = p;
         // Each sum starts from its row's translation with the rounding's half added, one
-        // constant of the loop over a mesh's vertices that every product accumulates onto
-        // (the Cortex-M4's SMLAL; its frame 0.5% fewer instructions and 144 bytes less flash
-        // than adding both after the products, x86-64's 0.4%).
+        // constant of the loop over a mesh's vertices that every product accumulates onto.
         let row = |r: &[i32; 4]| {
             let s = (((r[3] as i64) << 16) + (1 << 15))
                 .wrapping_add(mul_wide(r[0], x))

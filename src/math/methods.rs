@@ -214,10 +214,9 @@ impl NewtonDirection {
             p.wrapping_add(1 << 29) >> 30
         };
         // A cosine of unit vectors in Q2.30 (the light's within an ulp of unit length, y less
-        // than 10⁻⁸ above its value): at most 2³⁰·(1 + 10⁻⁸), so the low word holds it. Taken so on
-        // 32-bit cores (the M4's frame 0.7% fewer instructions, the M0's 0.5%, than clamped to
-        // i32::MAX in 64 bits); x86-64 keeps the clamp, which changes nothing there but its
-        // registers (without it the frame measured 0.5% more).
+        // than 10⁻⁸ above its value): at most 2³⁰·(1 + 10⁻⁸), so the low word holds it. Taken
+        // so on 32-bit cores; x86-64 keeps the clamp, which changes nothing there but its
+        // registers.
         if cfg!(target_pointer_width = "64") {
             cos.min(i32::MAX as u64) as i32
         } else {

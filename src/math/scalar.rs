@@ -66,8 +66,7 @@ pub(crate) static BYTE_ZEROS: [u8; 256] = {
 };
 
 /// `v.leading_zeros()` by two comparisons and shifts (binary search, written out), then the top
-/// byte's own count from a table of 256 bytes (the Cortex-M0's frame 0.46% fewer instructions
-/// than a third step and a word of 2-bit counts for the top nibble, 190 bytes more).
+/// byte's own count from a table of 256 bytes.
 #[inline(always)]
 const fn leading_zeros_by_halves(v: u32) -> u32 {
     if v == 0 {
@@ -254,8 +253,8 @@ pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
 }
 
 /// [`mul_wide`] from 16-bit halves: every partial product fits 32 bits. Out of line: in line
-/// at every product the M0's frame measured 0.5% slower and 2 KB larger (its vertex transform
-/// takes `SplitTransform` instead, two 32-bit products a term).
+/// at every product it measured slower and larger (the vertex transform takes
+/// `SplitTransform` instead, two 32-bit products a term).
 #[inline(never)]
 const fn mul_halves(a: i32, b: i32) -> i64 {
     let (ah, al) = (a >> 16, (a & 0xFFFF) as u32);

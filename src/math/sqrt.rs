@@ -58,10 +58,8 @@ pub(crate) const fn sqrt_above(n: u64) -> u64 {
     (root as u64) << k
 }
 
-/// `RSQRT[i] = 2³³ / sqrt(i)`: `1/sqrt(m)` at `m = i·2²⁴`, the knots of [`rsqrt_q45`]'s
-/// linear seed for `m` in `[2²⁸, 2³⁰)`, from 16 to 64 (65 entries, so that any index masked to
-/// 6 bits and the one after it are entries; the first 16, which no `m` of the range reaches,
-/// repeat the 16th; 260 bytes, built at compile time).
+/// `RSQRT[i] = 2³³ / sqrt(i)`: `1/sqrt(m)` at `m = i·2²⁴`, the knots of [`rsqrt_q45`]'s linear
+/// seed for `m` in `[2²⁸, 2³⁰)`, from 16 to 64.
 const RSQRT: [u32; 65] = {
     let mut t = [0u32; 65];
     let mut i = 0;
@@ -90,14 +88,13 @@ pub(crate) fn rsqrt_q45(m: u32) -> u32 {
     // of its bits times the fraction's twelve fits a word.
     let fraction = (m >> 12) & 0xFFF;
     let y = above.wrapping_sub((above.wrapping_sub(below) >> 7).wrapping_mul(fraction) >> 5);
-    // With e = m·y² − 1 (`d` in Q2.30, below 2²⁰), 1 / sqrt(m) = y·(1 − e/2 + 3e²/8 − …):
-    // the factor in Q1.31 is 3·2³⁰ − m·y² (Newton's step) plus 3d²/2³² (`ds` is d / 2⁵, its
-    // square below 2³⁰), and leaves an error of about e³/3 (below 10⁻¹⁰), where Newton's step
-    // alone leaves 3e²/2 (2·10⁻⁷: it had to start from a seed within 1.6% and take two). Every
-    // factor fits 32 bits (y ≤ 2³¹, m·y² / 2⁶⁰ near 1): 32x32→64 products, one widening
-    // multiply each on Cortex-M3/M4. The floors lose less than two units; 4 more in the factor
-    // (y·4 / 2³¹, two to four units, in the constant: no instruction) leave the result at or
-    // above the root.
+    // With e = m·y² − 1 (`d` in Q2.30, below 2²⁰), 1 / sqrt(m) = y·(1 − e/2 + 3e²/8 − …): the
+    // factor in Q1.31 is 3·2³⁰ − m·y² (Newton's step) plus 3d²/2³² (`ds` is d / 2⁵, its square
+    // below 2³⁰), and leaves an error of about e³/3 (below 10⁻¹⁰), where Newton's step alone
+    // leaves 3e²/2. Every factor fits 32 bits (y ≤ 2³¹, m·y² / 2⁶⁰ near 1): 32x32→64 products,
+    // one widening multiply each on Cortex-M3/M4. The floors lose less than two units; 4 more
+    // in the factor (y·4 / 2³¹, two to four units, in the constant: no instruction) leave the
+    // result at or above the root.
     let t = (mul_wide_u32(m, square_shr31(y)) >> 29) as u32;
     let ds = (t.wrapping_sub(1 << 30) as i32) >> 5;
     let second = (ds.wrapping_mul(ds) as u32).wrapping_mul(3) >> 22;

@@ -154,8 +154,7 @@ pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
     }
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     // Products of i32 factors lie in [−2⁶² + 2³¹, 2⁶²], so a difference of two lies within
-    // ±(2⁶³ − 2³¹): no overflow, and no clamp (on Cortex-M0 92 bytes less flash than
-    // saturating differences).
+    // ±(2⁶³ − 2³¹): no overflow, and no clamp.
     [
         mul_wide(a1, b2).wrapping_sub(mul_wide(a2, b1)),
         mul_wide(a2, b0).wrapping_sub(mul_wide(a0, b2)),

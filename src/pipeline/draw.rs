@@ -29,10 +29,9 @@ fn area2(p: &[ScreenPoint; 3]) -> i64 {
 
 /// [`area2`] of a triangle whose vertices all lie inside every clip plane (outcode 0): each
 /// within `GUARD` sub-pixels of the screen centre (a rounded quotient of at most `GUARD`, whose
-/// every snapping step divides it: see `outcode_and_project`), so each side within
-/// ±2·`GUARD`, below 2¹⁵. On cores without a long multiply the cross product in words then
-/// needs no test of the sides, which `area2` makes (the Cortex-M0's frame 0.3% fewer
-/// instructions, the `wire` preset's 0.4%).
+/// every snapping step divides it: see `outcode_and_project`), so each side within ±2·`GUARD`,
+/// below 2¹⁵. On cores without a long multiply the cross product in words then needs no test of
+/// the sides, which `area2` makes.
 #[inline(always)]
 fn inside_area2(p: &[ScreenPoint; 3]) -> i64 {
     if NARROW_CORE {
@@ -54,10 +53,7 @@ fn facing_kept(cull: Cull, area: i64) -> bool {
 }
 
 /// True when a primitive of this signed area is drawn; otherwise counts it as degenerate (zero
-/// area) or culled. The drawn case is decided first, by [`facing_kept`] (0.5% fewer
-/// instructions per frame on the Cortex-M4, 0.4% on the M0, 0.3% on x86-64 than the zero test
-/// first; on Cortex-M, whose walk reads the mode at run time, the M4's 0.3% fewer again than
-/// a zero test before the mode's).
+/// area) or culled. The drawn case is decided first, by [`facing_kept`].
 #[inline(always)]
 fn kept(cull: Cull, area: i64, stats: &mut Stats) -> bool {
     if facing_kept(cull, area) {
@@ -117,14 +113,12 @@ struct ObjectSetup<'o, const N: usize> {
     normal_matrix: [[i32; 3]; 3],
     /// For flat shading, the lights seen from model space when the model matrix is a rotation
     /// times a scale (`in_model_space`: face normals then need no normal matrix), else the
-    /// scene's: one place for every face to read them (choosing per face between this and
-    /// the scene's took x86-64's frame 0.3% more instructions).
+    /// scene's: one place for every face to read them.
     lighting: Lighting<N>,
     in_model_space: bool,
     /// The mesh's kept face normals, where the shading reads them ([`FlatKept`]): lit in model
     /// space, by [`Normalize::Newton`] (what they keep); none otherwise. An empty slice rather
-    /// than `None`: a front face's normal is one bounds test (the Cortex-M4's frame 0.28% fewer
-    /// instructions, the M0's 0.08%, x86-64's 0.08%).
+    /// than `None`: a front face's normal is one bounds test.
     ///
     /// [`FlatKept`]: crate::shade::FlatKept
     face_normals: &'o [FaceNormal],
@@ -252,9 +246,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// frame or band, or a [`Direct`](crate::buffer::Direct) draw target). Returns what was
     /// drawn, or the target's first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
-        // One walk per culling mode on x86-64 (its frame 0.5% fewer instructions); on Cortex-M
-        // one for all, reading the mode (per mode the M0 took 1.4% more instructions and 1.4 KB
-        // more flash, the M4 0.2% fewer for 1.3 KB).
+        // One walk per culling mode on x86-64; on Cortex-M one for all, reading the mode.
         if cfg!(target_pointer_width = "64") {
             match self.frame.cull {
                 Cull::Back => self.walk::<T, BACK>(target),
@@ -277,8 +269,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         };
         let mut stats = Stats::default();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
-        // Found once per drawing, not per triangle: the frame 0.35% fewer instructions on the
-        // Cortex-M4F, 0.3% on x86-64, 0.1% on the M0.
+        // Found once per drawing, not per triangle.
         let clip = target.clip();
         let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
         for setup in self.objects(band) {
@@ -311,10 +302,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             bump(&mut stats.invalid);
             return Ok(());
         };
-        // Inside every plane first (the usual case), then outside one of them. An
-        // object that `prepare` found inside every plane reads no outcode (the frame
-        // 0.4% fewer instructions on the Cortex-M4F, 0.35% on the M0, 0.7% on x86-64;
-        // for wireframes the same test measured slower on the M4).
+        // Inside every plane first (the usual case), then outside one of them. An object that
+        // `prepare` found inside every plane reads no outcode.
         if inside || a.outcode | b.outcode | c.outcode == 0 {
             // Culled before anything else is gathered: half the triangles of a closed
             // mesh end here.
@@ -324,8 +313,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             }
             // Written out: at the firmware's opt-level "s" `array::map` stays a loop.
             let v = [(a.point(), a.z), (b.point(), b.z), (c.point(), c.z)];
-            // Vertex colours matter only to per-vertex shading: the others share one
-            // array of zeros, which no triangle stores (Cortex-M4: 1% of the frame).
+            // Vertex colours matter only to per-vertex shading: the others share one array of
+            // zeros, which no triangle stores.
             let lit;
             let colors = if S::PER_VERTEX {
                 let rgb = |v: &ScreenVertex| map3(v.rgb, |c| (c as i32) << 8);
@@ -334,9 +323,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             } else {
                 &NO_COLORS
             };
-            // Every side short (see `inside_area2`): what only Cortex-M0 reads (false
-            // elsewhere, as from the clipper, so the compiler drops the argument: as
-            // true everywhere it cost the M4 0.13% of its frame).
+            // Every side short (see `inside_area2`): what only Cortex-M0 reads.
             let short_sides = NARROW_CORE;
             self.fill_face(
                 target,
@@ -481,11 +468,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         }
     }
 
-    /// Clips a triangle that crosses a clip plane (`planes`: those its vertices are outside
-    /// of) and fills the fan of what is left. Few triangles need it: out of line, its code no
-    /// longer moves the registers of the triangle walk's loop (x86-64 0.6% of the frame,
-    /// Cortex-M4 0.17% and 416 bytes). On Cortex-M0 forced out of line measured 0.45% more;
-    /// at the compiler's choice 0.12% more, for 60 bytes less.
+    /// Clips a triangle that crosses a clip plane (`planes`: those its vertices are outside of)
+    /// and fills the fan of what is left. Few triangles need it: out of line, its code no
+    /// longer moves the registers of the triangle walk's loop (on Cortex-M0, where that measured
+    /// slower, the compiler chooses).
     #[cfg_attr(
         not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
         inline(never)
@@ -568,8 +554,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             normalize: self.frame.precision.normalize(),
             vertices: v,
             // Read by per-vertex shading only: for the others the argument is dead, and the
-            // compiler drops it from the call (the Cortex-M4F's frame 0.19% fewer instructions
-            // and 100 bytes less flash, the M0's 0.08% and 92 bytes; x86-64 the same).
+            // compiler drops it from the call.
             colors: if S::PER_VERTEX { colors } else { &NO_COLORS },
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,

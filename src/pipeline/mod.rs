@@ -213,10 +213,9 @@ impl Frame {
             // Clip coordinates known to need no reduction (every unit-scale scene).
             let fits = clip_from_model.fits_32_bits(extent);
             // Every vertex known inside every plane (an object on screen and beyond the near
-            // plane): no vertex is tested against them (the reference frame 2% fewer
-            // instructions on every core). The test costs about what it saves 130 vertices on
-            // the Cortex-M0 (about 10,000 instructions), 110 on the M4 (about 5,000): smaller
-            // meshes test each vertex.
+            // plane): no vertex is tested against them. The test costs about what it saves 130
+            // vertices on the Cortex-M0, 110 on the M4 (about 5,000): smaller meshes test each
+            // vertex.
             let known = if fits && object.mesh.positions().len() >= SPHERE_TEST_VERTICES {
                 map.known(&clip_from_model, object.mesh.radius())
             } else {
@@ -237,17 +236,13 @@ impl Frame {
                 let (code, pt, z) = if !NARROW_CORE && fits {
                     // Known short (`fits` implies the extent below 2²⁹): where products are
                     // long multiplies, one path from the transform to the projection, whose
-                    // coordinates then stay in registers (x86-64 0.7%, Cortex-M4 1.6% of the
-                    // frame; on the M4 with the projection in line, see `outcode_and_project`).
+                    // coordinates then stay in registers.
                     let c = clip_from_model.transform_short(p.to_bits());
                     outcode_and_project(c, &map, true, known)
                 } else if let (Some(h), Known::InWords) = (&split, known) {
                     // Known inside in words (the reference torus) on cores without a long
                     // multiply: the transform's words projected in line, without the general
-                    // path's call and its 64-bit coordinates (the Cortex-M0's frame 1.6%
-                    // fewer instructions, for about 800 bytes; with one transform before
-                    // both paths 0.9%, for 500, both measured with the three-product transform
-                    // that `SplitTransform` replaced).
+                    // path's call and its 64-bit coordinates.
                     let (pt, z) = project_words(h.transform_words(p.to_bits()), &map);
                     (0, pt, z)
                 } else {

@@ -289,8 +289,7 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 /// to lie strictly within ±2³¹ (see `Mat4::fits_32_bits`): nothing to reduce. `known` is what
 /// holds for the vertex before it is tested (see [`Known`]).
 // In line on cores with a long multiply, where the vertex loop calls it on its path from a
-// transform known to fit 32 bits (the coordinates stay in registers: the Cortex-M4's frame 1.6%
-// fewer instructions); on the others at the compiler's choice (forced: Cortex-M0 0.6% more).
+// transform known to fit 32 bits; on the others at the compiler's choice.
 #[cfg_attr(
     not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
     inline(always)
@@ -349,9 +348,8 @@ pub(crate) fn outcode_and_project(
 }
 
 /// [`outcode_and_project`]'s quotients on cores without a divide instruction: short quotients
-/// by w in words (w below 2²⁹, every ordinary scene; 6% of the Cortex-M0's frame) instead of a
-/// reciprocal to 32 bits, their numerators within the band and the planes as they require
-/// (untested there).
+/// by w in words instead of a reciprocal to 32 bits, their numerators within the band and the
+/// planes as they require (untested there).
 #[inline(always)]
 fn short_quotients(xh: i64, yh: i64, z: i64, w: i64) -> (i64, i64, i64) {
     match ShortQuotients::new32(w as u32) {
@@ -385,8 +383,7 @@ pub(crate) fn project_words(c: [i32; 4], m: &ScreenMap) -> (ScreenPoint, i32) {
 
 /// [`outcode_and_project`] where the vertex loop does not take its in-line path for coordinates
 /// known to fit: on 32-bit cores with a long multiply by [`outcode_and_project_by_planes`], no
-/// second copy of the hot path (the M4's flash: 480 bytes less; on x86-64 the same call
-/// measured 0.7% more instructions in the default build, so it keeps the general one).
+/// second copy of the hot path.
 #[inline(always)]
 pub(crate) fn outcode_and_project_unfit(
     c: [i64; 4],
@@ -424,7 +421,7 @@ pub(crate) fn outcode_and_project_by_planes(c: [i64; 4], m: &ScreenMap) -> (u8, 
 
 /// [`project`] of reduced coordinates, from `x·half_w`, `y·half_h`, `z` and `w`. Out of line on
 /// Cortex-M0, where only clipped vertices and coarser snapping reach it: in line, the vertex
-/// loop's registers moved around it (0.2% more instructions per frame).
+/// loop's registers moved around it.
 #[cfg_attr(
     not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
     inline(always)

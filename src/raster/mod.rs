@@ -161,7 +161,7 @@ pub(crate) fn doubled_area(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i6
         }
     }
     if cfg!(target_pointer_width = "64") {
-        // Differences taken in 64 bits: measured 6 instructions fewer per call on x86-64.
+        // Differences taken in 64 bits (fewer instructions on x86-64).
         let d = |p: i32, q: i32| p as i64 - q as i64;
         return d(b.x, a.x) * d(c.y, a.y) - d(c.x, a.x) * d(b.y, a.y);
     }
@@ -169,10 +169,9 @@ pub(crate) fn doubled_area(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i6
 }
 
 /// [`doubled_area`] from 32-bit sides (coordinates within ±2²⁴), as 32-bit cores take it: the
-/// second product accumulated onto the first with one side negated, one widening multiply
-/// and one multiply-accumulate on Cortex-M3/M4 where a difference of products takes two
-/// instructions more (the M4's frame 0.8% fewer instructions, the M0's 0.25%: its triangle
-/// walk's registers). Tested on every host.
+/// second product accumulated onto the first with one side negated, one widening multiply and
+/// one multiply-accumulate on Cortex-M3/M4 where a difference of products takes two
+/// instructions more. Tested on every host.
 #[inline(always)]
 fn area_in_words(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i64 {
     let (ux, vy) = (b.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
@@ -253,14 +252,11 @@ fn small_floor_divmod(n: i64, d: i64) -> Option<(i64, i64)> {
 
 /// Quotients [`small_floor_divmod32`] finds by subtraction before a library division, for lines
 /// (after [`small_floor_divmod`]'s −1 to 1): many lines are flat, and the turns a larger
-/// quotient takes before the division are lost (on Cortex-M0 the `wire` preset 1.6% fewer
-/// instructions with 2 than with 8, 3.8% more with 1).
+/// quotient takes before the division are lost.
 const SHORT_QUOTIENT: i32 = 2;
 
-/// [`SHORT_QUOTIENT`] for a triangle's edges, whose quotients are the pixels a row steps and the
-/// first row's offset: with 16 the M0's reference frame takes 0.4% fewer instructions than
-/// with 8 (32: 0.5%, where an edge as flat as that costs up to 100 instructions more before
-/// the division); for lines, many of them flatter, 16 cost the `wire` preset 3.6% more than 2.
+/// [`SHORT_QUOTIENT`] for a triangle's edges, whose quotients are the pixels a row steps and
+/// the first row's offset (16 measured best there; lines, many of them flatter, keep 2).
 const EDGE_SHORT_QUOTIENT: i32 = 16;
 
 /// [`floor_divmod`] of 32-bit operands (`d > 0`) for quotients in `[−SHORT, SHORT)` (shallow
@@ -505,12 +501,10 @@ impl FractionStepper {
 
 /// [`CeilStepper`]'s walk of `ceil(N(k) / D)` where the core divides words in one instruction
 /// (Cortex-M3/M4): the numerator itself steps, one addition a row, and each value is one
-/// division, `b + ⌊(N(k) − b·D + D − 1) / D⌋`, of a base `b` the caller chooses so that
-/// `N(k) − b·D` stays in `[0, 2³² − D]` for every `k` it walks: the word then holds the whole
+/// division, `b + ⌊(N(k) − b·D + D − 1) / D⌋`, of a base `b` the caller chooses so that `N(k) −
+/// b·D` stays in `[0, 2³² − D]` for every `k` it walks: the word then holds the whole
 /// numerator, exactly. One addition a step, no branch, and four words of state that the row
-/// loop only reads but one, where the exact stepper keeps five and corrects its remainder
-/// (Cortex-M4: 5.8% fewer instructions per frame and 450 bytes less flash; its divide takes 2
-/// to 12 cycles where most instructions take one, so in cycles the gain is smaller).
+/// loop only reads but one, where the exact stepper keeps five and corrects its remainder.
 #[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct DivideStepper {
@@ -578,9 +572,8 @@ fn packed_quotient(v: i64, d: i64) -> u64 {
 fn packed_quotient32(v: i32, d: i64) -> u64 {
     // |v·2³²| ≤ 2⁶³, and the sum stays within i64 (d − 1 < 2³¹, and v·2³² ≤ 2⁶³ − 2³²).
     let n = ((v as i64) << 32) + (d - 1);
-    // ⌊n / d⌋ by one unsigned division (`floor_div`'s signed one and its correction took
-    // about 12 instructions more): for n < 0, !n = −n − 1 = q·d + r with 0 ≤ r < d, so
-    // n = (−q − 1)·d + (d − 1 − r) and ⌊n / d⌋ = −q − 1 = !q.
+    // ⌊n / d⌋ by one unsigned division: for n < 0, !n = −n − 1 = q·d + r with 0 ≤ r < d, so n =
+    // (−q − 1)·d + (d − 1 − r) and ⌊n / d⌋ = −q − 1 = !q.
     let sign = n >> 63;
     let q = core::num::NonZeroU64::new(d as u64).map_or(0, |d| (n ^ sign) as u64 / d);
     q ^ sign as u64

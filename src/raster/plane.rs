@@ -67,10 +67,8 @@ impl Plane {
     }
 
     /// [`numerators`](Self::numerators) as differences of products, or with `SUMS` as sums of
-    /// products with one side of each negated: what Cortex-M3/M4 take (a widening multiply
-    /// and a multiply-accumulate, where a difference takes two instructions more: the M4's
-    /// frame 0.5% fewer instructions; as sums the M0's took 0.17% more and x86-64's 0.27%
-    /// more). Both tested on every host.
+    /// products with one side of each negated: what Cortex-M3/M4 take. Both tested on every
+    /// host.
     #[inline(always)]
     fn numerators_as<const SUMS: bool>(
         p: &[ScreenPoint; 3],

@@ -40,14 +40,14 @@ use crate::math::{mul_wide, SUBPIXEL_SCALE};
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
 
-/// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`], one addition a row
-/// (x86-64: 5% fewer instructions per frame), which a triangle re-seeds from its vertices every
-/// [`fraction_rows`] rows (triangles the pipeline draws never need it: at most 2¹² rows of edges
-/// below 2¹⁶ sub-pixels); on 32-bit cores that divide words in one instruction (Cortex-M3/M4; told
-/// apart as in [`NARROW_CORE`](crate::math::NARROW_CORE)) [`DivideStepper`], one addition and one
-/// division a row, re-seeded every [`division_rows`] rows (never for triangles the pipeline draws);
-/// elsewhere the exact [`CeilStepper`](super::CeilStepper), whose set-up needs no 64-bit division
-/// (a library routine on 32-bit cores).
+/// The walk of an edge's span ends: on 64-bit hosts [`FractionStepper`], one addition a row,
+/// which a triangle re-seeds from its vertices every [`fraction_rows`] rows (triangles the
+/// pipeline draws never need it: at most 2¹² rows of edges below 2¹⁶ sub-pixels); on 32-bit
+/// cores that divide words in one instruction (Cortex-M3/M4; told apart as in
+/// [`NARROW_CORE`](crate::math::NARROW_CORE)) [`DivideStepper`], one addition and one division
+/// a row, re-seeded every [`division_rows`] rows (never for triangles the pipeline draws);
+/// elsewhere the exact [`CeilStepper`](super::CeilStepper), whose set-up needs no 64-bit
+/// division (a library routine on 32-bit cores).
 #[cfg(target_pointer_width = "64")]
 pub(crate) type EdgeWalk = FractionStepper;
 /// The walk of an edge's span ends: see the 64-bit definition.
@@ -132,16 +132,15 @@ pub fn triangle_spans(v: [ScreenPoint; 3], clip: PixelRect) -> TriangleSpans {
     spans_in_range(v, clip, area, seed_rows)
 }
 
-/// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled signed
-/// area (in the given order, see `doubled_area`) the caller has, not zero, and whose edges walk
-/// `seed_rows` rows from each set-up ([`division_rows`]; only [`DivideStepper`] edges need it,
-/// others take `u32::MAX`). The pipeline's triangles, whose vertices lie within
+/// [`triangle_spans`] of points within ±[`COORD_LIMIT`](super::COORD_LIMIT) whose doubled
+/// signed area (in the given order, see `doubled_area`) the caller has, not zero, and whose
+/// edges walk `seed_rows` rows from each set-up ([`division_rows`]; only [`DivideStepper`]
+/// edges need it, others take `u32::MAX`). The pipeline's triangles, whose vertices lie within
 /// ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT), pass `u32::MAX` on every core: that is their
-/// `division_rows` (their width and height are at most 2¹⁶ − 32), and in line it is a constant, so
-/// that the row loop carries no check. Neither the area nor `clip` is tested here: the pipeline
-/// draws no triangle of zero area, and a `clip` without rows or columns holds no span of any
-/// triangle (tested by [`triangle_spans`] instead: x86-64's frame 0.9% fewer instructions, the
-/// Cortex-M4's 0.5%, the M0's 0.3%).
+/// `division_rows` (their width and height are at most 2¹⁶ − 32), and in line it is a constant,
+/// so that the row loop carries no check. Neither the area nor `clip` is tested here: the
+/// pipeline draws no triangle of zero area, and a `clip` without rows or columns holds no span
+/// of any triangle.
 #[cfg_attr(
     all(target_pointer_width = "32", target_has_atomic = "32"),
     inline(always)
@@ -160,12 +159,8 @@ pub(crate) fn spans_in_range(
 
 /// A triangle's rows in a clip rectangle before any edge is set up ([`rows_in_range`]): its
 /// vertices sorted by y, its first row and the row past its last, the middle vertex's row
-/// clamped to them, and the side of the long edge. Its spans come from
-/// [`spans`](Self::spans); for a target's own row loop its runs from `runs`,
-/// each edge set up where the loop reads it. (Where the spans were set up first and their
-/// edges then copied into the loop's block, the frame took 1.9% more instructions on x86-64,
-/// 0.8% on the Cortex-M0, 0.3% on the M4; on x86-64 the rows and the runs are set up out of
-/// line, as the spans were, and forced in line they cost 1.9% more.)
+/// clamped to them, and the side of the long edge. Its spans come from [`spans`](Self::spans);
+/// for a target's own row loop its runs from `runs`, each edge set up where the loop reads it.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct TriangleRows {
     v: [ScreenPoint; 3],
@@ -313,13 +308,11 @@ fn edge(p: ScreenPoint, q: ScreenPoint, py: i32, _rows: u32) -> EdgeWalk {
     EdgeWalk::new(mul_wide(x, dy) + mul_wide(dx, t), den, step)
 }
 
-/// An edge `p → q` at row `py` as the numerator `N = (p.x − 8)·dy + dx·t` over `D = 16·dy`
-/// (`t = 16·py + 8 − p.y`, the sample line's offset from `p`), whose ceiling is the span end
+/// An edge `p → q` at row `py` as the numerator `N = (p.x − 8)·dy + dx·t` over `D = 16·dy` (`t
+/// = 16·py + 8 − p.y`, the sample line's offset from `p`), whose ceiling is the span end
 /// `ceil((x(y) − 8) / 16)`: `(dx, dy, N's first term's factor p.x − 8, t)`. Every edge walk
 /// starts from these. `dy` is positive for every edge with rows (a row's sample line lies in
-/// `[p.y, q.y)`); a caller that divides by it keeps it so itself. (The Cortex-M4's
-/// [`edge_by_division`] needs no guard, its stepper keeping its denominator positive: its
-/// frame 1% fewer instructions than with the guard here.)
+/// `[p.y, q.y)`); a caller that divides by it keeps it so itself.
 #[inline(always)]
 fn edge_terms(p: ScreenPoint, q: ScreenPoint, py: i32) -> (i32, i32, i32, i32) {
     let dx = q.x.wrapping_sub(p.x);
@@ -420,10 +413,9 @@ fn after_rows(y: i32, rows: u32) -> i32 {
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
 fn reseed_row(y: i32, y_end: i32, dy: i32) -> i32 {
-    // An edge at most 2¹⁵ sub-pixels tall, by one comparison: its rows (at most dy/16 + 1
-    // pixel centres lie in its dy sub-pixels) times its denominator less one stay below
-    // (dy/16 + 1)·16·dy = dy² + 16·dy ≤ 2³⁰ + 2¹⁹, within 2³² (x86-64's frame 0.6% fewer
-    // instructions than the product below).
+    // An edge at most 2¹⁵ sub-pixels tall, by one comparison: its rows (at most dy/16 + 1 pixel
+    // centres lie in its dy sub-pixels) times its denominator less one stay below (dy/16 +
+    // 1)·16·dy = dy² + 16·dy ≤ 2³⁰ + 2¹⁹, within 2³².
     if (dy as u32) <= 1 << 15 {
         return i32::MAX;
     }
@@ -585,8 +577,7 @@ impl TriangleSpans {
     }
 
     /// [`for_each_row`](Self::for_each_row) in two runs of rows, above and below the middle
-    /// vertex's row, with no per-row check for the switch of the short edge: on 64-bit hosts
-    /// (x86-64: 6% fewer instructions per frame than one by one).
+    /// vertex's row, with no per-row check for the switch of the short edge: on 64-bit hosts.
     #[inline(always)]
     fn rows_in_runs(mut self, mut f: impl FnMut(i32, i32)) {
         loop {
@@ -616,10 +607,9 @@ impl TriangleSpans {
         }
     }
 
-    /// [`for_each_row`](Self::for_each_row) in one loop that checks for the split on every
-    /// row: on 32-bit cores, where entering each of two runs moves the row loop's state
-    /// between stack slots (Cortex-M0: 0.7% fewer instructions per frame than in runs, the
-    /// M4 1.3%).
+    /// [`for_each_row`](Self::for_each_row) in one loop that checks for the split on every row:
+    /// on 32-bit cores, where entering each of two runs moves the row loop's state between
+    /// stack slots.
     #[inline(always)]
     fn rows_one_by_one(mut self, mut f: impl FnMut(i32, i32)) {
         while self.y < self.y_end {
@@ -628,8 +618,8 @@ impl TriangleSpans {
             self.reseed_when_due();
             let (x0, x1) = self.ends();
             // Where edges divide (Cortex-M3/M4), stepped before the row's span: the span loop
-            // then keeps its colour in a register, where the edges' words would stay live across
-            // it (the M4's frame 0.7%; Cortex-M0 0.1% more).
+            // then keeps its colour in a register, where the edges' words would stay live
+            // across it.
             if cfg!(all(target_pointer_width = "32", target_has_atomic = "32")) {
                 self.step_edges();
                 f(x0, x1);
@@ -650,10 +640,8 @@ impl TriangleSpans {
     }
 
     /// Moves both edges down one row. Out of line on 64-bit hosts: the row loop's edges then
-    /// live in memory across the pixel loop, which keeps its step and colour in registers
-    /// (x86-64: 3.3% fewer instructions per frame, 4.8% in the default build); in line on
-    /// 32-bit cores, where the call costs more than it frees (Cortex-M0 and M4: 1% more out of
-    /// line).
+    /// live in memory across the pixel loop, which keeps its step and colour in registers; in
+    /// line on 32-bit cores, where the call costs more than it frees.
     #[cfg_attr(target_pointer_width = "64", inline(never))]
     #[cfg_attr(not(target_pointer_width = "64"), inline(always))]
     fn step_edges(&mut self) {

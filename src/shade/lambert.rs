@@ -28,8 +28,7 @@ fn lambert_by<const N: usize>(
     cosine: impl Fn(&PreparedLight) -> i32,
 ) -> Rgb888 {
     // Grey lights beyond [0, 1] take one sum in 64 bits on x86-64 and the per-channel sums on
-    // 32-bit cores (there a path of their own cost 520 bytes of flash; on x86-64 the frame
-    // measured 1.2% more instructions without it, its registers moved around the paths).
+    // 32-bit cores.
     let one_sum = if cfg!(target_pointer_width = "64") {
         lighting.is_grey()
     } else {
@@ -102,9 +101,8 @@ fn term(channel: i64, d: i32) -> i64 {
 
 /// [`term`] in 32-bit words for a channel in [0, 1] (the usual light) and `d ≥ 0`, `None`
 /// otherwise: on cores without a long multiply (Cortex-M0) by d's halves instead of a 64-bit
-/// product (the frame 0.4% fewer instructions; tested on every host). `c·d = hi·2¹⁶ + lo` with
-/// `hi = c·⌊d / 2¹⁶⌋ < 2³¹` and `lo = c·(d mod 2¹⁶) < 2³²`, and its floor over 2³⁰ is that of
-/// `hi + ⌊lo / 2¹⁶⌋` over 2¹⁴.
+/// product. `c·d = hi·2¹⁶ + lo` with `hi = c·⌊d / 2¹⁶⌋ < 2³¹` and `lo = c·(d mod 2¹⁶) < 2³²`,
+/// and its floor over 2³⁰ is that of `hi + ⌊lo / 2¹⁶⌋` over 2¹⁴.
 #[inline(always)]
 fn term_by_halves(channel: i64, d: i32) -> Option<i64> {
     if !(0..=1 << 16).contains(&channel) || d < 0 {
@@ -205,11 +203,10 @@ pub(crate) fn kept_face_color<const N: usize>(
 }
 
 /// Lambert of a face whose direction is `n` (any i32 components but `i32::MIN`, as
-/// [`face_direction`] gives). A face that turns from every light gets the ambient colour without
-/// being normalised: its direction's products with the lights are all ≤ 0, so Lambert adds nothing.
-/// With [`Normalize::Newton`] (the default) no unit normal is formed: each light's cosine is the
-/// direction's product with the light over its length ([`NewtonDirection`]; measured 1.7% fewer
-/// instructions per frame on the Cortex-M0, 0.6% on the M4, 0.3% on x86-64, the same colours).
+/// [`face_direction`] gives). A face that turns from every light gets the ambient colour
+/// without being normalised: its direction's products with the lights are all ≤ 0, so Lambert
+/// adds nothing. With [`Normalize::Newton`] (the default) no unit normal is formed: each
+/// light's cosine is the direction's product with the light over its length.
 #[inline(always)]
 fn face_lambert<const N: usize>(
     base: Rgb888,
@@ -221,7 +218,7 @@ fn face_lambert<const N: usize>(
     let faces = |l: &[i32; 3]| dot_is_positive(n, *l);
     // Every case but Newton's leaves through the one `lambert` below: with a second call
     // (an early return for faces turned away) it and the reciprocal square root left the
-    // line, 300 to 350 bytes more flash.
+    // line and took more flash.
     let unit = if !lighting.lights().any(|l| faces(&l.direction)) {
         None
     } else if method == Normalize::Newton {

@@ -61,9 +61,7 @@ pub struct FaceInputs<'a> {
 impl FaceInputs<'_> {
     /// Model-space positions of the three vertices (raw Q16.16). `Mesh::new` checked every
     /// index against the positions; here one test of the largest bounds the three reads (the
-    /// compiler drops their own tests): x86-64's frame 0.5% fewer instructions than a test of
-    /// each with a zero default, which it had, and the Cortex-M cores' the same as with each
-    /// index clamped to the last position, which they had.
+    /// compiler drops their own tests).
     #[inline]
     fn model(&self) -> [[i32; 3]; 3] {
         let [a, b, c] = *self.indices;
@@ -114,8 +112,7 @@ pub struct Unlit;
 pub struct Flat;
 
 /// [`Flat`] from the face normals a mesh keeps ([`Mesh::with_face_normals`]): the same colours,
-/// without each drawn face's cross product and square root every frame (the reference torus:
-/// 8.3% of the Cortex-M4F's frame, 8.6% of the M0's, 8.0% of x86-64's). Faces of a mesh that
+/// without each drawn face's cross product and square root every frame. Faces of a mesh that
 /// keeps none, faces lit in world space (a model matrix that is not a rotation times a uniform
 /// scale), faces under another [`Normalize`] method than the default and faces the kept normal
 /// cannot decide (see [`FaceNormal`]) are lit as [`Flat`] lights them. A type of its own:
