@@ -53,7 +53,7 @@ if [[ -n "${HOST_GOAL:-}" ]] && ! awk -v h="$headline" -v n="$frames" -v g="$HOS
 fi
 if [[ $doc == 1 ]]; then
     # The Cortex-M rows come from footprint.md, which bench/mcu/update_footprint.py writes.
-    mcu() { grep -E "^\| .$1. \| .* \| $2 \|" docs/footprint.md | awk -F'|' '{v=$8; gsub(/[ ,]/,"",v); printf "%.3f M", v/1e6}'; }
+    mcu() { grep -E "^\| .$1. \|.*\| $2 \|" docs/footprint.md | awk -F'|' '{v=$8; gsub(/[ ,]/,"",v); printf "%.3f M", v/1e6}'; }
     cat >docs/performance.md <<DOC
 # Performance: the reference scene
 

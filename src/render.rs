@@ -34,7 +34,7 @@ use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Drawable;
 
-use crate::buffer::{BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
+use crate::buffer::{fill, BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
 use crate::camera::{Camera, CameraError};
 use crate::math::{Angle, Mat4, Number, Scalar, Vec3};
 use crate::mesh::{Mesh, Object};
@@ -436,8 +436,8 @@ where
             else {
                 break;
             };
-            color.fill(background);
-            depth.fill(D::FAR);
+            fill(color, background);
+            fill(depth, D::FAR);
             let band = frame
                 .draw_band(first as u32, color, depth)
                 .map_err(|_| RenderError::BuffersTooSmall { row: width })?;
@@ -629,10 +629,8 @@ impl<'f> PreparedFrame<'f> {
             let n = model.mesh.positions().len();
             let cache = self.vertices.get(offset..offset + n).unwrap_or(&[]);
             offset += n;
-            let run = bins
-                .iter()
-                .position(|b| b.object() != m as u16)
-                .unwrap_or(bins.len());
+            // Bins are in model order: the run of this model's ends where the next begins.
+            let run = bins.partition_point(|b| b.object() <= m as u16);
             let (mine, rest) = bins.split_at(run);
             bins = rest;
             let object = model.object();

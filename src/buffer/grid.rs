@@ -79,7 +79,7 @@ impl<'a, T: Copy> Grid<'a, T> {
     }
 
     pub(crate) fn fill(&mut self, value: T) {
-        self.cells.fill(value);
+        fill(self.cells, value);
     }
 
     fn index(&self, x: i32, y: i32) -> Option<usize> {
@@ -102,5 +102,24 @@ impl<'a, T: Copy> Grid<'a, T> {
         let w = self.width as usize;
         let start = usize::try_from(y).ok()?.checked_mul(w)?;
         self.cells.get_mut(start..start.checked_add(w)?)
+    }
+}
+
+/// Sets every cell to `value`: the first few one at a time, then by copies of what is already
+/// set, each twice as long as the last, which the compiler makes block copies (a buffer of
+/// pixels cleared one store at a time takes several instructions a cell).
+pub(crate) fn fill<T: Copy>(cells: &mut [T], value: T) {
+    const FIRST: usize = 16;
+    let mut done = cells.len().min(FIRST);
+    if let Some(first) = cells.get_mut(..done) {
+        first.fill(value);
+    }
+    while done < cells.len() {
+        let (set, rest) = cells.split_at_mut(done);
+        let n = done.min(rest.len());
+        if let (Some(to), Some(from)) = (rest.get_mut(..n), set.get(..n)) {
+            to.copy_from_slice(from);
+        }
+        done += n;
     }
 }

@@ -21,5 +21,6 @@ pub use depth::{
 };
 pub use dither::{Nearest, OrderedDither, Quantize};
 pub use framebuffer::FrameBuffer;
+pub(crate) use grid::fill;
 pub use grid::BufferError;
 pub use surface::{ColorDepth, Direct, RasterTarget, ScreenTriangle};
