@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Rewrites the numbers of docs/footprint.md's table (and its goal rows) from run.sh output.
+"""Rewrites the numbers of docs/footprint.md's table (and its goal rows) from run.sh output,
+and its table of the largest functions of `full` on thumbv6m from the firmware run.sh built.
 
     bench/mcu/run.sh > results.txt; BOARD=microbit bench/mcu/run.sh >> results.txt
     python3 bench/mcu/update_footprint.py results.txt
@@ -41,5 +42,26 @@ for line in doc.read_text().split("\n"):
         status = "reached" if ratio <= 1.25 else "not reached"
         line = f"| `bands` at most 1.25x `full` on {m.group(1)} | {ratio:.2f}x | {status} |"
     out.append(line)
-doc.write_text("\n".join(out))
+text = "\n".join(out)
+
+# The largest functions of `full` on thumbv6m (the ELF run.sh left), between the markers.
+elf = Path(__file__).resolve().parent / "target" / "mps2" / "thumbv6m-none-eabi" / "release-s" / "full"
+start, end = "<!-- symbols -->", "<!-- /symbols -->"
+if elf.exists() and start in text and end in text:
+    import subprocess
+    nm = subprocess.run(["nm", "--size-sort", "-S", "-C", str(elf)], capture_output=True, text=True).stdout
+    syms = []
+    for l in nm.splitlines():
+        parts = l.split(" ", 3)
+        if len(parts) == 4 and parts[2] in "tTrR":
+            syms.append((int(parts[1], 16), parts[3]))
+    syms.sort(reverse=True)
+    table = ["| bytes | function (harness: `mcu_bench`; the library's code inlined into it counts there) |", "|---:|---|"]
+    for size, name in syms[:15]:
+        table.append(f"| {size:,} | `{name}` |")
+    i, j = text.index(start) + len(start), text.index(end)
+    text = text[:i] + "\n" + "\n".join(table) + "\n" + text[j:]
+elif start in text:
+    print(f"no {elf}: the symbol table is left as it was (run bench/mcu/run.sh first)")
+doc.write_text(text)
 print(f"updated {doc} from {len(rows)} results")
