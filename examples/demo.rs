@@ -21,7 +21,7 @@ use fixed3d::mesh::{torus, torus_counts, FaceNormal, Object};
 use fixed3d::pipeline::{Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
-use fixed3d::shade::{FlatKept, Gouraud, Unlit};
+use fixed3d::shade::{Flat, Gouraud, Unlit};
 
 const RING: u16 = 48;
 const TUBE: u16 = 24;
@@ -86,7 +86,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     color.fill(Rgb565::BLACK);
     depth.clear();
     let stats = frame
-        .prepare(&scene, &mut cache, FlatKept)?
+        .prepare(&scene, &mut cache, Flat)?
         .draw(&mut ColorDepth::new(&mut color, &mut depth)?)?;
     report("flat", started, &stats);
     color.present(&mut display)?;

@@ -8,7 +8,7 @@
 //! One frame is `clear_buffers` (colour and depth) then `draw_scene` (vertex stage, culling,
 //! shading, rasterising); both are `#[inline(never)]` so that a profiler can count them apart.
 //! The mesh keeps its face normals (`Mesh::with_face_normals`, found once before the frames)
-//! and `FlatKept` lights each face from them, unless the example is built with
+//! and `Flat` lights each face from them, unless the example is built with
 //! `TORUS_BENCH_PER_FRAME_NORMALS` set (see [`PER_FRAME_NORMALS`]).
 //! The target counts no fragments (the scene needs no counts) unless the example is built with
 //! `TORUS_BENCH_COUNTED` set (see [`COUNTED`]).
@@ -27,7 +27,7 @@ use fixed3d::mesh::{torus, torus_counts, FaceNormal, Mesh, Object};
 use fixed3d::pipeline::{Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
-use fixed3d::shade::{Flat, FlatKept, Shading};
+use fixed3d::shade::{Flat, Shading};
 
 const W: u32 = 320;
 const H: u32 = 240;
@@ -46,7 +46,7 @@ const COUNTED: bool = option_env!("TORUS_BENCH_COUNTED").is_some();
 
 /// Built with `TORUS_BENCH_PER_FRAME_NORMALS` set, the mesh keeps no face normals and `Flat`
 /// finds each face's normal from its positions every frame (`bench/host.sh` measures the
-/// difference); otherwise `FlatKept` reads the normals the mesh keeps. The same colours.
+/// difference); otherwise it reads the normals the mesh keeps. The same colours.
 const PER_FRAME_NORMALS: bool = option_env!("TORUS_BENCH_PER_FRAME_NORMALS").is_some();
 
 /// One frame's drawing: what docs/reference-scene.md times.
@@ -58,11 +58,7 @@ fn draw_scene(
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> Stats {
-    if PER_FRAME_NORMALS {
-        draw_by(Flat, frame, scene, cache, color, depth)
-    } else {
-        draw_by(FlatKept, frame, scene, cache, color, depth)
-    }
+    draw_by(Flat, frame, scene, cache, color, depth)
 }
 
 /// [`draw_scene`] by one shading type.

@@ -41,7 +41,7 @@ use crate::mesh::{Mesh, Object};
 use crate::pipeline::{Bin, Cull, Frame, PrepareError, Prepared, ScreenVertex, Stats};
 use crate::projection::{ProjectionError, Viewport};
 use crate::scene::{Light, LightColor, LightError, Lighting, Scene};
-use crate::shade::{FlatKept, Gouraud, PerspectiveGouraud, Shading, Unlit};
+use crate::shade::{Flat, Gouraud, PerspectiveGouraud, Shading, Unlit};
 
 /// The most directional lights a frame of the [`Renderer`] takes (ambient lights are summed
 /// into one and do not count).
@@ -448,7 +448,10 @@ where
                 stats.drawn = stats.drawn.saturating_add(band.drawn);
             }
             let rect = Rectangle::new(
-                area.top_left + Point::new(0, first as i32),
+                Point::new(
+                    area.top_left.x,
+                    area.top_left.y.saturating_add(first as i32),
+                ),
                 Size::new(width as u32, (n / width) as u32),
             );
             display
@@ -533,14 +536,14 @@ impl<'f> PreparedFrame<'f> {
                 capacity: vertices.len(),
             });
         }
-        let (mut stats, mut inside, mut binned, mut offset) = (Stats::default(), 0u64, 0, 0);
+        let (mut stats, mut inside, mut binned, mut offset) = (Stats::default(), 0u64, 0, 0usize);
         let mut fits = true;
         for (m, model) in models.iter().enumerate() {
             let n = model.mesh.positions().len();
-            let Some(cache) = vertices.get_mut(offset..offset + n) else {
+            let Some(cache) = vertices.get_mut(offset..offset.saturating_add(n)) else {
                 break;
             };
-            offset += n;
+            offset = offset.saturating_add(n);
             let object = model.object();
             let scene = Scene::new(
                 core::slice::from_ref(&object),
@@ -558,7 +561,7 @@ impl<'f> PreparedFrame<'f> {
                     Shadings::PerspectiveGouraud if GOURAUD => {
                         bin(&frame.prepare(&scene, cache, PerspectiveGouraud)?)
                     }
-                    _ => bin(&frame.prepare(&scene, cache, FlatKept)?),
+                    _ => bin(&frame.prepare(&scene, cache, Flat)?),
                 })
             })
             .map_err(|e: PrepareError| match e {
@@ -627,8 +630,11 @@ impl<'f> PreparedFrame<'f> {
         let mut bins = self.bins.unwrap_or(&[]);
         for (m, model) in self.models.iter().enumerate() {
             let n = model.mesh.positions().len();
-            let cache = self.vertices.get(offset..offset + n).unwrap_or(&[]);
-            offset += n;
+            let cache = self
+                .vertices
+                .get(offset..offset.saturating_add(n))
+                .unwrap_or(&[]);
+            offset = offset.saturating_add(n);
             // Bins are in model order: the run of this model's ends where the next begins.
             let run = bins.partition_point(|b| b.object() <= m as u16);
             let (mine, rest) = bins.split_at(run);
@@ -661,7 +667,7 @@ impl<'f> PreparedFrame<'f> {
                         PerspectiveGouraud,
                         inside,
                     )),
-                    _ => draw(&Prepared::resume(frame, &scene, cache, FlatKept, inside)),
+                    _ => draw(&Prepared::resume(frame, &scene, cache, Flat, inside)),
                 })
             });
             let Ok(drawn) = drawn;
@@ -675,9 +681,8 @@ impl<'f> PreparedFrame<'f> {
 /// copies of the triangle walk (and one without the `gouraud` feature).
 #[derive(Clone, Copy)]
 enum Shadings {
-    /// [`FlatKept`]: lit per face from the kept normals where the mesh has them, else from
-    /// its positions (as [`Flat`](crate::shade::Flat)); also unlit models, under a white
-    /// ambient light alone, and wireframes, whose walk reads no shading.
+    /// [`Flat`](crate::shade::Flat): also unlit models, under a white ambient light alone, and
+    /// wireframes, whose walk reads no shading.
     Flat,
     Gouraud,
     PerspectiveGouraud,

@@ -43,7 +43,7 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         })
     };
     let full_hash = framed(&mut |f, c, fb, d| {
-        full_per_frame(&mesh, f, c, fb, d);
+        full(&mesh, f, c, fb, d);
     });
     // The firmware's `full` keeps the face normals: the same frames (and without them).
     let mut faces = vec![FaceNormal::ZERO; TORUS_TRIANGLES];

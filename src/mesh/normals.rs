@@ -10,8 +10,8 @@ use crate::math::{normalize, shr_round, NewtonDirection, Vec3};
 /// bytes. A mesh's positions do not change from frame to frame, and neither does this:
 /// found once, it spares every frame each drawn face's cross product and square root.
 ///
-/// [`FlatKept`](crate::shade::FlatKept) reads it, with the same colours as
-/// [`Flat`](crate::shade::Flat) finds from the positions. A face turned almost edge-on to every
+/// [`Flat`](crate::shade::Flat) reads it, with the same colours as it finds from the
+/// positions. A face turned almost edge-on to every
 /// light, where the 15 bits cannot tell whether the face turns to it, is lit from its positions
 /// instead (a product of the kept direction and a light within ±2³¹ of zero, where the
 /// direction's rounding could move its sign). It is read where flat shading lights a face in
@@ -25,7 +25,7 @@ use crate::math::{normalize, shr_round, NewtonDirection, Vec3};
 /// let cube = CUBE.with_face_normals(&mut faces).unwrap();
 /// assert_eq!(cube.face_normals().map(<[_]>::len), Some(12));
 /// assert_eq!(core::mem::size_of::<FaceNormal>(), 12);
-/// // Drawn with `prepare(&scene, &mut cache, FlatKept)`: the colours `Flat` draws.
+/// // Drawn with `prepare(&scene, &mut cache, Flat)`: the colours the positions give.
 /// let mut short = [FaceNormal::ZERO; 11];
 /// let refused = CUBE.with_face_normals(&mut short);
 /// assert_eq!(refused, Err(MeshError::FaceNormalCountMismatch));

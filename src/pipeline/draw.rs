@@ -116,11 +116,11 @@ struct ObjectSetup<'o, const N: usize> {
     /// scene's: one place for every face to read them.
     lighting: Lighting<N>,
     in_model_space: bool,
-    /// The mesh's kept face normals, where the shading reads them ([`FlatKept`]): lit in model
+    /// The mesh's kept face normals, where the shading reads them ([`Flat`]): lit in model
     /// space, by [`Normalize::Newton`] (what they keep); none otherwise. An empty slice rather
     /// than `None`: a front face's normal is one bounds test.
     ///
-    /// [`FlatKept`]: crate::shade::FlatKept
+    /// [`Flat`]: crate::shade::Flat
     face_normals: &'o [FaceNormal],
     /// Every vertex lies inside every clip plane: no triangle needs its outcodes read.
     inside: bool,

@@ -1,8 +1,8 @@
 //! Shading: what colour each pixel of a triangle gets.
 //!
-//! Five shading types, chosen as a type parameter so that a program links only what it uses:
+//! Four shading types, chosen as a type parameter so that a program links only what it uses:
 //! [`Unlit`] (the object's colour as is), [`Flat`] (Lambert once per triangle, from its face
-//! normal), [`FlatKept`] (the same, from the face normals a mesh keeps), [`Gouraud`] (Lambert
+//! normal, kept in the mesh where it has them), [`Gouraud`] (Lambert
 //! once per vertex, from the mesh's normals, then colours interpolated across the triangle:
 //! affine in screen space, every pixel a convex combination of the vertex colours) and
 //! [`PerspectiveGouraud`] (the same, interpolated perspective-correctly at three divisions per
@@ -37,7 +37,7 @@ pub struct FaceInputs<'a> {
     pub(crate) positions: &'a [Vec3],
     pub(crate) indices: &'a Triangle,
     /// The triangle's kept face normal, where its mesh keeps them and the shading reads them
-    /// ([`FlatKept`]), lit in model space (no normal matrix) by [`Normalize::Newton`].
+    /// ([`Flat`]), lit in model space (no normal matrix) by [`Normalize::Newton`].
     pub(crate) face_normal: Option<&'a FaceNormal>,
     /// The mesh's largest coordinate magnitude and largest edge component (raw Q16.16, see
     /// [`Mesh::edge_extent`](crate::mesh::Mesh)).
@@ -83,8 +83,7 @@ impl FaceInputs<'_> {
     }
 }
 
-/// A way of shading triangles: [`Unlit`], [`Flat`], [`FlatKept`], [`Gouraud`] or
-/// [`PerspectiveGouraud`].
+/// A way of shading triangles: [`Unlit`], [`Flat`], [`Gouraud`] or [`PerspectiveGouraud`].
 pub trait Shading: Copy + sealed::Sealed + core::fmt::Debug {
     /// The per-triangle colour source handed to targets.
     #[doc(hidden)]
@@ -107,16 +106,12 @@ pub trait Shading: Copy + sealed::Sealed + core::fmt::Debug {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Unlit;
 
-/// Lambert per triangle, from the face normal of its model-space positions.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Flat;
-
-/// [`Flat`] from the face normals a mesh keeps ([`Mesh::with_face_normals`]): the same colours,
-/// without each drawn face's cross product and square root every frame. Faces of a mesh that
-/// keeps none, faces lit in world space (a model matrix that is not a rotation times a uniform
-/// scale), faces under another [`Normalize`] method than the default and faces the kept normal
-/// cannot decide (see [`FaceNormal`]) are lit as [`Flat`] lights them. A type of its own:
-/// [`Flat`] links none of this and is not slowed by it.
+/// Lambert per triangle, from the triangle's face normal: the normal the mesh keeps
+/// ([`Mesh::with_face_normals`], found once), else the one its model-space positions give,
+/// found for each drawn face every frame. Both give the same colours. Faces lit in world space
+/// (a model matrix that is not a rotation times a uniform scale), faces under another
+/// [`Normalize`] method than the default and faces the kept normal cannot decide (see
+/// [`FaceNormal`]) are lit from their positions.
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
@@ -126,7 +121,7 @@ pub struct Flat;
 /// use fixed3d::pipeline::{Frame, ScreenVertex};
 /// use fixed3d::projection::{Projection, Viewport};
 /// use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
-/// use fixed3d::shade::{Flat, FlatKept};
+/// use fixed3d::shade::Flat;
 /// use fixed3d::buffer::{ColorDepth, DepthBuffer, FrameBuffer};
 ///
 /// // Once, at start-up: the cube's 12 face normals.
@@ -135,40 +130,36 @@ pub struct Flat;
 ///
 /// let s = Scalar::from_num;
 /// let model = Transform::new().rotated_y(Angle::from_degrees(30)).matrix();
-/// let objects = [Object::new(&cube, model, Rgb888::new(255, 160, 64))];
 /// let mut lighting = Lighting::<1>::new(LightColor::gray(s(0.2)));
 /// let sun = DirectionalLight::new(Vec3::from_int(-1, 1, 1), LightColor::gray(s(0.8)));
 /// lighting.push(sun).unwrap();
-/// let scene = Scene::new(&objects, lighting);
 /// let viewport = Viewport::new(64, 48).unwrap();
 /// let view = LookAt::new(Vec3::from_int(3, 2, 4), Vec3::ZERO, Vec3::Y).view().unwrap();
 /// let fov = Angle::from_degrees(60);
 /// let projection = Projection::perspective(fov, viewport.aspect(), s(1.0), s(20.0)).unwrap();
 /// let frame = Frame::new(&view, &projection, viewport);
 ///
-/// // Every frame: the same pixels by either shading.
-/// let pixels = |kept: bool| {
+/// // Every frame: the same pixels from the kept normals as from the positions.
+/// let pixels = |mesh: &fixed3d::mesh::Mesh<'_>| {
+///     let objects = [Object::new(mesh, model, Rgb888::new(255, 160, 64))];
+///     let scene = Scene::new(&objects, lighting.clone());
 ///     let (mut c, mut d) = ([Rgb565::BLACK; 64 * 48], [0u16; 64 * 48]);
 ///     let mut color = FrameBuffer::new(&mut c, 64, 48).unwrap();
 ///     let mut depth = DepthBuffer::new(&mut d, 64, 48).unwrap();
 ///     depth.clear();
 ///     let mut target = ColorDepth::new(&mut color, &mut depth).unwrap();
 ///     let mut cache = [ScreenVertex::DEFAULT; 8];
-///     if kept {
-///         frame.prepare(&scene, &mut cache, FlatKept).unwrap().draw(&mut target).unwrap();
-///     } else {
-///         frame.prepare(&scene, &mut cache, Flat).unwrap().draw(&mut target).unwrap();
-///     }
+///     frame.prepare(&scene, &mut cache, Flat).unwrap().draw(&mut target).unwrap();
 ///     c
 /// };
-/// let kept = pixels(true);
-/// assert_eq!(kept, pixels(false));
+/// let kept = pixels(&cube);
+/// assert_eq!(kept, pixels(&CUBE));
 /// assert!(kept.iter().filter(|&&p| p != Rgb565::BLACK).count() > 300);
 /// ```
 ///
 /// [`Mesh::with_face_normals`]: crate::mesh::Mesh::with_face_normals
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct FlatKept;
+pub struct Flat;
 
 /// Lambert per vertex from the mesh's normals, colours interpolated across each triangle.
 /// An object whose mesh has no normals is shaded [`Flat`].
@@ -187,7 +178,6 @@ pub struct PerspectiveGouraud;
 
 impl sealed::Sealed for Unlit {}
 impl sealed::Sealed for Flat {}
-impl sealed::Sealed for FlatKept {}
 impl sealed::Sealed for Gouraud {}
 impl sealed::Sealed for PerspectiveGouraud {}
 
@@ -203,7 +193,13 @@ impl Shading for Flat {
     type Paint = SolidPaint;
     const PER_VERTEX: bool = false;
     const FACE_LIGHTING: bool = true;
+    const KEPT_FACE_NORMALS: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
+        if let Some(n) = face.face_normal {
+            if let Some(color) = kept_face_color(face.base, &n.0, lighting) {
+                return SolidPaint(color);
+            }
+        }
         SolidPaint(flat_color(
             face.base,
             face.model(),
@@ -212,21 +208,6 @@ impl Shading for Flat {
             face.extents,
             lighting,
         ))
-    }
-}
-
-impl Shading for FlatKept {
-    type Paint = SolidPaint;
-    const PER_VERTEX: bool = false;
-    const FACE_LIGHTING: bool = true;
-    const KEPT_FACE_NORMALS: bool = true;
-    fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> SolidPaint {
-        if let Some(n) = face.face_normal {
-            if let Some(color) = kept_face_color(face.base, &n.0, lighting) {
-                return SolidPaint(color);
-            }
-        }
-        Flat.paint(face, lighting)
     }
 }
 

@@ -15,7 +15,7 @@ use fixed3d::pipeline::{Bin, Cull, Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::render::{Model, Renderer};
 use fixed3d::scene::{DirectionalLight, Light, LightColor, Lighting, Scene};
-use fixed3d::shade::{Flat, FlatKept, Gouraud, Unlit};
+use fixed3d::shade::{Flat, Gouraud, Unlit};
 
 /// Frames per preset (the hash chains over them).
 pub const FRAMES: u32 = 4;
@@ -221,25 +221,9 @@ pub fn depth_frame<const N: usize, S: fixed3d::shade::Shading, D: DepthFormat>(
 }
 
 /// `full`: the torus, flat Lambert, u16 depth, into a 320x240 framebuffer, each face lit from
-/// the normal the mesh keeps ([`FlatKept`]; a mesh that keeps none is lit as [`Flat`] lights
-/// it).
+/// the normal the mesh keeps, or from its positions where it keeps none (the `full` firmware
+/// built with its feature `per-frame-normals`).
 pub fn full(
-    mesh: &Mesh<'_>,
-    f: u32,
-    cache: &mut [ScreenVertex],
-    color: &mut [Rgb565],
-    depth: &mut [u16],
-) -> Option<()> {
-    let objects = [Object::new(mesh, torus_model(f), ORANGE)];
-    let scene = Scene::new(&objects, sun());
-    depth_frame(frame(W, H)?, &scene, FlatKept, cache, color, depth)
-}
-
-/// [`full`] by [`Flat`]: each face's normal found from its positions every frame (the `full`
-/// firmware built with its feature `per-frame-normals`). Two plain functions rather than one
-/// taking the shading: generic over it, `full` measured 0.8% more instructions on the M4 (its
-/// code laid out in the firmware's crate); these two measure as the one before them.
-pub fn full_per_frame(
     mesh: &Mesh<'_>,
     f: u32,
     cache: &mut [ScreenVertex],

@@ -1,6 +1,6 @@
 //! Preset `full`: the reference torus, flat Lambert, u16 depth buffer, 320x240 framebuffer.
 //! The mesh keeps its face normals, found once at start-up (12 bytes a triangle, 27 KiB), and
-//! `FlatKept` lights each face from them, as a firmware that draws a rigid mesh every frame
+//! `Flat` lights each face from them, as a firmware that draws a rigid mesh every frame
 //! would; built with the feature `per-frame-normals` (`NORMALS=per-frame bench/mcu/run.sh`),
 //! `Flat` finds each face's normal from its positions every frame instead.
 #![no_std]
@@ -33,10 +33,7 @@ fn main() -> ! {
             depth.fill(u16::MAX);
             0
         }
-        #[cfg(not(feature = "per-frame-normals"))]
         Op::Draw(f) => full(&mesh, f, cache, fb, depth).is_some() as u32,
-        #[cfg(feature = "per-frame-normals")]
-        Op::Draw(f) => full_per_frame(&mesh, f, cache, fb, depth).is_some() as u32,
         Op::Hash => frame_hash(fb),
     })
 }
