@@ -371,3 +371,23 @@ fn models_needing_a_missing_feature_are_errors() {
         }
     }
 }
+
+/// The viewport is the display's bounding box wherever it lies: through an embedded-graphics
+/// `translated` view (its box moved off the origin) the frame lands on the same pixels.
+#[test]
+fn a_display_whose_box_is_off_the_origin_gets_the_same_frame() {
+    use embedded_graphics::draw_target::DrawTargetExt;
+    use embedded_graphics::geometry::Point;
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let models = [Model::new(&mesh, BASE)];
+    let (direct, _) = render(&models, 16, 2304);
+    let mut screen = Screen::new(320, 240);
+    let (mut v, mut b) = (vec![ScreenVertex::DEFAULT; 1152], vec![Bin::EMPTY; 2304]);
+    let (mut c, mut d) = (vec![Rgb565::BLACK; 320 * 16], vec![0u16; 320 * 16]);
+    let mut view = screen.translated(Point::new(7, -3));
+    Renderer::from_slices(&mut v, &mut b, &mut c, &mut d)
+        .render(&models, &lights(), &camera(), &mut view)
+        .unwrap();
+    assert!(screen.pixels == direct.pixels);
+}
