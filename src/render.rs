@@ -681,7 +681,7 @@ impl<'f> PreparedFrame<'f> {
 /// copies of the triangle walk (and one without the `gouraud` feature).
 #[derive(Clone, Copy)]
 enum Shadings {
-    /// [`Flat`](crate::shade::Flat): also unlit models, under a white ambient light alone, and
+    /// [`Flat`]: also unlit models, under a white ambient light alone, and
     /// wireframes, whose walk reads no shading.
     Flat,
     Gouraud,
