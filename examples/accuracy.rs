@@ -378,7 +378,7 @@ impl Report<'_> {
              (the same snapped vertices through i128 edge functions) and REF_IDEAL (f64 matrices\n\
              from the exact angles, f64 near/far clipping, no snapping, per-pixel edge functions,\n\
              f64 Lambert, perspective-correct Gouraud). Inputs are the same numbers for both, so\n\
-             every difference is the renderer's. Metrics are named after `CASES.md` part (c);\n\
+             every difference is the renderer's. Metrics are named as in [cases.md](cases.md) (M1–M12);\n\
              colours are in 8-bit units (Rgb888), depths in units of the configuration's depth\n\
              format (LSB), vertex errors in sixteenths of a pixel.\n"
         );
@@ -462,7 +462,7 @@ impl Report<'_> {
         let _ = writeln!(
             md,
             "\n## The default configuration, scene by scene\n\n\
-             Required (issue #5 and `CASES.md`): M1 = 0; 0 missing and 0 unexpected pixels outside\n\
+             Required ([cases.md](cases.md)): M1 = 0; 0 missing and 0 unexpected pixels outside\n\
              the partial band; 0 occlusion errors; depth within 1 LSB of the plane through the\n\
              snapped vertices; flat Lambert colour within 1 LSB per channel; every vertex within\n\
              half a sub-pixel per axis plus its transform bound.\n"

@@ -1,4 +1,4 @@
-//! Rules R1–R4 and cases T01–T12 of CASES.md: coverage, the top-left rule, watertightness,
+//! Rules R1–R4 and cases T01–T12 of docs/cases.md: coverage, the top-left rule, watertightness,
 //! degenerate triangles and snapping, each checked exactly against the integer model.
 
 mod common;

@@ -1,4 +1,4 @@
-//! The OBJ parser: hostile inputs O1–O27 of the test catalogue, the four real models, and
+//! The OBJ parser: hostile inputs O1–O27 of docs/cases.md, the four real models, and
 //! property tests that arbitrary bytes never panic or write past the caller's storage.
 
 use fixed3d::math::{Scalar, Vec3};

@@ -853,7 +853,7 @@ pub fn render(scene: &SceneDef, config: &Config, repeat: usize) -> Option<(Rende
     }
 }
 
-/// The metrics of one scene in one configuration (names after CASES.md).
+/// The metrics of one scene in one configuration (named as in docs/cases.md).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Metrics {
     /// Covered pixels (the crate's).
