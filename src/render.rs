@@ -23,7 +23,7 @@
 //! Beneath it, for firmware that drives bands itself (DMA double buffering, two cores drawing
 //! alternate bands): [`PreparedFrame`] runs the vertex stage and bins the triangles once, and
 //! [`PreparedFrame::draw_band`] draws any band into any buffers, from any thread. The layers
-//! below that ([`pipeline`](crate::pipeline), [`target`](crate::buffer)) stay public too.
+//! below that ([`pipeline`](crate::pipeline), [`buffer`](crate::buffer)) stay public too.
 
 use core::cell::Cell;
 use core::fmt;

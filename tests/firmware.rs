@@ -195,8 +195,8 @@ fn host_hashes_match_the_firmware_file() {
     assert_eq!(std::fs::read_to_string(path).unwrap(), text);
 }
 
-/// The `triangles` variant reaches every case of a triangle's row set-up (which the Cortex-M4's
-/// `asm` feature does in assembly, checked by this variant's hash under emulation): corners
+/// The `triangles` variant reaches every case of a triangle's row set-up (each core compiles
+/// its own, checked by this variant's hash under emulation): corners
 /// tied in y, the middle corner's row the first, the last or between, both windings, spans
 /// beyond the screen's sides, the near plane cutting triangles, rows above the band; and it
 /// draws.
@@ -264,8 +264,8 @@ fn triangles_variant_reaches_every_setup_case() {
 }
 
 /// The `front` variant walks an object inside every clip plane culled to its front faces
-/// (which the `asm` feature does in assembly on both cores, checked by this variant's hash,
-/// which folds in every count and the depths, under emulation) over back faces, front faces
+/// (checked by this variant's hash, which folds in every count and the depths, under
+/// emulation) over back faces, front faces
 /// and faces of zero area, with runs of back and of front faces; and it draws.
 #[test]
 fn front_variant_walks_every_kind_of_face_inside_every_plane() {

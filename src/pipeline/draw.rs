@@ -242,9 +242,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         })
     }
 
-    /// Fills every triangle of the scene into `target` (a [`ColorDepth`]
-    /// frame or band, or a [`Direct`](crate::buffer::Direct) draw target). Returns what was
-    /// drawn, or the target's first error.
+    /// Fills every triangle of the scene into `target` (a [`ColorDepth`] frame or band, or a
+    /// [`Direct`](crate::buffer::Direct) draw target). Returns what was drawn, or the target's
+    /// first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
         // One walk per culling mode on x86-64; on Cortex-M one for all, reading the mode.
         if cfg!(target_pointer_width = "64") {
