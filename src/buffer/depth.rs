@@ -567,7 +567,7 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{doubled_area, triangle_spans, PixelRect, PIPELINE_LIMIT};
+    use crate::raster::{doubled_area, spans_in_range, PipelineEdge, PixelRect, PIPELINE_LIMIT};
 
     /// The steps by the numerators' magnitudes over the area's are `DivideBy`'s of the
     /// numerators and the area made positive, for both signs of each, zero numerators, ties,
@@ -682,7 +682,7 @@ mod tests {
             if area == 0 || !u16::unclamped(z[0].max(z[1]).max(z[2])) {
                 continue;
             }
-            let spans = triangle_spans(p, clip);
+            let spans = spans_in_range::<PipelineEdge>(p, clip, area);
             let y0 = spans.row();
             let (Some((mut narrow, st)), Some((mut wide, _)), Some((mut early, _))) = (
                 RoundedRows::<i32>::new(&p, z, area, y0, false),

@@ -14,8 +14,8 @@ use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::math::SUBPIXEL_SCALE;
 use crate::raster::{
-    line_pixels, rows_in_range, spans_in_range, PixelRect, Plane, RowStarts, ScreenPoint, Span,
-    TriangleSpans,
+    line_pixels, rows_in_range, spans_in_range, PipelineEdge, PixelRect, Plane, RowStarts,
+    ScreenPoint, Span, TriangleWalk,
 };
 use crate::shade::Paint;
 use crate::stats::Stats;
@@ -45,11 +45,10 @@ impl ScreenTriangle {
         }
     }
 
-    /// Its spans clipped to `clip` (see `spans_in_range`: within the pipeline's range, its
-    /// edges walk every row from one set-up).
+    /// Its spans clipped to `clip`, walked as the pipeline's triangles are.
     #[inline(always)]
-    fn spans(&self, clip: PixelRect) -> TriangleSpans {
-        spans_in_range(self.p, clip, self.area, u32::MAX)
+    fn spans(&self, clip: PixelRect) -> TriangleWalk<PipelineEdge> {
+        spans_in_range(self.p, clip, self.area)
     }
 
     /// The exact plane in Q1.44 (the pipeline's Q1.30 shifted by 14).
@@ -235,7 +234,7 @@ where
         };
         match unclamped {
             Some((walk, st)) => {
-                let spans = rows.spans(columns, u32::MAX);
+                let spans = rows.spans(columns);
                 self.each_span(spans, walk, stats, colors_for, |ds, cs, start, g, w| {
                     D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w)
                 });
@@ -245,7 +244,7 @@ where
                 let plane = triangle.plane();
                 let step = plane.step_x();
                 self.each_span(
-                    rows.spans(columns, u32::MAX),
+                    rows.spans(columns),
                     plane.rows(0, y),
                     stats,
                     colors_for,
@@ -264,7 +263,7 @@ where
     #[inline(always)]
     fn each_span<G: FnMut() -> C, R: RowStarts>(
         &mut self,
-        spans: TriangleSpans,
+        spans: TriangleWalk<PipelineEdge>,
         mut depth: R,
         stats: &mut Stats,
         mut colors_for: impl FnMut(Span) -> G,

@@ -21,13 +21,15 @@
 //! far inside it. Work is proportional to the visible rows and pixels, never to the size of the
 //! primitive off screen.
 
+mod edge;
 mod line;
 mod plane;
 mod triangle;
 
+pub(crate) use edge::PipelineEdge;
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{Plane, RowStarts};
-pub(crate) use triangle::{rows_in_range, spans_in_range};
+pub(crate) use triangle::{rows_in_range, spans_in_range, TriangleWalk};
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
 use embedded_graphics::primitives::Rectangle;
@@ -40,8 +42,8 @@ pub const COORD_LIMIT: i32 = 1 << 24;
 
 /// The largest magnitude of the pipeline's projected coordinates, 2¹⁵ − 16 sub-pixels: the guard
 /// band reaches 2¹⁴ − 16 from a screen centre at most 2¹⁴ from the origin (viewports up to 2048
-/// pixels), and the projection clamps to it. The rasteriser relies on it: see
-/// [`spans_in_range`].
+/// pixels), and the projection clamps to it. The pipeline's edge walks rely on it: see
+/// [`PipelineEdge`].
 pub(crate) const PIPELINE_LIMIT: i32 = (1 << 15) - 16;
 
 /// A point on the screen in sub-pixels: `x` right, `y` down, [`SUBPIXEL_SCALE`] per pixel.
@@ -325,15 +327,7 @@ pub(crate) struct RationalStepper<const CEIL: bool> {
     step_r: i32,
 }
 
-/// Steps `ceil(N(k) / D)` (triangle edges on 32-bit cores, and the exact reference of
-/// [`FractionStepper`]).
-#[cfg_attr(
-    any(
-        target_pointer_width = "64",
-        all(target_pointer_width = "32", target_has_atomic = "32")
-    ),
-    allow(dead_code)
-)]
+/// Steps `ceil(N(k) / D)` (triangle edges).
 pub(crate) type CeilStepper = RationalStepper<true>;
 /// Steps `floor(N(k) / D)` (lines).
 pub(crate) type FloorStepper = RationalStepper<false>;
@@ -363,13 +357,6 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
 
     /// [`new`](Self::new) of 32-bit operands (where 64-bit division is a library routine, the
     /// numerator of an edge started within its top pixel fits 32 bits).
-    #[cfg_attr(
-        any(
-            target_pointer_width = "64",
-            all(target_pointer_width = "32", target_has_atomic = "32")
-        ),
-        allow(dead_code)
-    )]
     pub(crate) fn new32(n0: i32, den: i32, step: i32) -> Self {
         let den = den.max(1);
         let (q, r) = floor_divmod32::<EDGE_SHORT_QUOTIENT>(n0, den);
@@ -425,197 +412,9 @@ impl<const CEIL: bool> RationalStepper<CEIL> {
     }
 }
 
-#[cfg_attr(
-    any(
-        target_pointer_width = "64",
-        all(target_pointer_width = "32", target_has_atomic = "32")
-    ),
-    allow(dead_code)
-)]
-impl CeilStepper {
-    /// The current value (the same as [`FractionStepper::value`], for the edge walk's type).
-    #[inline(always)]
-    pub(crate) fn value(&self) -> i32 {
-        self.value
-    }
-}
-
-/// [`CeilStepper`]'s walk of `ceil(N(k) / D)` by one 64-bit addition a step, for as many steps
-/// as [`fraction_rows`] allows: the value in the high word, and in the low word the remainder
-/// as a fraction of 2³², rounded up (one instruction a step where 64-bit additions are one,
-/// against the exact stepper's four or five and a branch).
-///
-/// Exact while `(k + 1)(D − 1) < 2³²`: with `M(k) = N(k) + D − 1` the walk is that of
-/// `⌊M(k) / D⌋ = q(k)`, remainder `r(k)`. The low word starts at `⌈r(0)·2³² / D⌉` and the
-/// step's low word is `⌈s·2³² / D⌉` (`s` the step's remainder), each above its exact value by
-/// at most `(D − 1)/D`, since those values are multiples of `1/D`. After `k` steps the sum of
-/// low words (carries counted) exceeds the exact `(r(0) + k·s)·2³² / D` by at most
-/// `(k + 1)(D − 1)/D`, below `2³² / D`; the exact sum is a multiple of `2³² / D`, so a multiple
-/// of 2³² lies at or below both or above both: the carries, and so the high word, are
-/// `q(k)`'s.
-#[cfg(any(test, doc, target_pointer_width = "64"))]
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct FractionStepper {
-    acc: u64,
-    step: u64,
-}
-
-#[cfg(any(test, doc, target_pointer_width = "64"))]
-impl FractionStepper {
-    /// The constant 0 (for iterators that yield nothing).
-    pub(crate) const ZERO: Self = FractionStepper { acc: 0, step: 0 };
-
-    /// Starts at `ceil(n0 / den)` (`0 < den < 2³¹`, `step` within i32, the quotient and
-    /// `step / den` must fit i32, as for [`RationalStepper::new`]), stepping by `step / den`.
-    // In line, as the runs that set it up are (see `TriangleRows::runs`).
-    #[inline(always)]
-    pub(crate) fn new(n0: i64, den: i64, step: i64) -> Self {
-        let den = den.max(1);
-        // ceil(N / D) = floor((N + D − 1) / D); |n0| is below 2⁵⁴ (see `edge`).
-        let start = n0.wrapping_add(den - 1);
-        // Whether the start fits 32 bits, by its low word sign-extended (one comparison).
-        let low = start as i32;
-        FractionStepper {
-            acc: if i64::from(low) == start {
-                packed_quotient32(low, den)
-            } else {
-                packed_quotient(start, den)
-            },
-            // Steps fit 32 bits (see `RationalStepper::new`).
-            step: packed_quotient32(step as i32, den),
-        }
-    }
-
-    /// The current value.
-    #[inline(always)]
-    pub(crate) fn value(&self) -> i32 {
-        (self.acc >> 32) as u32 as i32
-    }
-
-    /// Advances `k` by one.
-    #[inline(always)]
-    pub(crate) fn step(&mut self) {
-        self.acc = self.acc.wrapping_add(self.step);
-    }
-}
-
-/// [`CeilStepper`]'s walk of `ceil(N(k) / D)` where the core divides words in one instruction
-/// (Cortex-M3/M4): the numerator itself steps, one addition a row, and each value is one
-/// division, `b + ⌊(N(k) − b·D + D − 1) / D⌋`, of a base `b` the caller chooses so that `N(k) −
-/// b·D` stays in `[0, 2³² − D]` for every `k` it walks: the word then holds the whole
-/// numerator, exactly. One addition a step, no branch, and four words of state that the row
-/// loop only reads but one, where the exact stepper keeps five and corrects its remainder.
-#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct DivideStepper {
-    /// `N(k) − b·D + D − 1`, in `[D − 1, 2³²)`.
-    num: u32,
-    step: u32,
-    den: core::num::NonZeroU32,
-    base: i32,
-}
-
-#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
-impl DivideStepper {
-    /// The constant 0 (for iterators that yield nothing).
-    #[cfg_attr(test, allow(dead_code))]
-    pub(crate) const ZERO: Self = DivideStepper {
-        num: 0,
-        step: 0,
-        den: core::num::NonZeroU32::MIN,
-        base: 0,
-    };
-
-    /// Starts at `ceil(N / den)`, stepping `N` by `step`, given `above = N − base·den` modulo
-    /// 2³² (and `step` modulo 2³²): exact while `N − base·den` stays in `[0, 2³² − den]`. A zero
-    /// `den` is taken as 1.
-    #[inline(always)]
-    pub(crate) fn new(above: u32, den: u32, step: u32, base: i32) -> Self {
-        let den = core::num::NonZeroU32::new(den).unwrap_or(core::num::NonZeroU32::MIN);
-        DivideStepper {
-            // ceil(M / D) = ⌊(M + D − 1) / D⌋.
-            num: above.wrapping_add(den.get() - 1),
-            step,
-            den,
-            base,
-        }
-    }
-
-    /// The current value.
-    #[inline(always)]
-    pub(crate) fn value(&self) -> i32 {
-        // The quotient is below 2³² / D ≤ 2³²: as i32 modulo 2³², which the true value fits.
-        self.base.wrapping_add((self.num / self.den) as i32)
-    }
-
-    /// Advances `k` by one.
-    #[inline(always)]
-    pub(crate) fn step(&mut self) {
-        self.num = self.num.wrapping_add(self.step);
-    }
-}
-
-/// `⌊v / d⌋` in the high word (modulo 2³²) and `⌈(v mod d)·2³² / d⌉` in the low word (`d` in
-/// `[1, 2³¹)`), by two divisions: see [`packed_quotient32`] for one.
-#[cfg(any(test, target_pointer_width = "64"))]
-#[inline(always)]
-fn packed_quotient(v: i64, d: i64) -> u64 {
-    let (q, r) = floor_divmod(v, d);
-    // 0 ≤ r < d < 2³¹: the shifted remainder fits 63 bits and its quotient is below 2³².
-    ((q as u64) << 32).wrapping_add(((r as u64) << 32).div_ceil(d as u64))
-}
-
-/// [`packed_quotient`] of a 32-bit `v`, by one division of `v·2³² + d − 1`: its floor is
-/// `⌊v / d⌋·2³² + ⌊((v mod d)·2³² + d − 1) / d⌋`.
-#[cfg(any(test, target_pointer_width = "64"))]
-#[inline(always)]
-fn packed_quotient32(v: i32, d: i64) -> u64 {
-    // |v·2³²| ≤ 2⁶³, and the sum stays within i64 (d − 1 < 2³¹, and v·2³² ≤ 2⁶³ − 2³²).
-    let n = ((v as i64) << 32) + (d - 1);
-    // ⌊n / d⌋ by one unsigned division: for n < 0, !n = −n − 1 = q·d + r with 0 ≤ r < d, so n =
-    // (−q − 1)·d + (d − 1 − r) and ⌊n / d⌋ = −q − 1 = !q.
-    let sign = n >> 63;
-    let q = core::num::NonZeroU64::new(d as u64).map_or(0, |d| (n ^ sign) as u64 / d);
-    q ^ sign as u64
-}
-
-/// How many values from its start (the start's included) a [`FractionStepper`] of denominator
-/// `den` walks exactly: the largest `n` with `n·(den − 1) < 2³²` (any number for `den` 1).
-#[cfg(any(test, doc, target_pointer_width = "64"))]
-pub(crate) fn fraction_rows(den: i32) -> u32 {
-    u32::MAX
-        .checked_div(den.saturating_sub(1).max(0) as u32)
-        .unwrap_or(u32::MAX)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A 32-bit numerator's packed quotient by one unsigned division equals the two-division
-    /// one, for both signs, at the ends of both ranges and at random.
-    #[test]
-    fn packed_quotient32_equals_packed_quotient() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let vs = [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX];
-        let ds = [1i64, 2, 3, (1 << 31) - 1];
-        let random = (0..100_000).map(|_| {
-            let x = rng.next_u64();
-            (
-                x as i32,
-                ((x >> 32) as i64 & ((1 << 31) - 1)).max(1) >> (x % 31),
-            )
-        });
-        let ends = vs.iter().flat_map(|&v| ds.iter().map(move |&d| (v, d)));
-        for (v, d) in ends.chain(random) {
-            let d = d.max(1);
-            assert_eq!(
-                packed_quotient32(v, d),
-                packed_quotient(v as i64, d),
-                "{v} {d}"
-            );
-        }
-    }
 
     /// The 32-bit cores' area equals the 64-bit one: at the corners of the coordinate range
     /// (sides up to 2²⁵, products up to 2⁵⁰) and at random.
@@ -662,54 +461,6 @@ mod tests {
             b.step();
             assert_eq!(fields(&a), fields(&b), "{n0} {den} {step}");
         }
-    }
-
-    /// `FractionStepper` walks exactly what the exact stepper walks, for every value
-    /// `fraction_rows` promises: numerators of every size (32-bit ones, and ones to ±2⁵⁴ that
-    /// take the two-division set-up), denominators from 1 to 2²⁹, steps within ±2²⁹; the
-    /// largest denominators walked to the bound itself. And the bound is nearly tight: a walk
-    /// built to drift as early as it can does so two values past it.
-    #[test]
-    fn fraction_stepper_equals_the_exact_walk_within_its_rows() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let (mut wide, mut to_bound) = (0, 0);
-        for i in 0..20_000 {
-            let x = rng.next_u64();
-            let den = ((1u32 << 29) >> (x % 30)) as i32;
-            let den = (den - rng.within(den / 2).abs()).max(1);
-            let n0 = if i % 4 == 0 {
-                wide += 1;
-                ((rng.next_u64() as i64) >> 10) | (1 << 40)
-            } else {
-                rng.within(i32::MAX / 2) as i64
-            };
-            let step = rng.within(1 << 29) as i64;
-            let (mut exact, mut fast) = (
-                CeilStepper::new(n0, den as i64, step),
-                FractionStepper::new(n0, den as i64, step),
-            );
-            let rows = fraction_rows(den);
-            to_bound += usize::from(rows <= 3000);
-            for _ in 0..rows.min(3000) {
-                assert_eq!(fast.value(), exact.value, "{n0} {den} {step}");
-                exact.step();
-                fast.step();
-            }
-        }
-        assert!(wide > 4000 && to_bound > 5000, "{wide} {to_bound}");
-        // ceil((k − 9) / D) is 0 up to k = 9; a step's fraction ⌈2³² / D⌉ = 9 (D just below
-        // 2²⁹) exceeds the exact one by nearly 1 each time, and the remainder then nears D.
-        let den = (1 << 29) - 1;
-        assert_eq!(fraction_rows(den), 8);
-        let mut fast = FractionStepper::new(-9, den as i64, 1);
-        let values: std::vec::Vec<i32> = (0..10)
-            .map(|_| {
-                let v = fast.value();
-                fast.step();
-                v
-            })
-            .collect();
-        assert_eq!(values, [0, 0, 0, 0, 0, 0, 0, 0, 0, 1]);
     }
 
     /// The division-free quotients (used where division is a library routine, so not on the
