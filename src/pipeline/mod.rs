@@ -33,7 +33,7 @@ use crate::projection::{Projection, Viewport};
 use crate::scene::Scene;
 use crate::shade::{vertex_normal, Shading};
 
-use vertex::{outcode_and_project, outcode_and_project_unfit, project_words, Known, ScreenMap};
+use vertex::{outcode_and_project, project_words, Known, ScreenMap};
 
 /// Which triangles back-face culling removes. Front faces are counter-clockwise when seen from
 /// outside (in world space); on screen (y down) that is a negative signed area.
@@ -233,24 +233,20 @@ impl Frame {
             let (these, after) = rest.split_at_mut(positions.len().min(rest.len()));
             slots = after;
             for (i, (p, slot)) in positions.iter().zip(these).enumerate() {
-                let (code, pt, z) = if !NARROW_CORE && fits {
-                    // Known short (`fits` implies the extent below 2²⁹): where products are
-                    // long multiplies, one path from the transform to the projection, whose
-                    // coordinates then stay in registers.
-                    let c = clip_from_model.transform_short(p.to_bits());
-                    outcode_and_project(c, &map, true, known)
-                } else if let (Some(h), Known::InWords) = (&split, known) {
+                let (code, pt, z) = if let (Some(h), Known::InWords) = (&split, known) {
                     // Known inside in words (the reference torus) on cores without a long
                     // multiply: the transform's words projected in line, without the general
-                    // path's call and its 64-bit coordinates.
+                    // path's 64-bit coordinates.
                     let (pt, z) = project_words(h.transform_words(p.to_bits()), &map);
                     (0, pt, z)
                 } else {
                     let c = match &split {
                         Some(h) => h.transform(p.to_bits()),
+                        // Known short (`fits` implies the extent below 2²⁹).
+                        None if fits => clip_from_model.transform_short(p.to_bits()),
                         None => clip_from_model.transform_within(p.to_bits(), extent),
                     };
-                    outcode_and_project_unfit(c, &map, fits, known)
+                    outcode_and_project(c, &map, fits, known)
                 };
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {

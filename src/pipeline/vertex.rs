@@ -288,16 +288,7 @@ pub(crate) fn project(c: [i64; 4], m: &ScreenMap) -> Option<(ScreenPoint, i32)> 
 /// the viewport products are done once for both. `fits` says that every coordinate is known
 /// to lie strictly within ±2³¹ (see `Mat4::fits_32_bits`): nothing to reduce. `known` is what
 /// holds for the vertex before it is tested (see [`Known`]).
-// In line on cores with a long multiply, where the vertex loop calls it on its path from a
-// transform known to fit 32 bits; on the others at the compiler's choice.
-#[cfg_attr(
-    not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
-    inline(always)
-)]
-#[cfg_attr(
-    all(target_pointer_width = "32", not(target_has_atomic = "32")),
-    inline
-)]
+#[inline(always)]
 pub(crate) fn outcode_and_project(
     c: [i64; 4],
     m: &ScreenMap,
@@ -381,28 +372,9 @@ pub(crate) fn project_words(c: [i32; 4], m: &ScreenMap) -> (ScreenPoint, i32) {
     (screen_point(qx, qy, m), sz as i32)
 }
 
-/// [`outcode_and_project`] where the vertex loop does not take its in-line path for coordinates
-/// known to fit: on 32-bit cores with a long multiply by [`outcode_and_project_by_planes`], no
-/// second copy of the hot path.
-#[inline(always)]
-pub(crate) fn outcode_and_project_unfit(
-    c: [i64; 4],
-    m: &ScreenMap,
-    fits: bool,
-    known: Known,
-) -> (u8, ScreenPoint, i32) {
-    #[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
-    {
-        let _ = (fits, known);
-        outcode_and_project_by_planes(c, m)
-    }
-    #[cfg(not(all(target_pointer_width = "32", target_has_atomic = "32")))]
-    outcode_and_project(c, m, fits, known)
-}
-
 /// [`outcode_and_project`] from its definitions: [`distance`] and [`inside`] for each plane of
 /// the reduced coordinates, then [`project`] (the clipper's code).
-#[cfg(any(test, doc, all(target_pointer_width = "32", target_has_atomic = "32")))]
+#[cfg(test)]
 pub(crate) fn outcode_and_project_by_planes(c: [i64; 4], m: &ScreenMap) -> (u8, ScreenPoint, i32) {
     let r = reduce(c);
     let code = (0..PLANES).fold(0u8, |code, k| {
@@ -419,17 +391,10 @@ pub(crate) fn outcode_and_project_by_planes(c: [i64; 4], m: &ScreenMap) -> (u8, 
     (code, p, depth)
 }
 
-/// [`project`] of reduced coordinates, from `x·half_w`, `y·half_h`, `z` and `w`. Out of line on
-/// Cortex-M0, where only clipped vertices and coarser snapping reach it: in line, the vertex
-/// loop's registers moved around it.
-#[cfg_attr(
-    not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
-    inline(always)
-)]
-#[cfg_attr(
-    all(target_pointer_width = "32", not(target_has_atomic = "32")),
-    inline(never)
-)]
+/// [`project`] of reduced coordinates, from `x·half_w`, `y·half_h`, `z` and `w`. Out of line:
+/// only clipped vertices and coarser snapping reach it, and in line the vertex loop's
+/// registers move around it.
+#[inline(never)]
 fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(ScreenPoint, i32)> {
     if w <= 0 {
         return None;
