@@ -51,12 +51,6 @@ pub(crate) fn apply(m: &[[i32; 3]; 3], v: [i64; 3]) -> [i64; 3] {
 /// shifting, and are not even checked. `edge_extent` bounds every component of the edges
 /// `b − a` and `c − a` (the mesh's `edge_extent`): below 2¹⁵ the cross product in words on
 /// 32-bit cores needs no test of them either.
-// In line at both its callers (the face normals a mesh keeps are found by it too) on the 32-bit
-// cores with a long multiply, where that measured faster; elsewhere it did not.
-#[cfg_attr(
-    all(target_pointer_width = "32", target_has_atomic = "32"),
-    inline(always)
-)]
 pub(crate) fn face_direction(
     p: [[i32; 3]; 3],
     normal_matrix: Option<&[[i32; 3]; 3]>,

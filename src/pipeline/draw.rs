@@ -469,13 +469,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     }
 
     /// Clips a triangle that crosses a clip plane (`planes`: those its vertices are outside of)
-    /// and fills the fan of what is left. Few triangles need it: out of line, its code no
-    /// longer moves the registers of the triangle walk's loop (on Cortex-M0, where that measured
-    /// slower, the compiler chooses).
-    #[cfg_attr(
-        not(all(target_pointer_width = "32", not(target_has_atomic = "32"))),
-        inline(never)
-    )]
+    /// and fills the fan of what is left. Few triangles need it: out of line, its code does
+    /// not move the registers of the triangle walk's loop.
+    #[inline(never)]
     fn fill_clipped<T: RasterTarget>(
         &self,
         target: &mut T,
