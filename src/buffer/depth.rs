@@ -312,17 +312,10 @@ impl<W: LoopWord> RoundedRows<W> {
     /// The walk of the plane through `(p[i], z[i])` (depths in Q1.30, at most 2³⁰; `area` the
     /// doubled signed area, non-zero; coordinates within the pipeline's range) on row `y`,
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
-    /// nearly edge-on, which the general loop takes). `short_sides`: every side known to lie
-    /// within ±2¹⁵ (see [`Plane::numerators_given`]).
+    /// nearly edge-on, which the general loop takes).
     #[inline]
-    pub(crate) fn new(
-        p: &[ScreenPoint; 3],
-        z: [i32; 3],
-        area: i64,
-        y: i32,
-        short_sides: bool,
-    ) -> Option<(Self, i32)> {
-        let (nx, ny) = Plane::numerators_given(p, z, short_sides);
+    pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
+        let (nx, ny) = Plane::numerators_given(p, z);
         let (sx, sy) = if cfg!(target_pointer_width = "64") {
             // With 64-bit words each step by one division of its numerator's magnitude by the
             // area's, its sign both signs'.
@@ -394,30 +387,11 @@ fn steps_over_area(nx: i64, ny: i64, area: i64) -> Option<(i32, i32)> {
 }
 
 /// `⌊(sx·dx + sy·dy + 8) / 16⌋` modulo 2³² for steps `sx`, `sy` and offsets `dx`, `dy` within
-/// ±2⁴ (sub-pixels within a pixel), whose sum lies within ±2³⁶: by the widening products, or
-/// without a long multiply (Cortex-M0) by [`rounded_offset_in_words`].
+/// ±2⁴ (sub-pixels within a pixel), whose sum lies within ±2³⁶.
 #[inline(always)]
 fn rounded_offset(sx: i32, dx: i32, sy: i32, dy: i32) -> i32 {
-    if NARROW_CORE {
-        rounded_offset_in_words(sx, dx, sy, dy)
-    } else {
-        let offset = mul_short(sx, dx).wrapping_add(mul_short(sy, dy));
-        (offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32
-    }
-}
-
-/// [`rounded_offset`] in words: with `s = 16·(s >> 4) + (s & 15)`, the multiples of 16 leave
-/// the division whole, `(sx >> 4)·dx + (sy >> 4)·dy` (modulo 2³², as the quotient is taken),
-/// and the low parts' products, below 2⁸ each, are rounded apart: four 32-bit multiplies where
-/// the widening products take four on Cortex-M0 and their 64-bit sum and shift more.
-#[inline(always)]
-fn rounded_offset_in_words(sx: i32, dx: i32, sy: i32, dy: i32) -> i32 {
-    let low_bits = SUBPIXEL_SCALE - 1;
-    let whole = (sx >> SUBPIXEL_BITS)
-        .wrapping_mul(dx)
-        .wrapping_add((sy >> SUBPIXEL_BITS).wrapping_mul(dy));
-    let low = (sx & low_bits).wrapping_mul(dx) + (sy & low_bits).wrapping_mul(dy);
-    whole.wrapping_add((low + SUBPIXEL_SCALE / 2) >> SUBPIXEL_BITS)
+    let offset = mul_short(sx, dx).wrapping_add(mul_short(sy, dy));
+    (offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32
 }
 
 impl<W: LoopWord> RowStarts for RoundedRows<W> {
@@ -623,42 +597,6 @@ mod tests {
         assert_eq!(steps_over_area(5, 5, 0), None);
     }
 
-    /// The Cortex-M0's offset of the reference pixel in words is the widening products' for
-    /// steps of every size and every offset within a pixel.
-    #[test]
-    fn rounded_offset_in_words_is_the_wide_one() {
-        let wide = |sx: i32, dx: i32, sy: i32, dy: i32| {
-            let offset = sx as i64 * dx as i64 + sy as i64 * dy as i64;
-            ((offset + 8) >> 4) as i32
-        };
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let ends = [
-            i32::MIN,
-            i32::MIN + 1,
-            -1,
-            0,
-            1,
-            15,
-            16,
-            i32::MAX - 1,
-            i32::MAX,
-        ];
-        for i in 0..200_000u32 {
-            let x = rng.next_u64();
-            let step = |v: u64| match i % 4 {
-                0 => ends[(v % ends.len() as u64) as usize],
-                _ => (v as i32) >> ((v >> 32) % 32),
-            };
-            let (sx, sy) = (step(x), step(x.rotate_left(17)));
-            let (dx, dy) = (rng.within(8), rng.within(15));
-            assert_eq!(
-                rounded_offset_in_words(sx, dx, sy, dy),
-                wide(sx, dx, sy, dy),
-                "{sx} {dx} {sy} {dy}"
-            );
-        }
-    }
-
     /// `RoundedRows` in 32-bit words (Cortex-M's) and in 64-bit ones (the host's) give the
     /// same value at every pixel of every span; each lies within its bound,
     /// `(|x − x_r| + |y − y_r|) / 2 + 5/4`, of the exact plane's (in rationals: twice the
@@ -685,9 +623,9 @@ mod tests {
             let spans = spans_in_range::<PipelineEdge>(p, clip, area);
             let y0 = spans.row();
             let (Some((mut narrow, st)), Some((mut wide, _)), Some((mut early, _))) = (
-                RoundedRows::<i32>::new(&p, z, area, y0, false),
-                RoundedRows::<i64>::new(&p, z, area, y0, false),
-                RoundedRows::<i32>::new(&p, z, area, y0 - 7, false),
+                RoundedRows::<i32>::new(&p, z, area, y0),
+                RoundedRows::<i64>::new(&p, z, area, y0),
+                RoundedRows::<i32>::new(&p, z, area, y0 - 7),
             ) else {
                 continue;
             };

@@ -27,22 +27,14 @@ pub struct ScreenTriangle {
     pub(super) p: [ScreenPoint; 3],
     pub(super) z: [i32; 3],
     pub(super) area: i64,
-    /// Every side known to lie within ±2¹⁵ (its vertices inside every clip plane).
-    pub(super) short_sides: bool,
 }
 
 impl ScreenTriangle {
     /// The triangle `p` with depths `z` (Q1.30, in [0, 2³⁰]; any for a target without depth)
-    /// and doubled signed area `area` (non-zero), within the pipeline's range; `short_sides`
-    /// when every side is known to lie within ±2¹⁵ (its vertices inside every clip plane).
+    /// and doubled signed area `area` (non-zero), within the pipeline's range.
     #[inline(always)]
-    pub(crate) fn new(p: [ScreenPoint; 3], z: [i32; 3], area: i64, short_sides: bool) -> Self {
-        ScreenTriangle {
-            p,
-            z,
-            area,
-            short_sides,
-        }
+    pub(crate) fn new(p: [ScreenPoint; 3], z: [i32; 3], area: i64) -> Self {
+        ScreenTriangle { p, z, area }
     }
 
     /// Its spans clipped to `clip`, walked as the pipeline's triangles are.
@@ -228,7 +220,7 @@ where
         // starts them as the whole frame does.
         let unclamped = if D::unclamped(triangle.max()) {
             let (p, z, area) = (&triangle.p, triangle.z, triangle.area);
-            RoundedRows::<NativeWord>::new(p, z, area, y, triangle.short_sides)
+            RoundedRows::<NativeWord>::new(p, z, area, y)
         } else {
             None
         };

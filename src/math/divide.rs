@@ -107,17 +107,13 @@ const fn with_sign_of(n: i64, q: u64) -> i64 {
     }
 }
 
-/// [`div_round`] for `d` that fits 32 bits: with a divide instruction and `d` below 2¹⁸ (the
-/// depth gradients of small triangles) by [`div_by_short`], otherwise by [`div_u64_u32`], once
-/// for a quotient below 2³², once more for its high word.
+/// [`div_round`] for `d` that fits 32 bits, by [`div_u64_u32`]: once for a quotient below 2³²,
+/// once more for its high word.
 const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
     if d <= 0 || d > u32::MAX as i64 {
         return None;
     }
     let d = d as u32;
-    if !NARROW_CORE && d < 1 << SHORT_DIVISOR_BITS {
-        return Some(div_round_by_short(n, d));
-    }
     let a = rounded_magnitude(n, d);
     let hi = (a >> 32) as u32;
     let q = if hi < d {
@@ -127,38 +123,6 @@ const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
         ((qh as u64) << 32) | div_u64_u32(((rh as u64) << 32) | (a & 0xFFFF_FFFF), d) as u64
     };
     Some(with_sign_of(n, q))
-}
-
-/// [`div_round`] for `0 < d < 2¹⁸` by [`div_by_short`] (tested through
-/// [`div_round_u64_u32`], which takes it on every core with a divide instruction).
-#[inline(always)]
-const fn div_round_by_short(n: i64, d: u32) -> i64 {
-    with_sign_of(n, div_by_short(rounded_magnitude(n, d), d))
-}
-
-/// Divisors below `2^SHORT_DIVISOR_BITS` leave room for a 14-bit digit beside any remainder in
-/// a 32-bit word: [`div_by_short`] applies.
-const SHORT_DIVISOR_BITS: u32 = 18;
-
-/// `⌊a / d⌋` for `0 < d < 2¹⁸` by four 32-bit divisions, one per 14-bit digit of `a` below its
-/// top 22 bits (schoolbook long division: each partial remainder is below `d`, so it and the
-/// next digit fit 32 bits). With a hardware divide (Cortex-M3/M4) about half the cost of
-/// [`div_u64_u32`]'s normalised 16-bit digits, and any quotient size: the depth gradients of
-/// small triangles (doubled areas below 2¹⁸ square sub-pixels) whose numerators
-/// [`shifted_by_short`] does not take divide so.
-#[inline(always)]
-const fn div_by_short(a: u64, d: u32) -> u64 {
-    const DIGIT: u32 = 14;
-    const MASK: u64 = (1 << DIGIT) - 1;
-    let top = (a >> (3 * DIGIT)) as u32;
-    let (q3, r) = (top / d, top % d);
-    let n2 = (r << DIGIT) | ((a >> (2 * DIGIT)) & MASK) as u32;
-    let (q2, r) = (n2 / d, n2 % d);
-    let n1 = (r << DIGIT) | ((a >> DIGIT) & MASK) as u32;
-    let (q1, r) = (n1 / d, n1 % d);
-    let n0 = (r << DIGIT) | (a & MASK) as u32;
-    let q0 = n0 / d;
-    ((q3 as u64) << (3 * DIGIT)) | ((q2 as u64) << (2 * DIGIT)) | ((q1 as u64) << DIGIT) | q0 as u64
 }
 
 /// Divisors below `2^SHIFTED_DIVISOR_BITS` take [`shifted_by_short`]: a remainder shifted by
@@ -171,7 +135,7 @@ const MAX_SHIFT: u32 = 14;
 /// q·d + r`, it is `q · 2^s + ⌊(r · 2^s + ⌊d/2⌋) / d⌋`, and `r · 2^s + ⌊d/2⌋` lies below `2¹⁷ ·
 /// 2¹⁴ + 2¹⁶`, a 32-bit word. This is the magnitude [`div_round`] rounds for a numerator `±m ·
 /// 2^s`: the depth gradients of most small triangles (a numerator below 2³² shifted by 14), in
-/// two divides where [`div_by_short`] takes four.
+/// two divides.
 #[inline(always)]
 const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     let (q, r) = (m / d, m % d);
@@ -192,31 +156,9 @@ fn shifted_i32_in_words(n: i64, s: u32, d: u32) -> Option<i32> {
     Some(if n < 0 { -magnitude } else { magnitude })
 }
 
-/// [`fraction_by_short`]'s divisors lie below `2^FRACTION_DIVISOR_BITS`: a numerator of at most
-/// the divisor, shifted by a 13-bit digit, still fits a 32-bit word.
-const FRACTION_DIVISOR_BITS: u32 = 19;
-
-/// [`div_round`]`(n · 2³⁰, d)` by three 32-bit divisions for `0 < d < 2¹⁹` and `0 ≤ n ≤ d` (a
-/// vertex's depth by its `w` at unit scale: Q16.16 clip coordinates, `w` below 2¹⁹ within eight
-/// units of the camera); `None` for another `d`. `d` is a word, its range one test. `n` must
-/// lie in `[0, d]`, which the caller knows; outside that the result means nothing, but nothing
-/// overflows. `n·2³⁰ + ⌊d/2⌋ < 2⁵⁰` is the magnitude `div_round` rounds, and the quotient is at
-/// most 2³⁰.
-#[inline(always)]
-const fn fraction_by_short(n: i64, d: i32) -> Option<i64> {
-    // Unsigned: d − 1 in [0, 2¹⁹ − 1), one test of a word.
-    if (d as u32).wrapping_sub(1) >= (1 << FRACTION_DIVISOR_BITS) - 1 {
-        return None;
-    }
-    match NonZeroU32::new(d as u32) {
-        Some(d) => Some(fraction_in_words(n as u32, d)),
-        None => None,
-    }
-}
-
-/// [`fraction_by_short`]'s quotient, for `d < 2¹⁹` and `0 ≤ n ≤ d`, which the caller knows
-/// (see there; any other operands give a meaningless quotient, without overflow): with 64-bit
-/// words one division, else [`fraction_by_digits`].
+/// `round(n · 2³⁰ / d)` for `d < 2¹⁹` and `0 ≤ n ≤ d`, which the caller knows (a vertex's
+/// depth `z / w` in Q1.30; any other operands give a meaningless quotient, without overflow):
+/// with 64-bit words one division, else [`fraction_by_digits`].
 #[inline(always)]
 pub(crate) const fn fraction_in_words(n: u32, d: NonZeroU32) -> i64 {
     if cfg!(target_pointer_width = "64") {
@@ -231,9 +173,8 @@ pub(crate) const fn fraction_in_words(n: u32, d: NonZeroU32) -> i64 {
 #[inline(always)]
 const fn fraction_by_digits(n: u32, d: NonZeroU32) -> i64 {
     let d = d.get();
-    // `div_round_by_short(n << 30, d)` without its sign and saturation, which n ≥ 0 and the
-    // bound need not, and with three divides instead of four: the numerator's low 30 bits are
-    // zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂, n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) +
+    // `div_round(n << 30, d)` without its sign and saturation, which n ≥ 0 and the bound need
+    // not, in three 32-bit divides: the numerator's low 30 bits are zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂, n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) +
     // r₂·2⁴ + ⌊d/2⌋, whose last part divides to at most 16. n ≤ d < 2¹⁹: every shifted value
     // below fits a word, and the sum is at most 2³⁰ (the sums wrap, without meaning, only for
     // an n beyond d).
@@ -311,14 +252,9 @@ impl DivideBy {
     /// `ShortQuotients` instead.
     #[inline(always)]
     pub(crate) fn new_positive32(d: i32) -> DivideBy {
-        let d32 = if !NARROW_CORE && cfg!(target_pointer_width = "32") {
-            d
-        } else {
-            0
-        };
         DivideBy {
             d: d as i64,
-            d32,
+            d32: 0,
             by: None,
         }
     }
@@ -337,35 +273,13 @@ impl DivideBy {
     }
 
     /// [`round`](Self::round)`(n · 2³⁰)` for `0 ≤ n ≤ d`, which the caller knows (a vertex's
-    /// depth `z / w` in Q1.30, inside the near and far planes; any other `n` gives a meaningless
-    /// quotient): on 32-bit cores with a divide instruction and `d` below 2¹⁹ (unit-scale clip
-    /// coordinates) [`fraction_by_short`] in line, where [`div_round`] is a call that first
-    /// chooses a path by the operands' sizes.
+    /// depth `z / w` in Q1.30, inside the near and far planes).
     #[inline(always)]
     pub(crate) fn round_fraction(&self, n: i64) -> i64 {
-        if !NARROW_CORE && cfg!(target_pointer_width = "32") {
-            if let Some(q) = fraction_by_short(n, self.d32) {
-                return q;
-            }
-        }
         self.round(n << 30)
     }
 
-    /// [`round`](Self::round) with [`div_by_short`] in line on 32-bit cores with a divide
-    /// instruction when `d` lies below 2¹⁸: the depth gradients of small triangles.
-    #[inline(always)]
-    pub(crate) fn round_by_short(&self, n: i64) -> i64 {
-        // The 32-bit copy where the divisor is a positive word (else 0): one test of a word.
-        if !NARROW_CORE
-            && cfg!(target_pointer_width = "32")
-            && (self.d32 as u32).wrapping_sub(1) < (1 << SHORT_DIVISOR_BITS) - 1
-        {
-            return div_round_by_short(n, self.d32 as u32);
-        }
-        self.round(n)
-    }
-
-    /// [`round_by_short`](Self::round_by_short)`(n << shift)` for `shift ≤ 14` (and `n << shift`
+    /// [`round`](Self::round)`(n << shift)` for `shift ≤ 14` (and `n << shift`
     /// within i64): on 32-bit cores with a divide instruction, a divisor below 2¹⁷ and `|n|`
     /// below 2³² (most depth gradients of small triangles) by [`shifted_by_short`], two
     /// divides in 32-bit words.
@@ -376,7 +290,7 @@ impl DivideBy {
                 return with_sign_of(n, shifted_by_short(m, shift, self.d32 as u32));
             }
         }
-        self.round_by_short(n << shift)
+        self.round(n << shift)
     }
 
     /// [`round_shifted`](Self::round_shifted) where it fits an i32, else `None`; on 32-bit
@@ -889,33 +803,13 @@ mod tests {
         }
     }
 
-    /// The division by a short divisor gives the 128-bit quotient for divisors of every size
-    /// below 2¹⁸ and numerators of every size, the ends of the range included.
+    /// A depth's division by `w` through three 32-bit divisions equals `div_round(n · 2³⁰, d)`
+    /// for `0 < d < 2¹⁹` and `0 ≤ n ≤ d` (the ends included), and overflows nowhere for an `n`
+    /// outside its range (which its caller never passes).
     #[test]
-    fn division_by_a_short_divisor_is_exact() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        for i in 0..400_000u32 {
-            let x = rng.next_u64();
-            let d = ((x >> 40) as u32 >> (6 + i % 18)).max(1);
-            let a = match i % 1000 {
-                0 => u64::MAX,
-                1 => 0,
-                2 => (d as u64) << 50,
-                _ => rng.next_u64() >> (i % 64),
-            };
-            assert_eq!(div_by_short(a, d), a / d as u64, "{a} / {d}");
-        }
-        let top = (1u32 << SHORT_DIVISOR_BITS) - 1;
-        assert_eq!(div_by_short(u64::MAX, top), u64::MAX / top as u64);
-    }
-
-    /// A depth's division by `w` through short digits equals `div_round(n · 2³⁰, d)` wherever
-    /// it applies (`0 < d < 2¹⁹`, `0 ≤ n ≤ d`, the ends included), declines other divisors, and
-    /// overflows nowhere for an `n` outside its range (which its caller never passes).
-    #[test]
-    fn fraction_by_short_equals_div_round() {
+    fn fraction_by_digits_equals_div_round() {
         let mut rng = crate::testing::XorShift(0x5DEE_CE66_D1CE_4E5Bu64);
-        let top = (1i64 << FRACTION_DIVISOR_BITS) - 1;
+        let top = (1i64 << 19) - 1;
         for i in 0..200_000u32 {
             let d = ((rng.next_u64() >> 45) as i64 >> (i % 19)).max(1);
             let n = match i % 100 {
@@ -923,20 +817,16 @@ mod tests {
                 1 => d,
                 _ => (rng.next_u64() % (d as u64 + 1)) as i64,
             };
-            let expected = div_round(n << 30, d);
-            assert_eq!(fraction_by_short(n, d as i32), Some(expected), "{n} / {d}");
             let nz = NonZeroU32::new(d as u32).unwrap_or(NonZeroU32::MIN);
-            assert_eq!(fraction_by_digits(n as u32, nz), expected, "{n} / {d}");
+            assert_eq!(
+                fraction_by_digits(n as u32, nz),
+                div_round(n << 30, d),
+                "{n} / {d}"
+            );
         }
-        assert_eq!(fraction_by_short(top, top as i32), Some(1 << 30));
         let nz = NonZeroU32::new(top as u32).unwrap_or(NonZeroU32::MIN);
         assert_eq!(fraction_by_digits(top as u32, nz), 1 << 30);
-        for (n, d) in [(0, 0), (1, 0), (1, top as i32 + 1), (0, -3), (0, i32::MIN)] {
-            assert_eq!(fraction_by_short(n, d), None, "{n} / {d}");
-        }
-        // An n outside [0, d] gives some quotient, and no overflow.
-        for (n, d) in [(-1, 5), (6, 5), (i64::MAX, top as i32), (i64::MIN, 1)] {
-            assert!(fraction_by_short(n, d).is_some(), "{n} / {d}");
+        for (n, d) in [(-1i64, 5i32), (6, 5), (i64::MAX, top as i32), (i64::MIN, 1)] {
             fraction_by_digits(
                 n as u32,
                 NonZeroU32::new(d as u32).unwrap_or(NonZeroU32::MIN),

@@ -85,12 +85,9 @@ const fn leading_zeros_by_halves(v: u32) -> u32 {
     n + BYTE_ZEROS[(v >> 24) as usize] as u32
 }
 
-/// `v.leading_zeros()` (by [`leading_zeros_by_halves`] of its words where that is cheaper).
+/// `v.leading_zeros()`, from its words' counts.
 #[inline]
 pub(crate) const fn leading_zeros64(v: u64) -> u32 {
-    if !NARROW_CORE {
-        return v.leading_zeros();
-    }
     let hi = (v >> 32) as u32;
     if hi != 0 {
         leading_zeros32(hi)
@@ -124,15 +121,7 @@ pub(crate) const fn is_short(d: i32) -> bool {
     (d.wrapping_add(1 << 15) as u32) < 1 << 16
 }
 
-/// `ux·vy − vx·uy` in 32-bit arithmetic when every factor [`is_short`] (within ±(2³¹ − 2¹⁵));
-/// for cores without a long multiply. `None` otherwise.
-#[inline(always)]
-pub(crate) fn narrow_cross(ux: i32, uy: i32, vx: i32, vy: i32) -> Option<i64> {
-    (is_short(ux) && is_short(uy) && is_short(vx) && is_short(vy))
-        .then(|| short_sides_cross(ux, uy, vx, vy))
-}
-
-/// [`narrow_cross`] of factors known to be short, untested: each product within ±2³⁰, their
+/// `ux·vy − vx·uy` in 32-bit words, of factors known to be short (within ±2¹⁵), untested: each product within ±2³⁰, their
 /// difference within ±(2³¹ − 2¹⁵). Other factors give a meaningless value, but nothing
 /// overflows.
 #[inline(always)]
@@ -210,16 +199,10 @@ const fn short_by_halves(a: i32, b: i32) -> i64 {
     halves_times(a >> 16, a & 0xFFFF, b)
 }
 
-/// `a · b` exactly for `|a| ≤ 2¹⁵` and `b` of any 32 bits unsigned: on cores without a long
-/// multiply two 32-bit products of `a` by `b`'s halves, each within ±2³¹, instead of the
-/// library's 64-bit product.
+/// `a · b` exactly for `|a| ≤ 2¹⁵` and `b` of any 32 bits unsigned.
 #[inline(always)]
 pub(crate) const fn mul_short_u32(a: i32, b: u32) -> i64 {
-    if NARROW_CORE {
-        halves_times((b >> 16) as i32, (b & 0xFFFF) as i32, a)
-    } else {
-        a as i64 * b as i64
-    }
+    a as i64 * b as i64
 }
 
 /// `(high·2¹⁶ + low) · b` for halves `high`, `low` (`0 ≤ low < 2¹⁶`) of a long factor and a
@@ -410,36 +393,6 @@ mod tests {
                 );
             }
         }
-    }
-
-    /// The 32-bit cross product (used where 64-bit products are library calls, so not on the
-    /// host) equals the 64-bit one wherever it answers, and answers for sides below 2¹⁵.
-    #[test]
-    fn narrow_cross_equals_wide() {
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let mut next = |bits: u64| {
-            let x = rng.next_u64();
-            ((x as i64) >> (64 - bits)) as i32
-        };
-        for i in 0..100_000 {
-            let bits = 10 + i % 8;
-            let (ux, uy, vx, vy) = (next(bits), next(bits), next(bits), next(bits));
-            let wide = ux as i64 * vy as i64 - vx as i64 * uy as i64;
-            let fits = [ux, uy, vx, vy].iter().all(|d| (-32768..32768).contains(d));
-            assert_eq!(narrow_cross(ux, uy, vx, vy), fits.then_some(wide));
-        }
-        // The extremes: the difference reaches ±(2³¹ − 2¹⁵) and still fits.
-        let extreme =
-            |a: i32, b: i32, c: i32, d: i32| Some(a as i64 * d as i64 - c as i64 * b as i64);
-        assert_eq!(
-            narrow_cross(-32768, 32767, -32768, -32768),
-            extreme(-32768, 32767, -32768, -32768)
-        );
-        assert_eq!(
-            narrow_cross(-32768, -32768, -32768, 32767),
-            extreme(-32768, -32768, -32768, 32767)
-        );
-        assert_eq!(narrow_cross(32768, 0, 0, 0), None);
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! Integer square root: the only root the pipeline takes (normals, light directions, camera
 //! axes), exact and free of floats.
 
-use super::scalar::{mul_wide_u32, NARROW_CORE};
+use super::scalar::mul_wide_u32;
 
 /// `floor(sqrt(n))` of an unsigned integer expression of type `$t`, bit by bit: a pair of
 /// bits a step, shifts, adds and compares, no division (the one body of [`isqrt_u64`] and
@@ -107,26 +107,7 @@ pub(crate) fn rsqrt_q45(m: u32) -> u32 {
 /// is a routine of four; elsewhere the widening multiply.
 #[inline(always)]
 fn square_shr31(y: u32) -> u32 {
-    if NARROW_CORE {
-        square_shr31_in_words(y)
-    } else {
-        (mul_wide_u32(y, y) >> 31) as u32
-    }
-}
-
-/// [`square_shr31`] in words: y² = h²·2³² + hl·2¹⁷ + l², and
-/// hl·2¹⁷ = ⌊hl / 2¹⁴⌋·2³¹ + (hl mod 2¹⁴)·2¹⁷, so the floor over 2³¹ is 2h² + ⌊hl / 2¹⁴⌋
-/// plus that of (hl mod 2¹⁴)·2¹⁷ + l² (below 3·2³¹), whose parts below 2³¹ sum in a word.
-#[inline(always)]
-fn square_shr31_in_words(y: u32) -> u32 {
-    let (h, l) = (y >> 16, y & 0xFFFF);
-    let (hl, ll) = (h * l, l * l);
-    let below = ((hl & 0x3FFF) << 17) + (ll & 0x7FFF_FFFF);
-    (h * h)
-        .wrapping_mul(2)
-        .wrapping_add(hl >> 14)
-        .wrapping_add(ll >> 31)
-        .wrapping_add(below >> 31)
+    (mul_wide_u32(y, y) >> 31) as u32
 }
 
 #[cfg(test)]
@@ -210,18 +191,6 @@ mod tests {
             let x = rng.next_u64();
             let r = isqrt_u64(x) as u128;
             assert!(r * r <= x as u128 && (r + 1) * (r + 1) > x as u128);
-        }
-    }
-
-    /// The square's floor over 2³¹ in words is the 64-bit one's low word, for every size of y.
-    #[test]
-    fn square_shr31_in_words_is_exact() {
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        let edges = (0..32).flat_map(|b| [1u32 << b, (1u32 << b) - 1, u32::MAX >> b]);
-        for y in edges.chain((0..200_000).map(|_| rng.next_u64() as u32 >> (rng.next_u64() % 32))) {
-            let exact = ((y as u64 * y as u64) >> 31) as u32;
-            assert_eq!(square_shr31_in_words(y), exact, "{y}");
-            assert_eq!(square_shr31(y), exact, "{y}");
         }
     }
 }

@@ -2,9 +2,7 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use super::scalar::{
-    is_short, magnitude_bits, map3, mul_wide, shr_round, Scalar, NARROW_CORE, UNIT_ONE,
-};
+use super::scalar::{is_short, magnitude_bits, mul_wide, shr_round, Scalar, UNIT_ONE};
 use super::sqrt::isqrt_u64;
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
@@ -145,13 +143,6 @@ pub(crate) fn saturate(v: i64) -> Scalar {
 /// Exact cross product of raw vectors whose components fit in i32 (each term < 2⁶³).
 #[inline]
 pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
-    if NARROW_CORE {
-        // Short components (the edges of most triangles): 32-bit products, where a 64-bit
-        // product is a library call.
-        if let Some(n) = cross_short(a, b) {
-            return map3(n, i64::from);
-        }
-    }
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     // Products of i32 factors lie in [−2⁶² + 2³¹, 2⁶²], so a difference of two lies within
     // ±(2⁶³ − 2³¹): no overflow, and no clamp.
@@ -227,41 +218,11 @@ pub(crate) fn dot_wide(a: [i32; 3], b: [i32; 3]) -> i64 {
 }
 
 /// `a·b > 0` for a face direction `a` (any i32 components but `i32::MIN`) and a light's unit
-/// direction `b` (Q2.30, components within ±2³⁰): on cores without a long multiply decided by
-/// [`dot_sign_by_halves`] where it can be (all but the faces nearly edge-on to the light),
-/// since the exact sum takes twelve 32-bit products there. Products below 2⁶¹, three sum
+/// direction `b` (Q2.30, components within ±2³⁰). Products below 2⁶¹, three sum
 /// below 2⁶³: the exact sum fits i64.
 #[inline(always)]
 pub(crate) fn dot_is_positive(a: [i32; 3], b: [i32; 3]) -> bool {
-    if NARROW_CORE {
-        if let Some(positive) = dot_sign_by_halves(a, b) {
-            return positive;
-        }
-    }
     dot_wide(a, b) > 0
-}
-
-/// `Some(a·b > 0)` from the components' high halves alone, for `a` and `b` as
-/// [`dot_is_positive`] takes them; `None` when they cannot tell. With `a = ah·2¹⁶ + al`
-/// (`0 ≤ al < 2¹⁶`, `−2¹⁵ ≤ ah < 2¹⁵`) and `b = bh·2¹⁶ + bl` (`|bh| ≤ 2¹⁴`),
-/// `a·b − ah·bh·2³² = (ah·bl + al·bh)·2¹⁶ + al·bl` lies in `(−3·2⁴⁶, 3·2⁴⁶ + 2³²)`: three such
-/// terms move the sum by less than `9·2¹⁴` units of 2³² below and `9·2¹⁴ + 3` above
-/// `A = Σ ah·bh` (within ±3·2²⁹: a word).
-#[inline(always)]
-fn dot_sign_by_halves(a: [i32; 3], b: [i32; 3]) -> Option<bool> {
-    const MARGIN: i32 = 9 << 14;
-    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
-    let high = |x: i32, y: i32| (x >> 16).wrapping_mul(y >> 16);
-    let s = high(a0, b0)
-        .wrapping_add(high(a1, b1))
-        .wrapping_add(high(a2, b2));
-    if s >= MARGIN {
-        Some(true)
-    } else if s <= -MARGIN - 3 {
-        Some(false)
-    } else {
-        None
-    }
 }
 
 /// `max(0, a·b)` of two Q2.30 unit vectors, Q2.30, the dot product rounded to nearest: Lambert's
@@ -384,47 +345,5 @@ mod tests {
         assert!(normalize([0, 0, 0]).is_none());
         let u = normalize([i64::MIN, i64::MAX, i64::MIN]).unwrap();
         assert!(u.iter().all(|c| c.abs() <= UNIT_ONE));
-    }
-
-    /// The high halves' sign is the exact sum's wherever they give one, at the extremes (a
-    /// face direction's ±(2³¹ − 1), a light's ±2³⁰) and at random, and they give one for most
-    /// pairs of a face direction and a light.
-    #[test]
-    fn dot_sign_by_halves_is_the_exact_sign() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let one = UNIT_ONE;
-        let extremes = [
-            one,
-            -one,
-            one - 1,
-            1 - one,
-            0,
-            1,
-            -1,
-            1 << 16,
-            -(1 << 16),
-            0xFFFF,
-        ];
-        let (mut decided, mut total) = (0, 0);
-        for i in 0..400_000usize {
-            let mut pick = |k: usize| match extremes.get((i / 7 + k * 3) % 40) {
-                Some(&e) => e,
-                None => rng.within(one) >> (rng.next_u64() % 8),
-            };
-            // A face direction reaches twice a light's range (a light's component doubled).
-            let face = |c: i32| c.saturating_mul(2).max(-i32::MAX);
-            let (a, b) = (
-                [pick(0), pick(1), pick(2)].map(face),
-                [pick(3), pick(4), pick(5)],
-            );
-            let exact = dot_wide(a, b) > 0;
-            if let Some(positive) = dot_sign_by_halves(a, b) {
-                assert_eq!(positive, exact, "{a:?} {b:?}");
-                decided += 1;
-            }
-            assert_eq!(dot_is_positive(a, b), exact, "{a:?} {b:?}");
-            total += 1;
-        }
-        assert!(decided * 10 > total * 9, "{decided} of {total}");
     }
 }

@@ -191,12 +191,11 @@ fn fill<T: RasterTarget, P: Paint>(
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
-    short_sides: bool,
     paint: &P,
     stats: &mut Stats,
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
-    target.fill_triangle(&ScreenTriangle::new(p, z, area, short_sides), paint, stats)
+    target.fill_triangle(&ScreenTriangle::new(p, z, area), paint, stats)
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
@@ -323,8 +322,6 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             } else {
                 &NO_COLORS
             };
-            // Every side short (see `inside_area2`): what only Cortex-M0 reads.
-            let short_sides = NARROW_CORE;
             self.fill_face(
                 target,
                 setup,
@@ -332,7 +329,6 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 &v,
                 colors,
                 area,
-                short_sides,
                 stats,
             )?;
             return Ok(());
@@ -505,7 +501,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 if kept(facing, area, stats) {
                     let colors = [first.2, v1.2, v2.2];
                     let face = (Self::face_normal(setup, k), tri);
-                    self.fill_face(target, setup, face, &v, &colors, area, false, stats)?;
+                    self.fill_face(target, setup, face, &v, &colors, area, stats)?;
                 }
             }
         }
@@ -514,8 +510,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
 
     /// Shades and fills one screen triangle of `tri` (the whole triangle, or a piece of it after
     /// clipping), which culling kept: vertices are (snapped position, depth), `colors` their
-    /// lit colours (Gouraud), `area` its doubled signed area, `short_sides` true only when every
-    /// side is known to lie within ±2¹⁵ (its vertices inside every clip plane).
+    /// lit colours (Gouraud), `area` its doubled signed area.
     // Not inlined: one call per triangle costs little and keeps the stage measurable.
     #[inline(never)]
     #[allow(clippy::too_many_arguments)]
@@ -527,7 +522,6 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         v: &[(ScreenPoint, i32); 3],
         colors: &[[i32; 3]; 3],
         area: i64,
-        short_sides: bool,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         let p = map3(*v, |v| v.0);
@@ -558,17 +552,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
             let paint = self.shading.paint(&face, lighting);
-            fill(target, p, z, area, short_sides, &paint, stats)
+            fill(target, p, z, area, &paint, stats)
         } else {
-            fill(
-                target,
-                p,
-                z,
-                area,
-                short_sides,
-                &Flat.paint(&face, lighting),
-                stats,
-            )
+            fill(target, p, z, area, &Flat.paint(&face, lighting), stats)
         }
     }
 

@@ -34,7 +34,7 @@ pub use triangle::{triangle_spans, Span, TriangleSpans};
 
 use embedded_graphics::primitives::Rectangle;
 
-use crate::math::{mul_wide, narrow_cross, short_sides_cross, NARROW_CORE, SUBPIXEL_SCALE};
+use crate::math::{mul_wide, short_sides_cross, NARROW_CORE, SUBPIXEL_SCALE};
 
 /// The largest magnitude of a sub-pixel coordinate the rasterisers accept (2²⁴, a million
 /// pixels); anything further is rejected as a whole.
@@ -154,19 +154,6 @@ pub(crate) fn short_sides_area(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -
 /// screen), exactly. Coordinates must lie within ±[`COORD_LIMIT`].
 #[inline]
 pub(crate) fn doubled_area(a: ScreenPoint, b: ScreenPoint, c: ScreenPoint) -> i64 {
-    // Sides fit 32 bits (coordinates within ±2²⁴).
-    let (ux, uy) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
-    let (vx, vy) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
-    if NARROW_CORE {
-        if let Some(area) = narrow_cross(ux, uy, vx, vy) {
-            return area;
-        }
-    }
-    if cfg!(target_pointer_width = "64") {
-        // Differences taken in 64 bits (fewer instructions on x86-64).
-        let d = |p: i32, q: i32| p as i64 - q as i64;
-        return d(b.x, a.x) * d(c.y, a.y) - d(c.x, a.x) * d(b.y, a.y);
-    }
     area_in_words(a, b, c)
 }
 
@@ -210,17 +197,10 @@ pub(crate) const fn floor_div(n: i64, d: i64) -> i64 {
     n.div_euclid(d)
 }
 
-/// `(floor(n / d), n mod d)` for `d > 0`, the remainder in `[0, d)`. Where a division is a
-/// library routine of a hundred instructions or more (no hardware divide), quotients of −1, 0
-/// and 1 (steep edges, and edges starting near their first row) are found by comparisons.
-/// Otherwise [`floor_divmod32`] where the operands fit and the core is 32-bit.
+/// `(floor(n / d), n mod d)` for `d > 0`, the remainder in `[0, d)`: [`floor_divmod32`] where
+/// the operands fit and the core is 32-bit.
 #[inline]
 pub(crate) fn floor_divmod(n: i64, d: i64) -> (i64, i64) {
-    if NARROW_CORE {
-        if let Some(qr) = small_floor_divmod(n, d) {
-            return qr;
-        }
-    }
     // 32-bit cores only: there a 64-bit division is a long library routine.
     if let (true, Ok(n32), Ok(d32)) = (
         cfg!(target_pointer_width = "32"),
@@ -238,23 +218,8 @@ pub(crate) fn floor_divmod(n: i64, d: i64) -> (i64, i64) {
     }
 }
 
-/// [`floor_divmod`] for quotients −1, 0 and 1 (`d > 0`), by comparisons; `None` otherwise.
-#[inline(always)]
-fn small_floor_divmod(n: i64, d: i64) -> Option<(i64, i64)> {
-    if n >= 0 && n < d {
-        Some((0, n))
-    } else if n < 0 && n >= -d {
-        Some((-1, n + d))
-    } else if n >= d && n - d < d {
-        Some((1, n - d))
-    } else {
-        None
-    }
-}
-
-/// Quotients [`small_floor_divmod32`] finds by subtraction before a library division, for lines
-/// (after [`small_floor_divmod`]'s −1 to 1): many lines are flat, and the turns a larger
-/// quotient takes before the division are lost.
+/// Quotients [`small_floor_divmod32`] finds by subtraction before a library division, for lines:
+/// many lines are flat, and the turns a larger quotient takes before the division are lost.
 const SHORT_QUOTIENT: i32 = 2;
 
 /// [`SHORT_QUOTIENT`] for a triangle's edges, whose quotients are the pixels a row steps and
@@ -463,10 +428,10 @@ mod tests {
         }
     }
 
-    /// The division-free quotients (used where division is a library routine, so not on the
-    /// host) equal floor division wherever they answer, and answer for quotients −1, 0, 1
-    /// (for 32-bit operands exactly those from −SHORT to SHORT − 1): at random, and at the
-    /// ends of i32 for both operands.
+    /// `floor_divmod` is floor division, and the division-free quotients of 32-bit operands
+    /// (used where division is a library routine, so not on the host) equal it wherever they
+    /// answer, and answer for quotients from −SHORT to SHORT − 1: at random, and at the ends of
+    /// i32 for both operands.
     #[test]
     fn small_quotients_equal_floor_division() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
@@ -480,11 +445,7 @@ mod tests {
             (((x as i64) >> (x % 64)) % (20 * d + 1), d)
         });
         for (n, d) in ends.collect::<std::vec::Vec<_>>().into_iter().chain(random) {
-            let expected = (n.div_euclid(d), n.rem_euclid(d));
-            match small_floor_divmod(n, d) {
-                Some(qr) => assert_eq!(qr, expected, "{n} / {d}"),
-                None => assert!(!(-1..=1).contains(&expected.0), "{n} / {d}"),
-            }
+            assert_eq!(floor_divmod(n, d), (n.div_euclid(d), n.rem_euclid(d)));
             if let (Ok(n), Ok(d)) = (i32::try_from(n), i32::try_from(d)) {
                 let expected = (n.div_euclid(d), n.rem_euclid(d));
                 for (found, short) in [

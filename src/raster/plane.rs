@@ -2,7 +2,7 @@
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
 use super::ScreenPoint;
-use crate::math::{is_short, mul_short, mul_wide, DivideBy, NARROW_CORE, SUBPIXEL_SCALE};
+use crate::math::{mul_wide, DivideBy, SUBPIXEL_SCALE};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels.
 ///
@@ -50,45 +50,27 @@ impl Plane {
     /// exact, within ±2⁴⁷, from 32-bit differences and products.
     #[inline(always)]
     pub(crate) fn numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
-        Plane::numerators_given(p, v, false)
+        Plane::numerators_given(p, v)
     }
 
-    /// [`numerators`](Self::numerators) of a triangle whose sides are known to lie within
-    /// ±2¹⁵ when `short_sides` (its vertices inside every clip plane): on Cortex-M0 no side is
-    /// tested before its two-multiply product.
+    /// [`numerators`](Self::numerators) in the form this core takes in fewer instructions.
     #[inline(always)]
-    pub(crate) fn numerators_given(
-        p: &[ScreenPoint; 3],
-        v: [i32; 3],
-        short_sides: bool,
-    ) -> (i64, i64) {
+    pub(crate) fn numerators_given(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
         const SUMS: bool = cfg!(all(target_pointer_width = "32", target_has_atomic = "32"));
-        Plane::numerators_as::<SUMS>(p, v, short_sides)
+        Plane::numerators_as::<SUMS>(p, v)
     }
 
     /// [`numerators`](Self::numerators) as differences of products, or with `SUMS` as sums of
     /// products with one side of each negated: what Cortex-M3/M4 take. Both tested on every
     /// host.
     #[inline(always)]
-    fn numerators_as<const SUMS: bool>(
-        p: &[ScreenPoint; 3],
-        v: [i32; 3],
-        short_sides: bool,
-    ) -> (i64, i64) {
+    fn numerators_as<const SUMS: bool>(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
         let [a, b, c] = *p;
         // Coordinates within ±2¹⁵ and values in [0, 2³⁰]: every difference fits i32.
         let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
         let (dx2, dy2) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
         let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
-        // On Cortex-M0 a side within ±2¹⁵ (every side of an on-screen triangle) takes the
-        // two-multiply product.
-        let times = |v: i32, side: i32| {
-            if NARROW_CORE && (short_sides || is_short(side)) {
-                mul_short(v, side)
-            } else {
-                mul_wide(v, side)
-            }
-        };
+        let times = mul_wide;
         if SUMS {
             let (neg_dx2, neg_dy1) = (a.x.wrapping_sub(c.x), a.y.wrapping_sub(b.y));
             let nx = times(dv1, dy2).wrapping_add(times(dv2, neg_dy1));
@@ -241,16 +223,8 @@ mod tests {
                 (v[2] - v[0]) as i64 * (p[1].x - p[0].x) as i64
                     - (v[1] - v[0]) as i64 * (p[2].x - p[0].x) as i64,
             );
-            assert_eq!(
-                Plane::numerators_as::<true>(&p, v, false),
-                exact,
-                "{p:?} {v:?}"
-            );
-            assert_eq!(
-                Plane::numerators_as::<false>(&p, v, false),
-                exact,
-                "{p:?} {v:?}"
-            );
+            assert_eq!(Plane::numerators_as::<true>(&p, v), exact, "{p:?} {v:?}");
+            assert_eq!(Plane::numerators_as::<false>(&p, v), exact, "{p:?} {v:?}");
         }
     }
 

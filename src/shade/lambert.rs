@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{
     apply, cosine_unit, dot_is_positive, face_direction, map3, mul_wide, shrink, NewtonDirection,
-    Normalize, NARROW_CORE, UNIT_ONE,
+    Normalize, UNIT_ONE,
 };
 #[cfg(test)]
 use crate::math::{dot_wide, normalize};
@@ -91,42 +91,13 @@ fn cosine(n: Option<[i32; 3]>, light: &PreparedLight) -> i32 {
 /// overflows a sum of them.
 #[inline(always)]
 fn term(channel: i64, d: i32) -> i64 {
-    if NARROW_CORE {
-        if let Some(t) = term_by_halves(channel, d) {
-            return t;
-        }
-    }
     mul_wide(channel as i32, d) >> 30
 }
 
-/// [`term`] in 32-bit words for a channel in [0, 1] (the usual light) and `d ≥ 0`, `None`
-/// otherwise: on cores without a long multiply (Cortex-M0) by d's halves instead of a 64-bit
-/// product. `c·d = hi·2¹⁶ + lo` with `hi = c·⌊d / 2¹⁶⌋ < 2³¹` and `lo = c·(d mod 2¹⁶) < 2³²`,
-/// and its floor over 2³⁰ is that of `hi + ⌊lo / 2¹⁶⌋` over 2¹⁴.
-#[inline(always)]
-fn term_by_halves(channel: i64, d: i32) -> Option<i64> {
-    if !(0..=1 << 16).contains(&channel) || d < 0 {
-        return None;
-    }
-    Some(halves_term(channel as u32, d as u32) as i64)
-}
-
-/// [`term_by_halves`]' words, for `c ≤ 2¹⁶` and `d < 2³¹`.
-#[inline(always)]
-fn halves_term(c: u32, d: u32) -> u32 {
-    let (hi, lo) = (c.wrapping_mul(d >> 16), c.wrapping_mul(d & 0xFFFF));
-    hi.wrapping_add(lo >> 16) >> 14
-}
-
-/// [`term`] of a channel `c ≤ 2¹⁶` and a cosine `d < 2³¹` (both non-negative), below 2¹⁷: by
-/// [`term_by_halves`]' words without a long multiply, else the widening product.
+/// [`term`] of a channel `c ≤ 2¹⁶` and a cosine `d < 2³¹` (both non-negative), below 2¹⁷.
 #[inline(always)]
 fn term_in_words(c: u32, d: u32) -> u32 {
-    if NARROW_CORE {
-        halves_term(c, d)
-    } else {
-        (mul_wide(c as i32, d as i32) >> 30) as u32
-    }
+    (mul_wide(c as i32, d as i32) >> 30) as u32
 }
 
 /// A channel's sum clamped to [0, 1] (Q16.16).
@@ -298,50 +269,6 @@ mod tests {
             assert!(!short || words == wide(u, v), "{u:?} {v:?}");
         }
         assert!(large > 100 && answered > 100_000, "{large} {answered}");
-    }
-
-    /// A light's term in words is the 64-bit product's wherever it answers (channels in
-    /// [0, 1], cosines from 0 to 2³¹ − 1, their ends and at random) and declines elsewhere.
-    #[test]
-    fn term_by_halves_equals_the_wide_product() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let channels = [0, 1, 2, 0x7FFF, 0x8000, 52429, 0xFFFF, 0x1_0000];
-        let cosines = [
-            0,
-            1,
-            0xFFFF,
-            0x1_0000,
-            0x1_0001,
-            1 << 30,
-            (1 << 30) + 1,
-            i32::MAX,
-        ];
-        let random = (0..200_000).map(|_| {
-            let x = rng.next_u64();
-            (
-                (x as i64 & 0x1_FFFF).min(1 << 16),
-                (x >> 32) as i32 & i32::MAX,
-            )
-        });
-        let ends = channels
-            .iter()
-            .flat_map(|&c| cosines.iter().map(move |&d| (c, d)));
-        for (c, d) in ends.chain(random) {
-            assert_eq!(
-                term_by_halves(c, d),
-                Some(mul_wide(c as i32, d) >> 30),
-                "{c} {d}"
-            );
-        }
-        for (c, d) in [
-            (-1, 5),
-            (0x1_0001, 5),
-            (5, -1),
-            (i64::MIN, 0),
-            (0, i32::MIN),
-        ] {
-            assert_eq!(term_by_halves(c, d), None, "{c} {d}");
-        }
     }
 
     /// `shrink` leaves vectors below 2³⁰ alone and brings larger ones below it, at the
