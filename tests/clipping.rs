@@ -74,13 +74,11 @@ fn t14_coordinate_limits() {
 }
 
 /// T14: triangles millions of pixels tall over a clip thousands of rows tall, exact on every
-/// row. On 64-bit hosts their edges' one-addition walk is exact for only a few rows at a time
-/// (8 for edges 2²⁵ sub-pixels tall), and they are set up again from the vertices that often:
-/// spans across each re-seeding, and across the middle vertex's row, equal the model's. The
-/// first two are built to make that walk drift as early as it can (a step's fraction above
-/// its exact value by nearly a unit each row, 2³² − 1 being a multiple of the edge's height,
-/// and a crossing a sub-pixel from the bottom vertex): walked 300 rows without re-seeding,
-/// their last rows would be off by a pixel.
+/// row, across the middle vertex's row too. They are built so that a walk by a rounded
+/// fraction of the step would drift as early as it can (a step's fraction above its exact
+/// value by nearly a unit each row, 2³² − 1 being a multiple of the edge's height, and a
+/// crossing a sub-pixel from the bottom vertex): such a walk's last rows over 300 would be
+/// off by a pixel; the span iterator's quotient-and-remainder walk is exact on all of them.
 #[test]
 fn t14_tall_triangles_over_tall_clips_are_exact_on_every_row() {
     let (dy, bottom) = (257 * 65537, 16 * 526_343 + 9);

@@ -7,7 +7,7 @@
 #   PRESETS="full wire" TARGETS=thumbv6m-none-eabi bench/mcu/run.sh
 #   BOARD=microbit bench/mcu/run.sh   # `wire` on the micro:bit model: a real Cortex-M0, 16 KiB RAM
 #   PRESETS=knobs bench/mcu/run.sh    # the torus in every configuration of docs/accuracy.md
-#   NORMALS=per-frame bench/mcu/run.sh  # `full` without its kept face normals
+#   NORMALS=per-frame bench/mcu/run.sh  # `full` and `bands` without their kept face normals
 #   CHECK=1 bench/mcu/run.sh     # fail if a hash differs from bench/mcu/hashes.txt (the host's)
 #                                # or a library's flash exceeds its budget in docs/footprint.md
 #
@@ -40,7 +40,8 @@ else
     TARGETS=${TARGETS:-"thumbv6m-none-eabi thumbv7em-none-eabihf"}
     PRESETS=${PRESETS:-"wire flat full gouraud bands obj display"}
     features=()
-    # NORMALS=per-frame: `full` finds each face's normal every frame instead of keeping them.
+    # NORMALS=per-frame: `full` and `bands` find each face's normal every frame instead of
+    # keeping them.
     [[ ${NORMALS:-kept} == per-frame ]] && features+=(--features per-frame-normals)
 fi
 # `knobs` (every configuration of docs/accuracy.md) needs micromath; ask for it alone, as the

@@ -247,9 +247,9 @@ impl DivideBy {
     }
 
     /// [`new`](Self::new) of a `d` the caller knows to be positive (a vertex's `w` inside the
-    /// near plane, within 31 bits), without `new`'s tests of it. Where division is a library routine it prepares no [`Divisor`]
-    /// (its divisions then take [`div_round`]): the vertex stage of such cores divides by
-    /// `ShortQuotients` instead.
+    /// near plane, within 31 bits), without `new`'s tests of it, and with neither a
+    /// [`Divisor`] nor a word copy: its divisions take [`div_round`] on every core (the vertex
+    /// stage of cores without a divide instruction divides by `ShortQuotients` instead).
     #[inline(always)]
     pub(crate) fn new_positive32(d: i32) -> DivideBy {
         DivideBy {

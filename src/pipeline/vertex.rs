@@ -332,8 +332,7 @@ pub(crate) fn outcode_and_project(
         )
     } else {
         let by_w = DivideBy::new_positive32(w as i32);
-        let (qx, qy) = (by_w.round_i32(xh), by_w.round_i32(yh));
-        (qx, qy, by_w.round_fraction(z))
+        (by_w.round(xh), by_w.round(yh), by_w.round_fraction(z))
     };
     (code, screen_point(qx, qy, m), sz as i32)
 }

@@ -406,9 +406,9 @@ mod tests {
         }
     }
 
-    /// The 32-bit stepper set-up (Cortex-M0's, so not on the host otherwise) starts where the
-    /// 64-bit one does, and both step alike: numerators and steps within ±2²⁹ (an edge started
-    /// within its top pixel), every denominator size.
+    /// The 32-bit stepper set-up (of an edge started within its top pixel) starts where the
+    /// 64-bit one does, and both step alike: numerators and steps within ±2²⁹, every
+    /// denominator size.
     #[test]
     fn stepper_set_up_in_32_bits_equals_64() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
