@@ -4,7 +4,8 @@
 //! ```text
 //! cargo run --release --example render -- [OPTIONS]
 //!   --obj PATH | --shape NAME        mesh; NAME is cube, tetrahedron, octahedron, sphere or torus
-//!   --out PATH                       PNG to write (default frame.png)
+//!   --out PATH                       PNG to write (default target/render/frame.png in the
+//!                                    checkout)
 //!   --size WxH                       default 320x240
 //!   --mode wire|flat|gouraud         default flat
 //!   --eye X,Y,Z --target X,Y,Z --up X,Y,Z
@@ -31,12 +32,18 @@ use desktop::{framed, render, save_png, Mode, Model, Placed, View};
 use embedded_graphics::pixelcolor::Rgb888;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
-use fixed3d::projection::{Projection, Viewport};
+use fixed3d::projection::{Projection, ProjectionError, Viewport};
 use fixed3d::scene::LightColor;
 
 const USAGE: &str = "usage: render [--obj PATH | --shape cube|tetrahedron|octahedron|sphere|torus] [--out PATH] \
 [--size WxH] [--mode wire|flat|gouraud] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z] [--fov DEG] [--near N] [--far F] \
 [--color R,G,B] [--ambient A] [--light X,Y,Z[,I]]... [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS]";
+
+/// Where the PNG goes without `--out`: under the checkout's `target/`, never beside the sources.
+const DEFAULT_OUT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/target/render/frame.png");
+
+/// The largest coordinate Q16.16 holds, for messages about the fixed-point range.
+const RANGE: f64 = 32767.0;
 
 /// A failure and the exit status it earns.
 enum Failure {
@@ -118,7 +125,7 @@ fn rgb(s: &str, what: &str) -> Result<Rgb888, Failure> {
 fn parse_args(args: &[String]) -> Result<Options, Failure> {
     let mut o = Options {
         source: None,
-        out: "frame.png".into(),
+        out: DEFAULT_OUT.into(),
         size: (320, 240),
         mode: Mode::Flat,
         eye: None,
@@ -272,42 +279,92 @@ fn run(args: &[String]) -> Result<String, Failure> {
         color: o.color,
     }];
     let bounds = desktop::scene_bounds(&objects);
-    // Default camera: framed from the front, a little above; an explicit eye keeps the
-    // framing's depth range around the model.
-    let (framed_look, framed_projection) =
-        framed(&bounds, Vec3::from_int(0, 1, 3), fov, viewport.aspect()).map_err(Failure::Usage)?;
     let centre = Vec3::new(
         (bounds.min.x + bounds.max.x) / Scalar::from_num(2),
         (bounds.min.y + bounds.max.y) / Scalar::from_num(2),
         (bounds.min.z + bounds.max.z) / Scalar::from_num(2),
     );
+    let radius_f = (bounds.max - bounds.min).length().to_num::<f64>() / 2.0 + 0.01;
+    let mut framed_projection = None;
     let look = match o.eye {
-        Some(eye) => LookAt::new(eye, o.target.unwrap_or(centre), o.up),
-        None => LookAt {
-            up: o.up,
-            ..framed_look
-        },
+        // Default camera: framed from the front, a little above.
+        None => {
+            // Framing fits the model's sphere in the narrower half-angle: its distance.
+            let half = (o.fov as f64).to_radians() / 2.0;
+            let narrower = half.tan().min(half.tan() * w as f64 / h as f64).atan();
+            let distance = 1.05 * radius_f / narrower.sin();
+            // Past the range, or too far for the depth range that the model's size gives.
+            let framing = framed(&bounds, Vec3::from_int(0, 1, 3), fov, viewport.aspect());
+            let (look, projection) = match framing {
+                Ok(f) if distance + radius_f < RANGE => f,
+                _ => {
+                    return Err(Failure::Usage(format!(
+                        "--fov {}: too narrow for the fixed-point range: framing puts the camera \
+                         {distance:.0} units from a model of radius {radius_f:.2}, where Q16.16 \
+                         cannot hold or resolve its depth range; widen --fov (or give --eye, \
+                         --near and --far)",
+                        o.fov
+                    )))
+                }
+            };
+            framed_projection = Some(projection);
+            LookAt { up: o.up, ..look }
+        }
+        Some(eye) => {
+            let f = |v: Vec3| [v.x, v.y, v.z].map(|c| c.to_num::<f64>());
+            let (e, c) = (f(eye), f(centre));
+            let distance = (0..3).map(|k| (e[k] - c[k]).powi(2)).sum::<f64>().sqrt();
+            let far = distance + 1.1 * radius_f;
+            if o.far.is_none() && far >= RANGE {
+                return Err(Failure::Usage(format!(
+                    "--eye: the automatic far plane ({far:.0} units: the eye's distance to the \
+                     model plus its radius) lies beyond the fixed-point range ({RANGE:.0}); move \
+                     --eye closer, or give --far"
+                )));
+            }
+            LookAt::new(eye, o.target.unwrap_or(centre), o.up)
+        }
     };
     let view = look
         .view()
         .map_err(|e| Failure::Usage(format!("camera: {e}")))?;
-    let projection = if o.eye.is_none() && o.near.is_none() && o.far.is_none() {
-        framed_projection
-    } else {
-        let radius =
-            (bounds.max - bounds.min).length() / Scalar::from_num(2) + Scalar::from_num(0.01);
-        let distance = (look.eye - centre).length();
-        let near = o.near.unwrap_or_else(|| {
-            (distance - radius * Scalar::from_num(1.1))
-                .max(Projection::MIN_NEAR.max(distance / Scalar::from_num(1000)))
-        });
-        let far = o.far.unwrap_or_else(|| {
-            distance
-                .saturating_add(radius.saturating_mul(Scalar::from_num(1.1)))
-                .max(near.saturating_add(Scalar::ONE))
-        });
-        Projection::perspective(fov, viewport.aspect(), near, far)
-            .map_err(|e| Failure::Usage(format!("projection: {e}")))?
+    // An explicit eye, near or far keeps the framing's depth range around the model.
+    let projection = match framed_projection {
+        Some(p) if o.near.is_none() && o.far.is_none() => p,
+        _ => {
+            let radius = Scalar::from_num(radius_f);
+            let distance = (look.eye - centre).length();
+            let near = o.near.unwrap_or_else(|| {
+                (distance - radius * Scalar::from_num(1.1))
+                    .max(Projection::MIN_NEAR.max(distance / Scalar::from_num(1000)))
+            });
+            let far = o.far.unwrap_or_else(|| {
+                distance
+                    .saturating_add(radius.saturating_mul(Scalar::from_num(1.1)))
+                    .max(near.saturating_add(Scalar::ONE))
+            });
+            let (n, f) = (near.to_num::<f64>(), far.to_num::<f64>());
+            Projection::perspective(fov, viewport.aspect(), near, far).map_err(|e| {
+                let resolution = n * f / (f - n);
+                Failure::Usage(match e {
+                    ProjectionError::FarNotBeyondNear if o.near.is_none() && o.far.is_none() => {
+                        format!(
+                            "--eye: the eye is {:.0} units from a model of radius {radius_f:.2}, \
+                             too far for the fixed-point depth range (near·far/(far−near) is \
+                             {resolution:.0}, at most {RANGE:.0}); move --eye closer, or give \
+                             --near and --far",
+                            distance.to_num::<f64>()
+                        )
+                    }
+                    ProjectionError::FarNotBeyondNear if f > n => format!(
+                        "projection: --near {n} and --far {f} are too close for the fixed-point \
+                         depth range (near·far/(far−near) is {resolution:.0}, at most \
+                         {RANGE:.0}); move --far away from --near"
+                    ),
+                    e => format!("projection: {e}"),
+                })
+            })?
+        }
     };
     let frame_view = View {
         width: w,
@@ -323,6 +380,11 @@ fn run(args: &[String]) -> Result<String, Failure> {
         bands: o.bands,
     };
     let r = render(&objects, &frame_view).map_err(Failure::Input)?;
+    if o.out == DEFAULT_OUT {
+        if let Some(dir) = std::path::Path::new(DEFAULT_OUT).parent() {
+            std::fs::create_dir_all(dir).map_err(|e| Failure::Input(format!("{e}")))?;
+        }
+    }
     save_png(&o.out, w, h, &r.pixels).map_err(Failure::Input)?;
     let drawn = if o.mode == Mode::Wire {
         r.stats.primitives - r.stats.invalid - r.stats.outside - r.stats.culled - r.stats.degenerate

@@ -168,3 +168,183 @@ fn huge_models_are_rescaled() {
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// Runs the tool with its address space limited to `megabytes` (Linux `ulimit -v`): storage
+/// sized by the file rather than by the model it holds fails there.
+fn run_within(megabytes: u32, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v {}; exec \"$0\" \"$@\"",
+            megabytes * 1024
+        ))
+        .arg(tool())
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn a_file_without_triangles_is_an_error() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let points = dir.join("cli_points.obj");
+    std::fs::write(&points, "v 0 0 0\nv 1 0 0\nv 0 1 0\n").unwrap();
+    let path = points.to_str().unwrap();
+    let o = run(&["--obj", path, "--out", &out_png("points.png")]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains(&format!("no triangles in {path}")), "{err}");
+}
+
+/// 30 MB of blank lines hold no model: the tool reads them piece by piece in a few megabytes
+/// (it once sized storage by the line count and read the whole file first: 13 bytes of
+/// storage a byte of file).
+#[test]
+fn memory_is_bounded_by_the_model_not_the_file() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let blank = dir.join("cli_blank.obj");
+    std::fs::write(&blank, vec![b'\n'; 30 << 20]).unwrap();
+    let o = run_within(
+        200,
+        &[
+            "--obj",
+            blank.to_str().unwrap(),
+            "--out",
+            &out_png("blank.png"),
+        ],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("no triangles in"), "{err}");
+    // A real model among as many blank lines loads within the same limit.
+    let mut padded =
+        std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/models/suzanne.obj")).unwrap();
+    padded.extend(vec![b'\n'; 30 << 20]);
+    std::fs::write(&blank, padded).unwrap();
+    let o = run_within(
+        200,
+        &[
+            "--obj",
+            blank.to_str().unwrap(),
+            "--out",
+            &out_png("padded.png"),
+        ],
+    );
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    std::fs::remove_file(&blank).unwrap();
+}
+
+/// A sparse 1 GB file (all NUL bytes) fails on its first line, within a small address space.
+#[test]
+fn a_sparse_file_fails_on_its_first_line() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let sparse = dir.join("cli_sparse.obj");
+    std::fs::File::create(&sparse)
+        .unwrap()
+        .set_len(1 << 30)
+        .unwrap();
+    let o = run_within(
+        200,
+        &[
+            "--obj",
+            sparse.to_str().unwrap(),
+            "--out",
+            &out_png("sparse.png"),
+        ],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("line 1,"), "{err}");
+    std::fs::remove_file(&sparse).unwrap();
+}
+
+/// The rest of a file after its first bad line is never read: from a pipe whose writer stays
+/// open, the tool still exits at once.
+#[test]
+fn reading_stops_at_the_first_bad_line() {
+    use std::io::Write;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let fifo = dir.join("cli_fifo.obj");
+    let _ = std::fs::remove_file(&fifo);
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let mut child = Command::new(tool())
+        .args([
+            "--obj",
+            fifo.to_str().unwrap(),
+            "--out",
+            &out_png("fifo.png"),
+        ])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut writer = std::fs::OpenOptions::new().write(true).open(&fifo).unwrap();
+    writer.write_all(b"v 0 0 0\n").unwrap();
+    // A line of NUL bytes longer than any line the tool holds; the writer stays open.
+    let _ = writer.write_all(&vec![0u8; 1 << 15]);
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break Some(status);
+        }
+        if start.elapsed() > std::time::Duration::from_secs(30) {
+            child.kill().unwrap();
+            break None;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    drop(writer);
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(status.and_then(|s| s.code()), Some(1), "{err}");
+    assert!(err.contains("line 2,"), "{err}");
+    std::fs::remove_file(&fifo).unwrap();
+}
+
+/// Framing or depth ranges past the fixed-point range are reported by their cause.
+#[test]
+fn range_errors_name_their_cause() {
+    for (args, cause) in [
+        (
+            &["--fov", "0.000001"][..],
+            "--fov 0.000001: too narrow for the fixed-point range",
+        ),
+        (&["--eye", "30000,30000,30000"], "automatic far plane"),
+        (
+            &["--eye", "20000,0,0"],
+            "--eye: the eye is 20000 units from",
+        ),
+    ] {
+        let mut all = vec!["--shape", "torus", "--out", "/dev/null"];
+        all.extend(args);
+        let o = run(&all);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(cause), "{args:?}: {err}");
+        assert!(!err.contains("far plane not far enough"), "{args:?}: {err}");
+    }
+}
+
+/// Without `--out` the picture goes under `target/`, not into the working directory.
+#[test]
+fn the_default_output_lies_under_target() {
+    let cwd = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_cwd");
+    std::fs::create_dir_all(&cwd).unwrap();
+    let o = Command::new(tool())
+        .args(["--shape", "cube", "--size", "32x24"])
+        .current_dir(&cwd)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(std::fs::read_dir(&cwd).unwrap().count(), 0);
+    let png = concat!(env!("CARGO_MANIFEST_DIR"), "/target/render/frame.png");
+    assert!(std::fs::metadata(png).unwrap().len() > 0);
+}

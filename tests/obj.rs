@@ -3,8 +3,8 @@
 
 use fixed3d::math::{Scalar, Vec3};
 use fixed3d::obj::{
-    bounds, parse, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, Placement, StaticObj,
-    Storage, NO_INDEX,
+    bounds, parse, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, ObjStream, Placement,
+    StaticObj, Storage, NO_INDEX,
 };
 use proptest::prelude::*;
 
@@ -748,6 +748,25 @@ fn o24_stream_line_too_long() {
     let e = parse_stream::<32>(&text.as_bytes()[..100], &[1000], 8).unwrap_err();
     assert_eq!((e.line, e.kind), (2, ObjErrorKind::LineTooLong));
     assert!(parse_stream::<256>(text.as_bytes(), &[16], 8).is_ok());
+}
+
+/// O24: the error comes with the byte that overflows the buffer, not at the line's end: a
+/// file without line breaks (a sparse or corrupt one, say) is not read to its end.
+#[test]
+fn o24_stream_fails_on_the_overflowing_byte() {
+    let (mut p, mut t) = ([Vec3::ZERO; 4], [[0u16; 3]; 4]);
+    let mut out = ObjBuffers::new(&mut p, &mut t);
+    let mut stream = ObjStream::<32>::new(Placement::AsIs);
+    assert!(stream.push(b"v 1 2 3\n", &mut out).is_ok());
+    assert!(stream.push(&[0; 32], &mut out).is_ok());
+    let e = stream.push(&[0], &mut out).unwrap_err();
+    assert_eq!(
+        (e.line, e.column, e.kind),
+        (2, 33, ObjErrorKind::LineTooLong)
+    );
+    assert_eq!(stream.counts().positions, 1);
+    assert_eq!(stream.push(b"\n", &mut out), Err(e));
+    assert_eq!(stream.finish(&mut out), Err(e));
 }
 
 proptest! {

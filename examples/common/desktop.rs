@@ -4,6 +4,7 @@
 #![allow(dead_code)]
 
 use std::fmt;
+use std::io::Read;
 use std::time::{Duration, Instant};
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
@@ -11,7 +12,10 @@ use fixed3d::buffer::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use fixed3d::camera::{Framing, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{self, vertex_normals, Mesh, Object, Triangle};
-use fixed3d::obj::{self, Aabb, ObjBuffers, ObjError, ObjErrorKind, Placement, NO_INDEX};
+use fixed3d::obj::{
+    self, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, ObjStream, Placement, WideBounds,
+    NO_INDEX,
+};
 use fixed3d::pipeline::{Cull, Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
@@ -37,6 +41,8 @@ pub struct Model {
 pub enum LoadError {
     Io(String),
     Obj(ObjError),
+    /// A file that parsed but holds no triangle (its name).
+    NoTriangles(String),
 }
 
 impl fmt::Display for LoadError {
@@ -44,61 +50,196 @@ impl fmt::Display for LoadError {
         match self {
             LoadError::Io(e) => write!(f, "{e}"),
             LoadError::Obj(e) => write!(f, "invalid OBJ: {e}"),
+            LoadError::NoTriangles(name) => write!(f, "no triangles in {name}"),
         }
     }
 }
 
+/// The longest line an OBJ file may have.
+const LINE: usize = 1 << 14;
+/// Bytes read at a time.
+const CHUNK: usize = 1 << 16;
+
+/// What one streamed parse of a file kept.
+struct Parsed {
+    positions: Vec<Vec3>,
+    normals: Vec<Vec3>,
+    triangles: Vec<Triangle>,
+    triangle_normals: Vec<Triangle>,
+    counts: ObjCounts,
+}
+
+/// `v` grown (by doubling) to hold at least `n` elements.
+fn reserve<T: Copy>(v: &mut Vec<T>, n: usize, fill: T) {
+    if v.len() < n {
+        let len = n.max(v.len().saturating_mul(2));
+        v.resize(len, fill);
+    }
+}
+
+/// Reads all of `r`, retrying interrupted reads, into `buf` up to its length; 0 at the end.
+fn read_some(r: &mut impl Read, buf: &mut [u8]) -> Result<usize, LoadError> {
+    loop {
+        match r.read(buf) {
+            Ok(n) => return Ok(n),
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(LoadError::Io(e.to_string())),
+        }
+    }
+}
+
+/// Parses `r` piece by piece: storage grows with what the file holds, never with its size
+/// (a piece of `n` bytes ends at most `n` lines, and its lines hold at most `(n + LINE) / 2`
+/// elements of any kind), and the first error ends the read.
+fn parse_stream(mut r: impl Read, placement: Placement) -> Result<Parsed, LoadError> {
+    let mut stream = Box::new(ObjStream::<LINE>::new(placement));
+    let mut p = Parsed {
+        positions: Vec::new(),
+        normals: Vec::new(),
+        triangles: Vec::new(),
+        triangle_normals: Vec::new(),
+        counts: ObjCounts::EMPTY,
+    };
+    let mut chunk = vec![0u8; CHUNK];
+    loop {
+        let n = read_some(&mut r, &mut chunk)?;
+        let c = stream.counts();
+        let more = (n + LINE) / 2 + 1;
+        // Meshes index positions in 16 bits: the parser stops at 65,536.
+        reserve(
+            &mut p.positions,
+            (c.positions + more).min(65_537),
+            Vec3::ZERO,
+        );
+        reserve(&mut p.normals, c.normals + more, Vec3::ZERO);
+        reserve(&mut p.triangles, c.triangles + more, [0; 3]);
+        reserve(&mut p.triangle_normals, c.triangles + more, [0; 3]);
+        let mut out = ObjBuffers {
+            positions: &mut p.positions,
+            texcoords: &mut [],
+            normals: &mut p.normals,
+            triangles: &mut p.triangles,
+            triangle_texcoords: &mut [],
+            triangle_normals: &mut p.triangle_normals,
+        };
+        if n == 0 {
+            p.counts = stream.finish(&mut out).map_err(LoadError::Obj)?;
+            break;
+        }
+        let piece = chunk.get(..n).unwrap_or_default();
+        stream.push(piece, &mut out).map_err(LoadError::Obj)?;
+    }
+    p.positions.truncate(p.counts.positions);
+    p.normals.truncate(p.counts.normals);
+    p.triangles.truncate(p.counts.triangles);
+    p.triangle_normals.truncate(p.counts.triangles);
+    Ok(p)
+}
+
+/// The bounding box of a file's positions as written, read piece by piece: [`obj::bounds`]
+/// of each `v` line (lines end as the parser ends them; one longer than `LINE` is left to the
+/// parser to report).
+fn stream_bounds(mut r: impl Read) -> Result<WideBounds, LoadError> {
+    let mut chunk = vec![0u8; CHUNK];
+    let (mut line, mut line_no, mut after_cr) = (Vec::new(), 0u32, false);
+    let mut all: Option<WideBounds> = None;
+    let mut end_line = |line: &mut Vec<u8>, line_no: &mut u32| -> Result<(), LoadError> {
+        *line_no = line_no.saturating_add(1);
+        let text = line.trim_ascii_start();
+        let position =
+            text.first() == Some(&b'v') && text.get(1).is_some_and(u8::is_ascii_whitespace);
+        if position && line.len() <= LINE {
+            let b = obj::bounds(line).map_err(|e| {
+                LoadError::Obj(ObjError {
+                    line: *line_no,
+                    ..e
+                })
+            })?;
+            all = Some(match all {
+                None => b,
+                Some(a) => WideBounds {
+                    min: std::array::from_fn(|k| a.min[k].min(b.min[k])),
+                    max: std::array::from_fn(|k| a.max[k].max(b.max[k])),
+                },
+            });
+        }
+        line.clear();
+        Ok(())
+    };
+    loop {
+        let n = read_some(&mut r, &mut chunk)?;
+        if n == 0 {
+            break;
+        }
+        for &b in chunk.get(..n).unwrap_or_default() {
+            if std::mem::take(&mut after_cr) && b == b'\n' {
+                continue;
+            }
+            if b == b'\n' || b == b'\r' {
+                after_cr = b == b'\r';
+                end_line(&mut line, &mut line_no)?;
+            } else if line.len() <= LINE {
+                line.push(b);
+            }
+        }
+    }
+    if !line.is_empty() {
+        end_line(&mut line, &mut line_no)?;
+    }
+    Ok(all.unwrap_or(WideBounds {
+        min: [0; 3],
+        max: [0; 3],
+    }))
+}
+
 impl Model {
-    /// Loads an OBJ file: as written when it fits Q16.16, otherwise recentred and scaled to a
-    /// half-size of 100 units. Normals come from the file's `vn` where every corner has one,
-    /// otherwise they are computed (area-weighted).
+    /// Loads an OBJ file, read piece by piece: as written when it fits Q16.16, otherwise
+    /// recentred and scaled to a half-size of 100 units. Normals come from the file's `vn`
+    /// where every corner has one, otherwise they are computed (area-weighted). A file without
+    /// triangles is an error.
     pub fn load_obj(path: &str) -> Result<Model, LoadError> {
-        let bytes = std::fs::read(path).map_err(|e| LoadError::Io(format!("{path}: {e}")))?;
         let name = std::path::Path::new(path)
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        Self::from_obj_bytes(&name, &bytes)
+        let open = || std::fs::File::open(path).map_err(|e| LoadError::Io(format!("{path}: {e}")));
+        let model = Self::read_obj(&name, open).map_err(|e| match e {
+            LoadError::Io(e) if !e.starts_with(path) => LoadError::Io(format!("{path}: {e}")),
+            other => other,
+        })?;
+        if model.triangles.is_empty() {
+            return Err(LoadError::NoTriangles(path.into()));
+        }
+        Ok(model)
     }
 
+    /// [`load_obj`](Self::load_obj) of a file held in memory (a file without triangles gives
+    /// an empty model).
     pub fn from_obj_bytes(name: &str, bytes: &[u8]) -> Result<Model, LoadError> {
-        // Upper bounds on what the file can hold: a position needs a line, a triangle at least
-        // two bytes of face.
-        let lines = bytes.iter().filter(|&&b| b == b'\n' || b == b'\r').count() + 1;
-        let (cap_v, cap_t) = (lines.min(65_536), bytes.len() / 2 + 1);
-        let attempt = |placement: Placement| {
-            let mut positions = vec![Vec3::ZERO; cap_v];
-            let mut normals = vec![Vec3::ZERO; lines];
-            let mut triangles = vec![[0u16; 3]; cap_t];
-            let mut tri_normals = vec![[0u16; 3]; cap_t];
-            let counts = obj::parse(
-                bytes,
-                &mut ObjBuffers {
-                    positions: &mut positions,
-                    texcoords: &mut [],
-                    normals: &mut normals,
-                    triangles: &mut triangles,
-                    triangle_texcoords: &mut [],
-                    triangle_normals: &mut tri_normals,
-                },
-                placement,
-            )?;
-            positions.truncate(counts.positions);
-            normals.truncate(counts.normals);
-            triangles.truncate(counts.triangles);
-            tri_normals.truncate(counts.triangles);
-            Ok::<_, ObjError>((positions, normals, triangles, tri_normals, counts))
-        };
-        let (result, rescaled) = match attempt(Placement::AsIs) {
-            Err(e) if e.kind == ObjErrorKind::NumberOutOfRange => {
-                let b = obj::bounds(bytes).map_err(LoadError::Obj)?;
+        Self::read_obj(name, || Ok(bytes))
+    }
+
+    /// A model from the OBJ file `open` reads (opened a second time if the file must be
+    /// rescaled).
+    fn read_obj<R: Read>(
+        name: &str,
+        open: impl Fn() -> Result<R, LoadError>,
+    ) -> Result<Model, LoadError> {
+        let (parsed, rescaled) = match parse_stream(open()?, Placement::AsIs) {
+            Err(LoadError::Obj(e)) if e.kind == ObjErrorKind::NumberOutOfRange => {
+                let b = stream_bounds(open()?)?;
                 let placement = Placement::fit(&b, Scalar::from_num(100));
-                (attempt(placement), Some(placement))
+                (parse_stream(open()?, placement)?, Some(placement))
             }
-            other => (other, None),
+            other => (other?, None),
         };
-        let (positions, file_normals, triangles, tri_normals, counts) =
-            result.map_err(LoadError::Obj)?;
+        let Parsed {
+            positions,
+            normals: file_normals,
+            triangles,
+            triangle_normals: tri_normals,
+            counts,
+        } = parsed;
         let mut normals = vec![Vec3::ZERO; positions.len()];
         let complete =
             !file_normals.is_empty() && tri_normals.iter().flatten().all(|&n| n != NO_INDEX);

@@ -27,8 +27,6 @@ pub struct ObjStream<const N: usize> {
     placement: Placement,
     /// The previous chunk ended with `\r`: a `\n` first in the next one belongs to it.
     after_cr: bool,
-    /// The current line overflowed the buffer.
-    too_long: bool,
     failed: Option<ObjError>,
 }
 
@@ -41,9 +39,24 @@ impl<const N: usize> ObjStream<N> {
             counts: ObjCounts::EMPTY,
             placement,
             after_cr: false,
-            too_long: false,
             failed: None,
         }
+    }
+
+    /// What the lines parsed so far read: a caller that grows its storage between pieces can
+    /// size it from these (a piece of `n` bytes ends at most `n` lines more).
+    ///
+    /// ```
+    /// use fixed3d::math::Vec3;
+    /// use fixed3d::obj::{ObjBuffers, ObjStream, Placement};
+    /// let (mut p, mut t) = ([Vec3::ZERO; 4], [[0u16; 3]; 1]);
+    /// let mut stream = ObjStream::<64>::new(Placement::AsIs);
+    /// stream.push(b"v 0 0 0\nv 1 0 0\nv 0", &mut ObjBuffers::new(&mut p, &mut t)).unwrap();
+    /// assert_eq!((stream.counts().positions, stream.counts().lines), (2, 2));
+    /// ```
+    #[must_use]
+    pub fn counts(&self) -> ObjCounts {
+        self.counts
     }
 
     /// Feeds the next piece of the file. After an error every call returns that error.
@@ -60,9 +73,11 @@ impl<const N: usize> ObjStream<N> {
             }
             if b == b'\n' || b == b'\r' {
                 self.after_cr = b == b'\r';
-                self.end_line(out)?;
+                self.end_line(out, false)?;
             } else if self.line.push(b).is_err() {
-                self.too_long = true;
+                // The line cannot fit: that is its error whatever follows, reported now rather
+                // than at its end, so that a file without line breaks is not read to its end.
+                return self.end_line(out, true);
             }
         }
         Ok(())
@@ -75,14 +90,15 @@ impl<const N: usize> ObjStream<N> {
         }
         // A last line without a line break; a file that is only a byte-order mark has none.
         let bom_only = self.counts.lines == 0 && self.line[..] == [0xEF, 0xBB, 0xBF];
-        if self.too_long || !(self.line.is_empty() || bom_only) {
-            self.end_line(out)?;
+        if !(self.line.is_empty() || bom_only) {
+            self.end_line(out, false)?;
         }
         Ok(self.counts)
     }
 
-    fn end_line(&mut self, out: &mut ObjBuffers<'_>) -> Result<(), ObjError> {
-        let result = if self.too_long {
+    /// Parses the line held, or fails it as longer than the buffer (`too_long`).
+    fn end_line(&mut self, out: &mut ObjBuffers<'_>, too_long: bool) -> Result<(), ObjError> {
+        let result = if too_long {
             Err(ObjError {
                 line: self.counts.lines.saturating_add(1),
                 column: u32::try_from(N).unwrap_or(u32::MAX).saturating_add(1),
@@ -99,7 +115,6 @@ impl<const N: usize> ObjStream<N> {
             parse_line(bytes, &mut self.counts, out, &self.placement)
         };
         self.line.clear();
-        self.too_long = false;
         if let Err(e) = result {
             self.failed = Some(e);
         }
