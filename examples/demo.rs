@@ -6,6 +6,8 @@
 //! cargo run --release --example demo -- [--out DIR]
 //! ```
 //!
+//! Without `--out` the PNGs go to `target/demo/` in the checkout.
+//!
 //! Each image goes through a simulated display (embedded-graphics-simulator, headless), the
 //! way a firmware presents its framebuffer; the render time of each frame is printed.
 
@@ -28,7 +30,7 @@ const TUBE: u16 = 24;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
-    let mut out = std::path::PathBuf::from(".");
+    let mut out = std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/target/demo"));
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => out = args.next().ok_or("--out needs a directory")?.into(),

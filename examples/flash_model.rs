@@ -5,6 +5,8 @@
 //! ```text
 //! cargo run --release --example flash_model -- [OUT.png]
 //! ```
+//!
+//! Without an argument the PNG goes to `target/flash_model.png` in the checkout.
 
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use embedded_graphics::prelude::*;
@@ -29,7 +31,7 @@ static SUZANNE: StaticObj<507, 968> =
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = std::env::args()
         .nth(1)
-        .unwrap_or_else(|| "flash_model.png".into());
+        .unwrap_or_else(|| concat!(env!("CARGO_MANIFEST_DIR"), "/target/flash_model.png").into());
     let counts = SUZANNE.counts();
     let mut normals = [Vec3::ZERO; 507];
     vertex_normals(

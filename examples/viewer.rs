@@ -11,7 +11,7 @@
 //! |---|---|
 //! | W / S | forward / back |
 //! | A / D | strafe left / right |
-//! | Q / E, Shift / Space | down / up |
+//! | Q / E, Ctrl / Space | down / up |
 //! | arrow keys | turn (yaw and pitch) |
 //! | + / - | field of view |
 //! | M (or 1, 2, 3) | wireframe / flat / Gouraud |
@@ -36,7 +36,7 @@ use std::io::BufRead;
 use std::sync::mpsc::{channel, Receiver};
 use std::time::{Duration, Instant};
 
-use desktop::{render, save_png, Mode, Model, Placed, View};
+use desktop::{render, save_png_to, Mode, Model, Placed, View};
 use embedded_graphics::mono_font::{ascii::FONT_6X10, MonoTextStyle};
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use embedded_graphics::prelude::*;
@@ -57,12 +57,34 @@ const HEIGHT: u32 = 480;
 const TITLE: &str = "fixed3d viewer";
 
 const HELP: &[&str] = &[
-    "W/S forward/back   A/D strafe   Q/E Shift/Space down/up",
+    "W/S forward/back   A/D strafe   Q/E Ctrl/Space down/up",
     "arrows turn        +/- field of view",
     "M or 1/2/3 wire/flat/gouraud   Z depth   C culling",
     "O ortho/perspective   Tab spin   P save PNG",
     "R add object (terminal)   Backspace remove last",
     "H help   Esc quit",
+];
+
+/// The keys that move or turn the camera or change its field of view.
+const FLY_KEYS: [Keycode; 18] = [
+    Keycode::W,
+    Keycode::S,
+    Keycode::A,
+    Keycode::D,
+    Keycode::Q,
+    Keycode::E,
+    Keycode::Space,
+    Keycode::LCtrl,
+    Keycode::RCtrl,
+    Keycode::Left,
+    Keycode::Right,
+    Keycode::Up,
+    Keycode::Down,
+    Keycode::Plus,
+    Keycode::Equals,
+    Keycode::KpPlus,
+    Keycode::Minus,
+    Keycode::KpMinus,
 ];
 
 /// One object of the scene: a model scaled to a radius of one unit around its position.
@@ -108,7 +130,6 @@ struct App {
     held: HashSet<Keycode>,
     prompt: Option<Prompt>,
     message: String,
-    shots: u32,
 }
 
 fn parse_numbers(s: &str) -> Option<[f32; 3]> {
@@ -203,8 +224,9 @@ impl App {
         let (fwd, side, up) = (
             held(Keycode::W) as i32 - held(Keycode::S) as i32,
             held(Keycode::D) as i32 - held(Keycode::A) as i32,
+            // Not Shift: on many layouts + is Shift and =, which would then move the camera.
             (held(Keycode::E) || held(Keycode::Space)) as i32
-                - (held(Keycode::Q) || held(Keycode::LShift) || held(Keycode::RShift)) as i32,
+                - (held(Keycode::Q) || held(Keycode::LCtrl) || held(Keycode::RCtrl)) as i32,
         );
         let (yaw, pitch) = (
             held(Keycode::Left) as i32 - held(Keycode::Right) as i32,
@@ -247,10 +269,8 @@ impl App {
                 println!("{}", self.message);
             }
             Keycode::P => {
-                self.shots += 1;
-                let path = format!("viewer-{:03}.png", self.shots);
-                self.message = match save_png(&path, WIDTH, HEIGHT, frame) {
-                    Ok(()) => format!("saved {path}"),
+                self.message = match save_screenshot(frame) {
+                    Ok(path) => format!("saved {path}"),
                     Err(e) => format!("could not save: {e}"),
                 };
                 println!("{}", self.message);
@@ -324,6 +344,30 @@ impl App {
     }
 }
 
+/// Where P saves unless `VIEWER_SCREENSHOTS` names a folder: under the checkout's `target/`,
+/// never beside the sources.
+const SCREENSHOTS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/target/screenshots");
+
+/// Saves `frame` as the first `viewer-NNN.png` of the screenshot folder that does not exist
+/// yet (created anew, so that no file is ever overwritten, from this run or an earlier one).
+fn save_screenshot(frame: &[Rgb888]) -> Result<String, String> {
+    let dir = std::env::var("VIEWER_SCREENSHOTS").unwrap_or_else(|_| SCREENSHOTS.into());
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{dir}: {e}"))?;
+    for n in 1..=9999 {
+        let path = format!("{dir}/viewer-{n:03}.png");
+        match std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&path)
+        {
+            Ok(file) => return save_png_to(file, &path, WIDTH, HEIGHT, frame).map(|()| path),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(format!("{path}: {e}")),
+        }
+    }
+    Err(format!("{dir} holds 9999 screenshots already"))
+}
+
 fn print_prompt(p: &Prompt) {
     use std::io::Write;
     print!("{}", p.question());
@@ -342,6 +386,47 @@ fn terminal_lines() -> Receiver<String> {
         }
     });
     rx
+}
+
+/// A window showing `display`, or why none opens. SDL falls back to drawing nowhere when no
+/// display server answers; on Linux it is held to X11 and Wayland (unless `SDL_VIDEODRIVER`
+/// says otherwise), so that it fails instead, and the simulator's panic becomes the reason.
+fn open_window(display: &SimulatorDisplay<Rgb888>) -> Result<Window, String> {
+    if cfg!(target_os = "linux") && std::env::var_os("SDL_VIDEODRIVER").is_none() {
+        let wayland = std::env::var_os("WAYLAND_DISPLAY").is_some();
+        std::env::set_var(
+            "SDL_VIDEODRIVER",
+            if wayland { "wayland,x11" } else { "x11" },
+        );
+    }
+    let mut window = Window::new(TITLE, &OutputSettingsBuilder::new().build());
+    window.set_max_fps(60);
+    let quiet = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    let opened = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        window.update(display);
+    }));
+    std::panic::set_hook(quiet);
+    match opened {
+        Ok(()) => Ok(window),
+        Err(panic) => {
+            let why = panic
+                .downcast_ref::<String>()
+                .map(String::as_str)
+                .or_else(|| panic.downcast_ref::<&str>().copied())
+                .unwrap_or("SDL could not open one");
+            // The simulator unwraps SDL's error: keep SDL's own words.
+            let why = why
+                .rsplit("value: ")
+                .next()
+                .unwrap_or(why)
+                .trim_matches('"');
+            Err(format!(
+                "{why} (the viewer needs an X11 or Wayland display; the render tool draws \
+                 without one)"
+            ))
+        }
+    }
 }
 
 fn initial_scene(args: &[String]) -> Result<(Vec<Model>, Vec<Item>), String> {
@@ -448,12 +533,13 @@ fn main() {
         held: HashSet::new(),
         prompt: None,
         message: "H for help".into(),
-        shots: 0,
     };
     let lines = terminal_lines();
-    let mut window = Window::new(TITLE, &OutputSettingsBuilder::new().build());
-    window.set_max_fps(60);
     let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(WIDTH, HEIGHT));
+    let mut window = open_window(&display).unwrap_or_else(|e| {
+        eprintln!("error: no window: {e}");
+        std::process::exit(1);
+    });
     let text = MonoTextStyle::new(&FONT_6X10, Rgb888::WHITE);
     let mut last = Instant::now();
     let (mut second, mut frames, mut render_us) = (Instant::now(), 0u32, 0u128);
@@ -524,7 +610,8 @@ fn main() {
                 .draw(&mut display);
             }
         }
-        if second.elapsed() >= Duration::from_secs(1) {
+        // Paused while a question waits on the terminal, so that answers are not interleaved.
+        if second.elapsed() >= Duration::from_secs(1) && app.prompt.is_none() {
             println!(
                 "frame: render {} us on average, {:.0} fps",
                 render_us / frames.max(1) as u128,
@@ -546,6 +633,18 @@ fn main() {
                 }
                 SimulatorEvent::KeyUp { keycode, .. } => {
                     app.held.remove(&keycode);
+                    // What the keys that fly the camera left it at (for --eye and --fov of the
+                    // render tool), unless a question waits on the terminal.
+                    if FLY_KEYS.contains(&keycode) && app.prompt.is_none() {
+                        let p = app.camera.position;
+                        println!(
+                            "view: fov {:.1}, eye {:.3},{:.3},{:.3}",
+                            app.fov,
+                            p.x.to_num::<f32>(),
+                            p.y.to_num::<f32>(),
+                            p.z.to_num::<f32>()
+                        );
+                    }
                 }
                 _ => {}
             }

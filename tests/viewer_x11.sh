@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Drives the viewer in a real window under Xvfb, as a person would: key presses with xdotool,
 # screenshots with ImageMagick, and checks that the picture changes the right way.
-#   W makes the model larger; Left turns the view (the scene moves right); M changes the image;
-#   Escape quits cleanly.
+#   W makes the model larger; Left turns the view (the scene moves right); + widens the field of
+#   view and moves nothing (whatever keys the layout needs for it); M changes the image; P saves
+#   screenshots under new names; the frame-time lines pause while R asks on the terminal, and a
+#   file without triangles is asked again; Escape quits cleanly; without a display the viewer
+#   exits 1 with one line.
 # Needs: xvfb xdotool imagemagick x11-utils libsdl2 (installed by .ci/run), and the viewer built
 # with `cargo build --release --features window --example viewer`.
 set -euo pipefail
@@ -11,6 +14,15 @@ bin=target/release/examples/viewer
 out=target/viewer-test
 mkdir -p "$out"
 fail() { echo "viewer test FAILED: $*" >&2; exit 1; }
+
+# No display server: one line and exit status 1, not a run with no window.
+set +e
+env -u DISPLAY -u WAYLAND_DISPLAY timeout 20 "$bin" </dev/null >"$out/nowindow.log" 2>&1
+status=$?
+set -e
+[ "$status" -eq 1 ] || fail "without a display the viewer exited $status, not 1"
+[ "$(wc -l <"$out/nowindow.log")" -eq 1 ] || fail "without a display: $(cat "$out/nowindow.log")"
+grep -q "^error: no window" "$out/nowindow.log" || fail "without a display: $(cat "$out/nowindow.log")"
 
 display=:97
 Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
@@ -21,7 +33,9 @@ for _ in $(seq 50); do xdpyinfo >/dev/null 2>&1 && break; sleep 0.1; done
 
 # The terminal: a FIFO the test writes answers into (held open so the viewer never sees EOF).
 rm -f "$out/stdin"; mkfifo "$out/stdin"; exec 3<>"$out/stdin"
-"$bin" >"$out/viewer.log" 2>&1 <"$out/stdin" &
+shots=$out/shots
+rm -rf "$shots"; mkdir -p "$shots"; echo keep >"$shots/viewer-001.png"
+VIEWER_SCREENSHOTS=$shots "$bin" >"$out/viewer.log" 2>&1 <"$out/stdin" &
 viewer=$!
 wid=$(timeout 30 xdotool search --sync --name "fixed3d viewer" | head -1) || fail "no window"
 sleep 1.5
@@ -53,19 +67,47 @@ r1=$(right_half left)
 echo "Left: right half covered $r0 -> $r1, $(changed forward left) pixels changed"
 bigger "$r0" "$r1" || fail "Left did not turn the view to the left ($r0 -> $r1)"
 
+# + is Shift and = on this layout: the field of view widens, the camera stays where it was.
+view() { grep "^view:" "$out/viewer.log" | tail -1; }
+fov() { view | sed -E 's/^view: fov ([0-9.]+),.*/\1/'; }
+eye() { view | sed -E 's/.*eye //'; }
+f0=$(fov); e0=$(eye)
+hold plus 0.8
+f1=$(fov); e1=$(eye)
+echo "+: fov $f0 -> $f1, eye $e0 -> $e1"
+awk -v a="$f0" -v b="$f1" 'BEGIN { exit !(b > a + 10) }' || fail "+ did not widen the field of view ($f0 -> $f1)"
+[ "$e0" = "$e1" ] || fail "+ moved the camera ($e0 -> $e1)"
+
 xdotool key m; sleep 0.6
 shot mode
 n=$(changed left mode)
 echo "M: $n pixels changed"
 [ "$n" -gt 2000 ] || fail "M did not change the image ($n pixels)"
 
+# P saves under the next free name, never over an earlier file.
+xdotool key p; sleep 0.5; xdotool key p; sleep 0.5
+[ "$(cat "$shots/viewer-001.png")" = keep ] || fail "P overwrote viewer-001.png"
+for n in 002 003; do
+    [ "$(identify -format "%m %wx%h" "$shots/viewer-$n.png")" = "PNG 640x480" ] || fail "P did not save viewer-$n.png"
+done
+
 # R asks on the terminal; bad answers are reported and asked again; the window keeps running.
+# While it asks, the frame-time lines pause.
+printf 'v 0 0 0\nv 1 0 0\n' >"$out/points.obj"
 xdotool key r; sleep 0.3
-printf '/no/such/model.obj\ncube\n300,0,0\n40,200,90\n1,2\n0,0,1.5\n' >&3
+n0=$(grep -c "frame: render" "$out/viewer.log")
+sleep 2.5
+n1=$(grep -c "frame: render" "$out/viewer.log")
+[ "$n0" = "$n1" ] || fail "frame-time lines went on during the prompt ($n0 -> $n1)"
+printf '/no/such/model.obj\n%s\ncube\n300,0,0\n40,200,90\n1,2\n0,0,1.5\n' "$out/points.obj" >&3
 sleep 1.2
 grep -q "No such file" "$out/viewer.log" || fail "a bad path was not reported"
+grep -q "no triangles in $out/points.obj" "$out/viewer.log" || fail "a file without triangles was not reported"
 grep -q "give three numbers 0-255" "$out/viewer.log" || fail "a bad colour was not reported"
 grep -q "added object 6" "$out/viewer.log" || fail "the object was not added"
+sleep 1.5
+n2=$(grep -c "frame: render" "$out/viewer.log")
+[ "$n2" -gt "$n1" ] || fail "frame-time lines did not come back after the prompt"
 xdotool key r; sleep 0.3
 printf 'exit\n' >&3
 sleep 0.5

@@ -599,10 +599,23 @@ pub fn default_lights() -> Vec<(Vec3, LightColor)> {
 /// Writes an RGB888 image as PNG.
 pub fn save_png(path: &str, w: u32, h: u32, pixels: &[Rgb888]) -> Result<(), String> {
     let file = std::fs::File::create(path).map_err(|e| format!("{path}: {e}"))?;
+    save_png_to(file, path, w, h, pixels)
+}
+
+/// [`save_png`] into an open `file` (named `path` in errors).
+pub fn save_png_to(
+    file: std::fs::File,
+    path: &str,
+    w: u32,
+    h: u32,
+    pixels: &[Rgb888],
+) -> Result<(), String> {
     let mut enc = png::Encoder::new(std::io::BufWriter::new(file), w, h);
     enc.set_color(png::ColorType::Rgb);
     enc.set_depth(png::BitDepth::Eight);
-    let mut writer = enc.write_header().map_err(|e| e.to_string())?;
+    let mut writer = enc.write_header().map_err(|e| format!("{path}: {e}"))?;
     let data: Vec<u8> = pixels.iter().flat_map(|c| [c.r(), c.g(), c.b()]).collect();
-    writer.write_image_data(&data).map_err(|e| e.to_string())
+    writer
+        .write_image_data(&data)
+        .map_err(|e| format!("{path}: {e}"))
 }
