@@ -8,6 +8,11 @@
 #[allow(dead_code)]
 mod scenes;
 
+/// The board firmwares' drawing code (`boards/showcase`), as the `boards` preset runs it.
+#[path = "../boards/showcase/src/scene.rs"]
+#[allow(dead_code)]
+mod showcase;
+
 use embedded_graphics::geometry::Size;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
 use fixed3d::math::Vec3;
@@ -150,7 +155,46 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         wire(&small, f, &mut small_cache, &mut display);
         display.hash.0
     });
+    let boards_hash = {
+        use showcase::*;
+        let (mut p, mut n, mut t) = (
+            vec![Vec3::ZERO; TORUS_VERTICES],
+            vec![Vec3::ZERO; TORUS_VERTICES],
+            vec![[0u16; 3]; TORUS_TRIANGLES],
+        );
+        let lcd = showcase::torus_mesh(TORUS_RING, TORUS_TUBE, &mut p, &mut n, &mut t);
+        let (mut sp, mut sn, mut st) = (
+            vec![Vec3::ZERO; SMALL_VERTICES],
+            vec![Vec3::ZERO; SMALL_VERTICES],
+            vec![[0u16; 3]; SMALL_TRIANGLES],
+        );
+        let small = showcase::torus_mesh(SMALL_RING, SMALL_TUBE, &mut sp, &mut sn, &mut st);
+        let (mut cache, mut bins) = (
+            vec![ScreenVertex::DEFAULT; TORUS_VERTICES],
+            vec![Bin::EMPTY; LCD_BINS],
+        );
+        let (mut color, mut depth, mut bytes) = (
+            vec![Rgb565::BLACK; LCD_BAND_CELLS],
+            vec![0u16; LCD_BAND_CELLS],
+            vec![0u8; 2 * LCD_BAND_CELLS],
+        );
+        let mut small_cache = vec![ScreenVertex::DEFAULT; SMALL_VERTICES];
+        let (mut pixels, mut small_depth) =
+            (vec![BinaryColor::Off; OLED_CELLS], vec![0u16; OLED_CELLS]);
+        let mut buffers = BoardBuffers {
+            cache: &mut cache,
+            bins: &mut bins,
+            color: &mut color,
+            depth: &mut depth,
+            bytes: &mut bytes,
+            small_cache: &mut small_cache,
+            pixels: &mut pixels,
+            small_depth: &mut small_depth,
+        };
+        chain(|f| boards(&lcd, &small, f, &mut buffers).expect("a board frame"))
+    };
     let mut hashes = vec![
+        ("boards", boards_hash),
         ("wire", wire_hash),
         ("wire@microbit", microbit_hash),
         ("flat", flat_hash),
@@ -314,4 +358,55 @@ fn front_variant_walks_every_kind_of_face_inside_every_plane() {
     assert_eq!(kinds.iter().filter(|&&k| k == 2).count() as u32, culled);
     let lit = fb.iter().filter(|&&c| c != Rgb565::BLACK).count();
     assert!(lit > 1_000, "{lit}");
+}
+
+/// The RP2040 firmware's scheme (boards/pico-st7789): one prepared frame, the even bands drawn
+/// by one core and the odd ones by the other, gives the frame's image band for band; and the
+/// frame shows the torus.
+#[test]
+fn board_bands_from_two_threads_equal_one_pass() {
+    use showcase::*;
+    let (mut p, mut n, mut t) = (
+        vec![Vec3::ZERO; TORUS_VERTICES],
+        vec![Vec3::ZERO; TORUS_VERTICES],
+        vec![[0u16; 3]; TORUS_TRIANGLES],
+    );
+    let lcd = showcase::torus_mesh(TORUS_RING, TORUS_TUBE, &mut p, &mut n, &mut t);
+    let (mut cache, mut bins) = (
+        vec![ScreenVertex::DEFAULT; TORUS_VERTICES],
+        vec![Bin::EMPTY; LCD_BINS],
+    );
+    let models = lcd_models(&lcd, 7);
+    let frame = prepare_lcd(&models, &mut cache, &mut bins).expect("prepared");
+    let bands_of = |parity: u32| {
+        let mut bytes = Vec::new();
+        let (mut color, mut depth) = (
+            vec![Rgb565::BLACK; LCD_BAND_CELLS],
+            vec![0u16; LCD_BAND_CELLS],
+        );
+        for band in (parity..LCD_BANDS).step_by(2) {
+            draw_lcd_band(&frame, band, &mut color, &mut depth).expect("band");
+            let mut b = vec![0u8; 2 * LCD_BAND_CELLS];
+            lcd_bytes(&color, &mut b);
+            bytes.push((band, b));
+        }
+        bytes
+    };
+    let (even, odd) = std::thread::scope(|s| {
+        let even = s.spawn(|| bands_of(0));
+        let odd = s.spawn(|| bands_of(1));
+        (even.join().unwrap(), odd.join().unwrap())
+    });
+    let mut two: Vec<(u32, Vec<u8>)> = even.into_iter().chain(odd).collect();
+    two.sort_by_key(|(band, _)| *band);
+    let two: Vec<u8> = two.into_iter().flat_map(|(_, b)| b).collect();
+    // One pass: the whole frame through buffers of all its rows.
+    let all = (LCD_SIZE * LCD_SIZE) as usize;
+    let (mut color, mut depth) = (vec![Rgb565::BLACK; all], vec![u16::MAX; all]);
+    frame.draw_band(0, &mut color, &mut depth).expect("frame");
+    let mut one = vec![0u8; 2 * all];
+    lcd_bytes(&color, &mut one);
+    assert_eq!(two, one);
+    let lit = color.iter().filter(|&&c| c != Rgb565::BLACK).count();
+    assert!(lit > all / 10, "the torus covers {lit} of {all} pixels");
 }
