@@ -184,6 +184,12 @@ fn run_within(megabytes: u32, args: &[&str]) -> Output {
         .unwrap()
 }
 
+/// The tool loading `file` within 200 MB of address space (see [`run_within`]).
+fn load_within(file: &std::path::Path, png: &str) -> Output {
+    let out = out_png(png);
+    run_within(200, &["--obj", file.to_str().unwrap(), "--out", &out])
+}
+
 #[test]
 fn a_file_without_triangles_is_an_error() {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
@@ -204,15 +210,7 @@ fn memory_is_bounded_by_the_model_not_the_file() {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
     let blank = dir.join("cli_blank.obj");
     std::fs::write(&blank, vec![b'\n'; 30 << 20]).unwrap();
-    let o = run_within(
-        200,
-        &[
-            "--obj",
-            blank.to_str().unwrap(),
-            "--out",
-            &out_png("blank.png"),
-        ],
-    );
+    let o = load_within(&blank, "blank.png");
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(err.contains("no triangles in"), "{err}");
@@ -221,15 +219,7 @@ fn memory_is_bounded_by_the_model_not_the_file() {
         std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/models/suzanne.obj")).unwrap();
     padded.extend(vec![b'\n'; 30 << 20]);
     std::fs::write(&blank, padded).unwrap();
-    let o = run_within(
-        200,
-        &[
-            "--obj",
-            blank.to_str().unwrap(),
-            "--out",
-            &out_png("padded.png"),
-        ],
-    );
+    let o = load_within(&blank, "padded.png");
     assert_eq!(
         o.status.code(),
         Some(0),
@@ -248,15 +238,7 @@ fn a_sparse_file_fails_on_its_first_line() {
         .unwrap()
         .set_len(1 << 30)
         .unwrap();
-    let o = run_within(
-        200,
-        &[
-            "--obj",
-            sparse.to_str().unwrap(),
-            "--out",
-            &out_png("sparse.png"),
-        ],
-    );
+    let o = load_within(&sparse, "sparse.png");
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(err.contains("line 1,"), "{err}");
@@ -337,6 +319,7 @@ fn range_errors_name_their_cause() {
 #[test]
 fn the_default_output_lies_under_target() {
     let cwd = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_cwd");
+    let _ = std::fs::remove_dir_all(&cwd);
     std::fs::create_dir_all(&cwd).unwrap();
     let o = Command::new(tool())
         .args(["--shape", "cube", "--size", "32x24"])

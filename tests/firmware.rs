@@ -20,6 +20,15 @@ use fixed3d::mesh::FaceNormal;
 use fixed3d::pipeline::{Bin, ScreenVertex};
 use scenes::*;
 
+/// Positions, normals and triangles for a generated torus of this size.
+fn torus_storage(vertices: usize, triangles: usize) -> (Vec<Vec3>, Vec<Vec3>, Vec<[u16; 3]>) {
+    (
+        vec![Vec3::ZERO; vertices],
+        vec![Vec3::ZERO; vertices],
+        vec![[0u16; 3]; triangles],
+    )
+}
+
 fn frame_hash(fb: &[Rgb565]) -> u32 {
     let mut h = Fnv::new();
     h.pixels(fb);
@@ -157,17 +166,9 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     });
     let boards_hash = {
         use showcase::*;
-        let (mut p, mut n, mut t) = (
-            vec![Vec3::ZERO; TORUS_VERTICES],
-            vec![Vec3::ZERO; TORUS_VERTICES],
-            vec![[0u16; 3]; TORUS_TRIANGLES],
-        );
+        let (mut p, mut n, mut t) = torus_storage(TORUS_VERTICES, TORUS_TRIANGLES);
         let lcd = showcase::torus_mesh(TORUS_RING, TORUS_TUBE, &mut p, &mut n, &mut t);
-        let (mut sp, mut sn, mut st) = (
-            vec![Vec3::ZERO; SMALL_VERTICES],
-            vec![Vec3::ZERO; SMALL_VERTICES],
-            vec![[0u16; 3]; SMALL_TRIANGLES],
-        );
+        let (mut sp, mut sn, mut st) = torus_storage(SMALL_VERTICES, SMALL_TRIANGLES);
         let small = showcase::torus_mesh(SMALL_RING, SMALL_TUBE, &mut sp, &mut sn, &mut st);
         let (mut cache, mut bins) = (
             vec![ScreenVertex::DEFAULT; TORUS_VERTICES],
@@ -181,17 +182,16 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         let mut small_cache = vec![ScreenVertex::DEFAULT; SMALL_VERTICES];
         let (mut pixels, mut small_depth) =
             (vec![BinaryColor::Off; OLED_CELLS], vec![0u16; OLED_CELLS]);
-        let mut buffers = BoardBuffers {
-            cache: &mut cache,
-            bins: &mut bins,
-            color: &mut color,
-            depth: &mut depth,
-            bytes: &mut bytes,
-            small_cache: &mut small_cache,
-            pixels: &mut pixels,
-            small_depth: &mut small_depth,
-        };
-        chain(|f| boards(&lcd, &small, f, &mut buffers).expect("a board frame"))
+        // As bench/mcu/src/bin/boards.rs draws and hashes a frame.
+        chain(|f| {
+            let mut h = Fnv::new();
+            let models = lcd_models(&lcd, f);
+            let frame = prepare_lcd(&models, &mut cache, &mut bins).expect("prepared");
+            send_lcd_frame(&frame, &mut color, &mut depth, &mut bytes, |b| h.bytes(b))
+                .expect("bands");
+            draw_oled(&small, f, &mut small_cache, &mut pixels, &mut small_depth).expect("oled");
+            display_hash(h.0, mono_hash(&pixels))
+        })
     };
     let mut hashes = vec![
         ("boards", boards_hash),
@@ -366,11 +366,7 @@ fn front_variant_walks_every_kind_of_face_inside_every_plane() {
 #[test]
 fn board_bands_from_two_threads_equal_one_pass() {
     use showcase::*;
-    let (mut p, mut n, mut t) = (
-        vec![Vec3::ZERO; TORUS_VERTICES],
-        vec![Vec3::ZERO; TORUS_VERTICES],
-        vec![[0u16; 3]; TORUS_TRIANGLES],
-    );
+    let (mut p, mut n, mut t) = torus_storage(TORUS_VERTICES, TORUS_TRIANGLES);
     let lcd = showcase::torus_mesh(TORUS_RING, TORUS_TUBE, &mut p, &mut n, &mut t);
     let (mut cache, mut bins) = (
         vec![ScreenVertex::DEFAULT; TORUS_VERTICES],

@@ -12,9 +12,6 @@
 
 pub mod scenes;
 
-/// What the board firmwares under `boards/` draw (the `boards` preset runs it).
-pub use fixed3d_showcase as showcase;
-
 use core::sync::atomic::{compiler_fence, AtomicU32, Ordering};
 
 use cortex_m_semihosting::{debug, hprintln};

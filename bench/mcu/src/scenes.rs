@@ -55,6 +55,12 @@ impl Fnv {
             self.0 = (self.0 ^ b as u32).wrapping_mul(0x0100_0193);
         }
     }
+    /// Hashes `bytes` four at a time (little-endian words; a tail of fewer is left out).
+    pub fn bytes(&mut self, bytes: &[u8]) {
+        for w in bytes.chunks_exact(4) {
+            self.write(u32::from_le_bytes([w[0], w[1], w[2], w[3]]));
+        }
+    }
     pub fn pixels(&mut self, px: &[Rgb565]) {
         for p in px {
             self.write(p.into_storage() as u32);
@@ -738,43 +744,4 @@ pub fn mono_hash(px: &[BinaryColor]) -> u32 {
 /// one-bit frame sent to the SSD1306.
 pub fn display_hash(bands: u32, mono: u32) -> u32 {
     bands ^ mono.rotate_left(16)
-}
-
-/// Buffers of the `boards` preset: those of the two board firmwares under `boards/`.
-pub struct BoardBuffers<'a> {
-    /// The colour display's vertex cache.
-    pub cache: &'a mut [ScreenVertex],
-    /// Its bins.
-    pub bins: &'a mut [Bin],
-    /// A band's colour cells.
-    pub color: &'a mut [Rgb565],
-    /// A band's depth cells.
-    pub depth: &'a mut [u16],
-    /// A band as the ST7789 takes it over SPI.
-    pub bytes: &'a mut [u8],
-    /// The one-bit display's vertex cache.
-    pub small_cache: &'a mut [ScreenVertex],
-    /// Its pixels.
-    pub pixels: &'a mut [BinaryColor],
-    /// Its depth cells.
-    pub small_depth: &'a mut [u16],
-}
-
-/// `boards`: frame `f` of each board firmware, through their own drawing code
-/// (`boards/showcase`): the colour display's bands in order, as the bytes its SPI bus is sent,
-/// and the one-bit frame. The hash of both (see [`display_hash`]).
-pub fn boards(lcd: &Mesh<'_>, small: &Mesh<'_>, f: u32, b: &mut BoardBuffers<'_>) -> Option<u32> {
-    use crate::showcase;
-    let models = showcase::lcd_models(lcd, f);
-    let frame = showcase::prepare_lcd(&models, b.cache, b.bins).ok()?;
-    let mut h = Fnv::new();
-    for band in 0..showcase::LCD_BANDS {
-        showcase::draw_lcd_band(&frame, band, b.color, b.depth).ok()?;
-        showcase::lcd_bytes(b.color, b.bytes);
-        for word in b.bytes.chunks_exact(4) {
-            h.write(u32::from_le_bytes([word[0], word[1], word[2], word[3]]));
-        }
-    }
-    showcase::draw_oled(small, f, b.small_cache, b.pixels, b.small_depth)?;
-    Some(display_hash(h.0, mono_hash(b.pixels)))
 }

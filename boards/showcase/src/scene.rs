@@ -135,6 +135,23 @@ pub fn draw_lcd_band(
         .map(|_| ())
 }
 
+/// Draws every band of `frame` in order through one set of buffers, and hands each band's
+/// bytes (see [`lcd_bytes`]) to `send`: the whole frame on one core.
+pub fn send_lcd_frame(
+    frame: &PreparedFrame<'_>,
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+    bytes: &mut [u8],
+    mut send: impl FnMut(&[u8]),
+) -> Result<(), BufferError> {
+    for band in 0..LCD_BANDS {
+        draw_lcd_band(frame, band, color, depth)?;
+        lcd_bytes(color, bytes);
+        send(bytes);
+    }
+    Ok(())
+}
+
 /// The band's pixels as an ST7789 takes them over SPI: two bytes each, high byte first.
 /// `out` holds two bytes a cell of `color` (extra bytes are left as they are).
 pub fn lcd_bytes(color: &[Rgb565], out: &mut [u8]) {

@@ -1,19 +1,23 @@
-//! Preset `boards`: a frame of each board firmware under `boards/`, through their shared
-//! drawing code (`boards/showcase`): the 240x240 colour display's 15 bands of one prepared
-//! frame, each turned into the bytes an ST7789 is sent, and the 128x64 one-bit frame. The
-//! firmwares draw exactly this (the RP2040's two cores share the bands out); here one core
-//! draws them in order, and the hash is the host's (`tests/firmware.rs`).
+//! Preset `boards`: a frame of each board firmware under `boards/`, through their drawing code
+//! (`boards/showcase`, compiled in from its source so that the other presets' builds do not
+//! change): the 240x240 colour display's 15 bands of one prepared frame, each turned into the
+//! bytes an ST7789 is sent, and the 128x64 one-bit frame. The firmwares draw exactly this (the
+//! RP2040's two cores share the bands out); here one core draws them in order, and the hash is
+//! the host's (`tests/firmware.rs`).
 #![no_std]
 #![no_main]
+
+#[path = "../../../../boards/showcase/src/scene.rs"]
+mod showcase;
 
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
 use fixed3d::math::Vec3;
 use fixed3d::pipeline::{Bin, ScreenVertex};
-use mcu_bench::scenes::{boards, BoardBuffers};
-use mcu_bench::showcase::*;
+use mcu_bench::scenes::{display_hash, mono_hash, Fnv};
 use mcu_bench::{storage, Op};
 use panic_semihosting as _;
+use showcase::*;
 
 #[entry]
 fn main() -> ! {
@@ -39,21 +43,17 @@ fn main() -> ! {
     );
     let lcd = torus_mesh(TORUS_RING, TORUS_TUBE, pos, nor, tri);
     let small = torus_mesh(SMALL_RING, SMALL_TUBE, small_pos, small_nor, small_tri);
-    let mut buffers = BoardBuffers {
-        cache,
-        bins,
-        color,
-        depth,
-        bytes,
-        small_cache,
-        pixels,
-        small_depth,
-    };
     let mut last = 0;
     mcu_bench::run("boards", |op| match op {
         Op::Clear => 0,
         Op::Draw(f) => {
-            last = boards(&lcd, &small, f, &mut buffers).unwrap_or(0);
+            let mut h = Fnv::new();
+            let models = lcd_models(&lcd, f);
+            if let Ok(frame) = prepare_lcd(&models, cache, bins) {
+                let _ = send_lcd_frame(&frame, color, depth, bytes, |b| h.bytes(b));
+            }
+            let _ = draw_oled(&small, f, small_cache, pixels, small_depth);
+            last = display_hash(h.0, mono_hash(pixels));
             last
         }
         Op::Hash => last,
