@@ -68,9 +68,10 @@ echo "Left: right half covered $r0 -> $r1, $(changed forward left) pixels change
 bigger "$r0" "$r1" || fail "Left did not turn the view to the left ($r0 -> $r1)"
 
 # + is Shift and = on this layout: the field of view widens, the camera stays where it was.
-view() { grep "^view:" "$out/viewer.log" | tail -1; }
+view() { { grep "^view:" "$out/viewer.log" || true; } | tail -1; }
 fov() { view | sed -E 's/^view: fov ([0-9.]+),.*/\1/'; }
 eye() { view | sed -E 's/.*eye //'; }
+[ -n "$(view)" ] || fail "releasing a key that moves the camera printed no view line"
 f0=$(fov); e0=$(eye)
 hold plus 0.8
 f1=$(fov); e1=$(eye)
