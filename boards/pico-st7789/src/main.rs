@@ -45,8 +45,8 @@ const XTAL_HZ: u32 = 12_000_000;
 /// A band as the ST7789 takes it: two bytes a pixel.
 type BandBytes = [u8; 2 * LCD_BAND_CELLS];
 
-/// Core 1's stack.
-static CORE1_STACK: Stack<4096> = Stack::new();
+/// Core 1's stack: 32 KiB, room for its band buffers being set up through it.
+static CORE1_STACK: Stack<8192> = Stack::new();
 
 /// The bytes of core 1's last band, passed between the cores: core 1 fills them when they are
 /// not `filled`, core 0 sends them when they are and hands them back.
