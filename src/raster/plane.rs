@@ -25,14 +25,29 @@ impl Plane {
     /// The plane through `(p[i], v[i])`; `area2` is the triangle's doubled signed area
     /// `(x1−x0)(y2−y0) − (x2−x0)(y1−y0)`, non-zero.
     #[inline]
+    #[cfg(test)]
     pub(crate) fn new(p: &[ScreenPoint; 3], v: [i64; 3], area2: i64) -> Plane {
+        let [plane] = Plane::new_each(p, [v], area2);
+        plane
+    }
+
+    /// [`new`](Self::new) for each value set of `v`: the planes of one triangle, which share
+    /// the division by its area.
+    pub(crate) fn new_each<const K: usize>(
+        p: &[ScreenPoint; 3],
+        v: [[i64; 3]; K],
+        area2: i64,
+    ) -> [Plane; K] {
         let [a, b, c] = *p;
         let (dx1, dy1) = (b.x as i64 - a.x as i64, b.y as i64 - a.y as i64);
         let (dx2, dy2) = (c.x as i64 - a.x as i64, c.y as i64 - a.y as i64);
-        let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
-        let nx = dv1.wrapping_mul(dy2).wrapping_sub(dv2.wrapping_mul(dy1));
-        let ny = dx1.wrapping_mul(dv2).wrapping_sub(dx2.wrapping_mul(dv1));
-        Plane::from_numerators(a, v[0], nx, ny, 0, area2)
+        let by_area = AreaDivisor::new(area2);
+        v.map(|v| {
+            let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
+            let nx = dv1.wrapping_mul(dy2).wrapping_sub(dv2.wrapping_mul(dy1));
+            let ny = dx1.wrapping_mul(dv2).wrapping_sub(dx2.wrapping_mul(dv1));
+            by_area.plane(a, v[0], nx, ny, 0)
+        })
     }
 
     /// [`new`](Self::new) for values `v[i] << shift` with every `v[i]` in [0, 2³⁰] (depth in
@@ -40,9 +55,24 @@ impl Plane {
     /// once, the same values (exact, as their true values fit).
     #[inline]
     pub(crate) fn scaled(p: &[ScreenPoint; 3], v: [i32; 3], shift: u32, area2: i64) -> Plane {
-        let (nx, ny) = Plane::numerators(p, v);
-        let v0 = (v[0] as i64) << shift;
-        Plane::from_numerators(p[0], v0, nx, ny, shift, area2)
+        let [plane] = Plane::scaled_each(p, [v], shift, area2);
+        plane
+    }
+
+    /// [`scaled`](Self::scaled) for each value set of `v`: the planes of one triangle, which
+    /// share the division by its area.
+    #[inline]
+    pub(crate) fn scaled_each<const K: usize>(
+        p: &[ScreenPoint; 3],
+        v: [[i32; 3]; K],
+        shift: u32,
+        area2: i64,
+    ) -> [Plane; K] {
+        let by_area = AreaDivisor::new(area2);
+        v.map(|v| {
+            let (nx, ny) = Plane::numerators(p, v);
+            by_area.plane(p[0], (v[0] as i64) << shift, nx, ny, shift)
+        })
     }
 
     /// The numerators of the gradients along x and y of the plane through `(p[i], v[i])`
@@ -93,25 +123,6 @@ impl Plane {
         }
     }
 
-    /// The plane through `a` (value `v0`) with gradient numerators `nx << shift`, `ny << shift`
-    /// over `area2`.
-    #[inline(always)]
-    fn from_numerators(a: ScreenPoint, v0: i64, nx: i64, ny: i64, shift: u32, area2: i64) -> Plane {
-        let (nx, ny, den) = Plane::over_positive_area(nx, ny, area2);
-        let by_area = DivideBy::new(den);
-        let (gx, gy) = (
-            by_area.round_shifted(nx, shift),
-            by_area.round_shifted(ny, shift),
-        );
-        Plane {
-            x0: a.x,
-            y0: a.y,
-            v0,
-            gx,
-            gy,
-        }
-    }
-
     /// The centre of pixel `(px, py)` in sub-pixels from the first vertex.
     #[inline(always)]
     fn offsets(&self, px: i32, py: i32) -> (i64, i64) {
@@ -156,6 +167,41 @@ impl Plane {
     #[inline]
     pub(crate) fn step_x(&self) -> i64 {
         self.gx.saturating_mul(SUBPIXEL_SCALE as i64)
+    }
+}
+
+/// Division by a triangle's doubled signed area, set up once for all its planes: gradient
+/// numerators over the area become the same fractions over its magnitude, rounded to nearest.
+struct AreaDivisor {
+    by_area: DivideBy,
+    negative: bool,
+}
+
+impl AreaDivisor {
+    #[inline(always)]
+    fn new(area2: i64) -> AreaDivisor {
+        AreaDivisor {
+            by_area: DivideBy::new(area2.wrapping_abs()),
+            negative: area2 < 0,
+        }
+    }
+
+    /// The plane through `a` (value `v0`) with gradient numerators `nx << shift`,
+    /// `ny << shift` over the area.
+    #[inline(always)]
+    fn plane(&self, a: ScreenPoint, v0: i64, nx: i64, ny: i64, shift: u32) -> Plane {
+        let (nx, ny) = if self.negative {
+            (nx.wrapping_neg(), ny.wrapping_neg())
+        } else {
+            (nx, ny)
+        };
+        Plane {
+            x0: a.x,
+            y0: a.y,
+            v0,
+            gx: self.by_area.round_shifted(nx, shift),
+            gy: self.by_area.round_shifted(ny, shift),
+        }
     }
 }
 

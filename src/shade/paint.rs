@@ -49,20 +49,56 @@ fn channel_ranges(channel: impl Fn(usize) -> [i64; 3]) -> ([i64; 3], [i64; 3]) {
 /// vertex values (so every pixel is a convex combination, rule R8).
 #[derive(Clone, Copy, Debug)]
 pub struct SmoothPaint {
-    planes: [Plane; 3],
-    lo: [i64; 3],
-    hi: [i64; 3],
+    /// Per channel, the plane at pixel (0, 0) and its changes from one pixel to the next
+    /// along a row and down a column, modulo 2⁶⁴ as [`Plane::at`] is: a span's start is
+    /// [`Plane::at`] itself, bit for bit.
+    origin: [i64; 3],
+    along: [i64; 3],
+    down: [i64; 3],
+    /// Per channel, the step a span takes ([`Plane::step_x`]).
+    step: [i64; 3],
+    range: ChannelRange,
 }
 
 impl SmoothPaint {
     /// From vertex colours (channels `0..=255 << RGB_FRAC`) at snapped screen positions.
     pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64) -> Self {
-        let channel = |k: usize| rgb.map(|c| c.get(k).copied().unwrap_or(0));
-        let scaled = |k: usize| channel(k).map(|c| (c as i64) << (FRAC - RGB_FRAC));
-        let planes = [0, 1, 2].map(|k| Plane::scaled(p, channel(k), FRAC - RGB_FRAC, area2));
-        let (lo, hi) = channel_ranges(scaled);
-        SmoothPaint { planes, lo, hi }
+        let [a, b, c] = rgb;
+        let channels = [[a[0], b[0], c[0]], [a[1], b[1], c[1]], [a[2], b[2], c[2]]];
+        let planes = Plane::scaled_each(p, channels, FRAC - RGB_FRAC, area2);
+        // The range of each channel's vertex values, rounded as the pixels are.
+        let round = |v: i32| round_channel((v as i64) << (FRAC - RGB_FRAC));
+        let range = |k: usize| {
+            let [a, b, c] = channels[k];
+            (round(a.min(b).min(c)), round(a.max(b).max(c)))
+        };
+        let (r, g, b) = (range(0), range(1), range(2));
+        SmoothPaint {
+            origin: planes.map(|p| p.at(0, 0)),
+            along: planes.map(|p| p.pixel_steps().0),
+            down: planes.map(|p| p.pixel_steps().1),
+            step: planes.map(|p| p.step_x()),
+            range: ChannelRange {
+                lo: [r.0, g.0, b.0],
+                hi: [r.1, g.1, b.1],
+            },
+        }
     }
+}
+
+/// A value with [`FRAC`] fraction bits rounded to an 8-bit channel (ties up), clamped to
+/// [0, 255], as each pixel's channel is (see [`SmoothCursor::next`]).
+fn round_channel(v: i64) -> u8 {
+    (v.saturating_add(1 << (FRAC - 1)) >> FRAC).clamp(0, 255) as u8
+}
+
+/// Per channel, the rounded smallest and largest vertex values: rounding is monotone, so
+/// rounding a value clamped to the vertex range equals clamping the rounded value to the
+/// rounded range.
+#[derive(Clone, Copy, Debug)]
+struct ChannelRange {
+    lo: [u8; 3],
+    hi: [u8; 3],
 }
 
 /// The running colour of a [`SmoothPaint`] along a span.
@@ -70,18 +106,23 @@ impl SmoothPaint {
 pub struct SmoothCursor {
     acc: [i64; 3],
     step: [i64; 3],
-    lo: [i64; 3],
-    hi: [i64; 3],
+    range: ChannelRange,
 }
 
 impl Iterator for SmoothCursor {
     type Item = Rgb888;
-    #[inline]
+    /// Each channel is `(v + 2³⁵) >> 36` of its running value `v = H·2³² + L` (`0 ≤ L < 2³²`),
+    /// which is `(H + 8) >> 4`: with `H + 8 = 16q + r`, `0 ≤ r < 16`, it is
+    /// `q + ⌊(r·2³² + L) / 2³⁶⌋` and the second term is 0. The pipeline's values lie below 2⁴⁴
+    /// (a pixel inside the triangle, its rounding drift far below one unit): `H + 8` cannot
+    /// wrap.
+    #[inline(always)]
     fn next(&mut self) -> Option<Rgb888> {
+        let ChannelRange { lo, hi } = self.range;
         let ch = |k: usize| {
-            let v = self.acc[k].clamp(self.lo[k], self.hi[k]);
-            // Round to nearest 8-bit value.
-            ((v + (1 << (FRAC - 1))) >> FRAC).clamp(0, 255) as u8
+            let rounded = ((self.acc[k] >> 32) as i32).wrapping_add(8) >> 4;
+            // max then min: the range is never empty, and no test of it is made per pixel.
+            rounded.max(lo[k] as i32).min(hi[k] as i32) as u8
         };
         let c = Rgb888::new(ch(0), ch(1), ch(2));
         let [a0, a1, a2] = self.acc;
@@ -100,12 +141,17 @@ impl Paint for SmoothPaint {
     fn solid(&self) -> Option<Rgb888> {
         None
     }
+    #[inline(always)]
     fn cursor(&self, x: i32, y: i32) -> SmoothCursor {
+        let at = |k: usize| {
+            self.origin[k]
+                .wrapping_add(self.along[k].wrapping_mul(x as i64))
+                .wrapping_add(self.down[k].wrapping_mul(y as i64))
+        };
         SmoothCursor {
-            acc: self.planes.map(|p| p.at(x, y)),
-            step: self.planes.map(|p| p.step_x()),
-            lo: self.lo,
-            hi: self.hi,
+            acc: [at(0), at(1), at(2)],
+            step: self.step,
+            range: self.range,
         }
     }
 }
@@ -147,12 +193,7 @@ impl PerspectivePaint {
             n
         };
         let den = q.map(|v| v << 16);
-        let planes = [
-            Plane::new(p, num(0), area2),
-            Plane::new(p, num(1), area2),
-            Plane::new(p, num(2), area2),
-            Plane::new(p, den, area2),
-        ];
+        let planes = Plane::new_each(p, [num(0), num(1), num(2), den], area2);
         let (lo, hi) = channel_ranges(channel);
         PerspectivePaint { planes, lo, hi }
     }
