@@ -22,8 +22,7 @@ pub(crate) struct Plane {
 }
 
 impl Plane {
-    /// The plane through `(p[i], v[i])`; `area2` is the triangle's doubled signed area
-    /// `(x1−x0)(y2−y0) − (x2−x0)(y1−y0)`, non-zero.
+    /// The plane through `(p[i], v[i])` (see [`new_each`](Self::new_each)).
     #[inline]
     #[cfg(test)]
     pub(crate) fn new(p: &[ScreenPoint; 3], v: [i64; 3], area2: i64) -> Plane {
@@ -31,8 +30,9 @@ impl Plane {
         plane
     }
 
-    /// [`new`](Self::new) for each value set of `v`: the planes of one triangle, which share
-    /// the division by its area.
+    /// For each value set `v[k]`, the plane through `(p[i], v[k][i])`: the planes of one
+    /// triangle, which share the division by its area. `area2` is the triangle's doubled signed
+    /// area `(x1−x0)(y2−y0) − (x2−x0)(y1−y0)`, non-zero.
     pub(crate) fn new_each<const K: usize>(
         p: &[ScreenPoint; 3],
         v: [[i64; 3]; K],
@@ -50,7 +50,7 @@ impl Plane {
         })
     }
 
-    /// [`new`](Self::new) for values `v[i] << shift` with every `v[i]` in [0, 2³⁰] (depth in
+    /// The plane through `(p[i], v[i] << shift)` with every `v[i]` in [0, 2³⁰] (depth in
     /// Q1.30, colour channels): the numerators from 32-bit differences and products, shifted
     /// once, the same values (exact, as their true values fit).
     #[inline]
