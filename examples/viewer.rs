@@ -21,12 +21,14 @@
 //! | Tab | spinning on / off |
 //! | R | add an object: path, colour and position asked on the terminal |
 //! | Backspace | remove the last object |
-//! | P | save the frame as PNG |
+//! | P | save the frame as `target/screenshots/viewer-NNN.png`, never over an earlier file |
 //! | H | key help on screen |
 //! | Escape | quit |
 //!
-//! Held keys move the camera smoothly by elapsed time (key repeats are ignored). The render
-//! time of each frame is shown on screen and printed to the terminal once per second.
+//! Held keys move the camera smoothly by elapsed time (key repeats are ignored); releasing one
+//! prints the view (`view: fov …, eye x,y,z`). The render time of each frame is shown on screen
+//! and printed to the terminal once per second, except while R waits for an answer. Without a
+//! display the viewer exits with status 1.
 
 #[path = "common/desktop.rs"]
 mod desktop;
