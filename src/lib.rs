@@ -30,6 +30,7 @@ pub mod render;
 pub mod scene;
 pub mod shade;
 pub mod stats;
+pub mod texture;
 
 pub use camera::Camera;
 pub use render::{Model, Renderer, Shade, Storage, Style, Wireframe};

@@ -41,7 +41,8 @@ use crate::mesh::{Mesh, Object};
 use crate::pipeline::{Bin, Cull, Frame, PrepareError, Prepared, ScreenVertex, Stats};
 use crate::projection::{ProjectionError, Viewport};
 use crate::scene::{Light, LightColor, LightError, Lighting, Scene};
-use crate::shade::{Flat, Gouraud, PerspectiveGouraud, Shading, Unlit};
+use crate::shade::{Flat, Gouraud, PerspectiveGouraud, Shading, Textured, Unlit};
+use crate::texture::Texture;
 
 /// The most directional lights a frame of the [`Renderer`] takes (ambient lights are summed
 /// into one and do not count).
@@ -99,6 +100,7 @@ pub struct Model<'a> {
     color: Rgb888,
     shade: Shade,
     style: Style,
+    texture: Option<&'a Texture<'a>>,
 }
 
 impl<'a> Model<'a> {
@@ -112,6 +114,7 @@ impl<'a> Model<'a> {
             color: color.into(),
             shade: Shade::Flat,
             style: Style::Solid,
+            texture: None,
         }
     }
 
@@ -167,6 +170,42 @@ impl<'a> Model<'a> {
         Model { shade, ..self }
     }
 
+    /// Covered by `texture` through the mesh's UVs ([`Mesh::with_uvs`]), lit by its
+    /// [`Shade`] (the model's colour is then its wireframe's alone): see
+    /// [`texture`](crate::texture).
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
+    /// use fixed3d::mesh::TEXTURED_CUBE;
+    /// use fixed3d::prelude::*;
+    /// use fixed3d::texture::{Texels, Texture};
+    ///
+    /// static TEXELS: [Rgb565; 4] = [Rgb565::new(31, 0, 0), Rgb565::new(0, 63, 0),
+    ///                               Rgb565::new(0, 0, 31), Rgb565::new(31, 63, 31)];
+    /// let texture = Texture::new(Texels::Rgb565(&TEXELS), 2, 2).unwrap();
+    /// let cube = Model::new(&TEXTURED_CUBE, Rgb888::new(255, 255, 255)).textured(&texture);
+    /// let camera = Camera::perspective(60, 1, 10).looking_at([2, 2, 3], [0, 0, 0]);
+    /// let mut storage = Storage::<24, 12>::new();
+    /// let (mut color, mut depth) = ([Rgb565::new(0, 0, 0); 64 * 64], [0u16; 64 * 64]);
+    /// let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
+    /// let mut display = MockDisplay::<Rgb565>::new();
+    /// let stats = renderer.render(&[cube], &[Light::ambient(1)], &camera, &mut display).unwrap();
+    /// assert_eq!(stats.drawn, 6); // three faces in view, two triangles each
+    /// // Under a white ambient light of 1, every pixel is one of the four texels.
+    /// let pixels = (0..64).flat_map(|y| (0..64).map(move |x| (x, y)));
+    /// let drawn: Vec<_> = pixels.filter_map(|(x, y)| display.get_pixel((x, y).into())).collect();
+    /// assert!(drawn.iter().all(|c| TEXELS.contains(c) || *c == Rgb565::new(0, 0, 0)));
+    /// assert!(TEXELS.iter().all(|t| drawn.contains(t)));
+    /// ```
+    #[must_use]
+    pub fn textured(self, texture: &'a Texture<'a>) -> Self {
+        Model {
+            texture: Some(texture),
+            ..self
+        }
+    }
+
     /// Drawn as edges.
     #[must_use]
     pub fn wireframe(self) -> Self {
@@ -194,10 +233,21 @@ impl<'a> Model<'a> {
         self.style
     }
 
-    /// The model as the pipeline's [`Object`]: its mesh, model matrix and colour.
+    /// Its texture, if any.
+    #[must_use]
+    pub fn texture(&self) -> Option<&'a Texture<'a>> {
+        self.texture
+    }
+
+    /// The model as the pipeline's [`Object`]: its mesh, model matrix and colour (white for
+    /// a textured solid: lighting then gives the light that scales its texels).
     #[must_use]
     pub fn object(&self) -> Object<'a> {
-        Object::new(self.mesh, self.model, self.color)
+        let color = match (self.texture, self.style) {
+            (Some(_), Style::Solid) => Rgb888::new(255, 255, 255),
+            _ => self.color,
+        };
+        Object::new(self.mesh, self.model, color)
     }
 }
 
@@ -229,7 +279,7 @@ pub enum RenderError<E> {
     },
     /// More models than 65,535.
     TooManyModels,
-    /// A model needs a cargo feature this build lacks (`gouraud` or `wireframe`).
+    /// A model needs a cargo feature this build lacks (`gouraud`, `texture` or `wireframe`).
     Disabled {
         /// The feature.
         feature: &'static str,
@@ -562,6 +612,14 @@ impl<'f> PreparedFrame<'f> {
                     Shadings::PerspectiveGouraud if GOURAUD => {
                         bin(&frame.prepare(&scene, cache, PerspectiveGouraud)?)
                     }
+                    Shadings::Textured(texture) if TEXTURE => {
+                        let light = Flat;
+                        bin(&frame.prepare(&scene, cache, Textured { texture, light })?)
+                    }
+                    Shadings::TexturedGouraud(texture) if TEXTURE && GOURAUD => {
+                        let light = Gouraud;
+                        bin(&frame.prepare(&scene, cache, Textured { texture, light })?)
+                    }
                     _ => bin(&frame.prepare(&scene, cache, Flat)?),
                 })
             })
@@ -668,6 +726,20 @@ impl<'f> PreparedFrame<'f> {
                         PerspectiveGouraud,
                         inside,
                     )),
+                    Shadings::Textured(texture) if TEXTURE => {
+                        let shading = Textured {
+                            texture,
+                            light: Flat,
+                        };
+                        draw(&Prepared::resume(frame, &scene, cache, shading, inside))
+                    }
+                    Shadings::TexturedGouraud(texture) if TEXTURE && GOURAUD => {
+                        let shading = Textured {
+                            texture,
+                            light: Gouraud,
+                        };
+                        draw(&Prepared::resume(frame, &scene, cache, shading, inside))
+                    }
                     _ => draw(&Prepared::resume(frame, &scene, cache, Flat, inside)),
                 })
             });
@@ -678,23 +750,34 @@ impl<'f> PreparedFrame<'f> {
     }
 }
 
-/// The pipeline's shading type for a model: three, so that a firmware links at most three
-/// copies of the triangle walk (and one without the `gouraud` feature).
+/// The pipeline's shading type for a model: five, so that a firmware links at most five
+/// copies of the triangle walk (and one without the `gouraud` and `texture` features).
 #[derive(Clone, Copy)]
-enum Shadings {
+enum Shadings<'t> {
     /// [`Flat`]: also unlit models, under a white ambient light alone, and
     /// wireframes, whose walk reads no shading.
     Flat,
     Gouraud,
     PerspectiveGouraud,
+    /// [`Textured`] lit [`Flat`] (or unlit, as above).
+    Textured(&'t Texture<'t>),
+    /// [`Textured`] lit [`Gouraud`] (also for [`Shade::PerspectiveGouraud`]).
+    TexturedGouraud(&'t Texture<'t>),
 }
 
 /// Calls `f` with the shading type `model` is drawn with.
-fn dispatch<R, E>(model: &Model<'_>, f: impl FnOnce(Shadings) -> Result<R, E>) -> Result<R, E> {
-    f(match (model.style, model.shade) {
-        (Style::Wireframe, _) | (_, Shade::Unlit | Shade::Flat) => Shadings::Flat,
-        (_, Shade::Gouraud) => Shadings::Gouraud,
-        (_, Shade::PerspectiveGouraud) => Shadings::PerspectiveGouraud,
+fn dispatch<'t, R, E>(
+    model: &Model<'t>,
+    f: impl FnOnce(Shadings<'t>) -> Result<R, E>,
+) -> Result<R, E> {
+    let smooth = matches!(model.shade, Shade::Gouraud | Shade::PerspectiveGouraud);
+    f(match (model.style, model.texture, model.shade) {
+        (Style::Wireframe, _, _) => Shadings::Flat,
+        (_, Some(texture), _) if smooth => Shadings::TexturedGouraud(texture),
+        (_, Some(texture), _) => Shadings::Textured(texture),
+        (_, None, Shade::Unlit | Shade::Flat) => Shadings::Flat,
+        (_, None, Shade::Gouraud) => Shadings::Gouraud,
+        (_, None, Shade::PerspectiveGouraud) => Shadings::PerspectiveGouraud,
     })
 }
 
@@ -708,19 +791,25 @@ fn lighting_of(model: &Model<'_>, frame: &Lighting<MAX_LIGHTS>) -> Lighting<MAX_
 }
 
 /// Whether the renderer draws [`Shade::Gouraud`] and [`Shade::PerspectiveGouraud`] models
-/// (the `gouraud` feature) and [`Style::Wireframe`] ones (the `wireframe` feature): without a
-/// feature its code is not linked, and a model that needs it is an error.
+/// (the `gouraud` feature), textured ones (the `texture` feature) and [`Style::Wireframe`]
+/// ones (the `wireframe` feature): without a feature its code is not linked, and a model that
+/// needs it is an error.
 const GOURAUD: bool = cfg!(feature = "gouraud");
+/// See [`GOURAUD`].
+const TEXTURE: bool = cfg!(feature = "texture");
 /// See [`GOURAUD`].
 const WIREFRAME: bool = cfg!(feature = "wireframe");
 
 /// The feature `model` needs that this build lacks, if any.
 fn missing_feature(model: &Model<'_>) -> Option<&'static str> {
     let smooth = matches!(model.shade, Shade::Gouraud | Shade::PerspectiveGouraud);
-    if model.style == Style::Wireframe && !WIREFRAME {
+    let solid = model.style == Style::Solid;
+    if !solid && !WIREFRAME {
         Some("wireframe")
-    } else if smooth && model.style == Style::Solid && !GOURAUD {
+    } else if smooth && solid && !GOURAUD {
         Some("gouraud")
+    } else if model.texture.is_some() && solid && !TEXTURE {
+        Some("texture")
     } else {
         None
     }

@@ -447,7 +447,7 @@ where
             _ => {
                 let q = self.quantize;
                 self.depth_tested_spans(triangle, stats, |span| {
-                    let mut cursor = paint.cursor(span.x0, span.y);
+                    let mut cursor = paint.cursor(span);
                     let (mut x, y) = (span.x0, span.y);
                     move || {
                         let c = q.quantize(cursor.next().unwrap_or_default(), x, y);
@@ -532,7 +532,7 @@ where
                     let q = self.quantize;
                     let y = span.y;
                     let colors = paint
-                        .cursor(span.x0, span.y)
+                        .cursor(span)
                         .zip(span.x0..span.x1)
                         .map(move |(rgb, x)| q.quantize(rgb, x, y));
                     self.target.fill_contiguous(&area, colors)?;

@@ -1,7 +1,7 @@
 //! Meshes and objects: what a scene is made of.
 //!
 //! A [`Mesh`] borrows its arrays, so it can live in flash as `static` data: positions, triangle
-//! indices, optional per-vertex normals and an optional edge list for wireframes. Face normals
+//! indices, optional per-vertex normals and UVs, and an optional edge list for wireframes. Face normals
 //! for flat shading can be kept too, found once at start-up into RAM
 //! ([`Mesh::with_face_normals`]). Its constructors check every index once (they are
 //! `const fn`, so a mesh in a `static` is checked at compile time) and the pipeline reads
@@ -15,15 +15,20 @@ use core::fmt;
 
 use embedded_graphics::pixelcolor::Rgb888;
 
-use crate::math::{isqrt_ceil, Angle, Mat4, Trig, Vec3};
+use crate::math::{isqrt_ceil, Angle, Mat4, Scalar, Trig, Vec3};
 
 pub use normals::{vertex_normals, FaceNormal};
 pub use shapes::{
-    torus, torus_counts, uv_sphere, uv_sphere_counts, ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON,
+    textured_torus, textured_torus_counts, torus, torus_counts, uv_sphere, uv_sphere_counts,
+    ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON, TEXTURED_CUBE,
 };
 
 /// A triangle: three indices into a mesh's positions, counter-clockwise seen from its front.
 pub type Triangle = [u16; 3];
+
+/// A texture coordinate `[u, v]`: (0, 0) is an image's bottom-left corner, (1, 1) its
+/// top-right.
+pub type Uv = [Scalar; 2];
 
 /// An edge for wireframes: two indices into a mesh's positions.
 pub type Edge = [u16; 2];
@@ -46,6 +51,8 @@ pub enum MeshError {
     NormalCountMismatch,
     /// The face normals' storage is not as long as the triangles array.
     FaceNormalCountMismatch,
+    /// The UVs array is not as long as the positions array.
+    UvCountMismatch,
 }
 
 impl fmt::Display for MeshError {
@@ -64,6 +71,7 @@ impl fmt::Display for MeshError {
             MeshError::FaceNormalCountMismatch => {
                 f.write_str("there must be one face normal per triangle")
             }
+            MeshError::UvCountMismatch => f.write_str("there must be one UV per vertex"),
         }
     }
 }
@@ -96,6 +104,7 @@ pub struct Mesh<'a> {
     /// `positions` or `triangles` (the others copy both).
     triangles: &'a [Triangle],
     normals: Option<&'a [Vec3]>,
+    uvs: Option<&'a [Uv]>,
     face_normals: Option<&'a [FaceNormal]>,
     edges: Option<&'a [Edge]>,
     /// The largest coordinate magnitude of any position (raw Q16.16).
@@ -113,6 +122,7 @@ impl<'a> Mesh<'a> {
         positions: &[],
         triangles: &[],
         normals: None,
+        uvs: None,
         face_normals: None,
         edges: None,
         extent: 0,
@@ -173,6 +183,7 @@ impl<'a> Mesh<'a> {
             positions,
             triangles,
             normals: None,
+            uvs: None,
             face_normals: None,
             edges: None,
             extent,
@@ -189,6 +200,20 @@ impl<'a> Mesh<'a> {
         }
         Ok(Mesh {
             normals: Some(normals),
+            ..self
+        })
+    }
+
+    /// Adds a texture coordinate per vertex, read by textured models (see
+    /// [`texture`](crate::texture)). There must be exactly one per position: where a vertex's
+    /// corners need different UVs (a seam), the vertex is split, as
+    /// [`obj::split_corners`](crate::obj::split_corners) splits an OBJ file's.
+    pub const fn with_uvs(self, uvs: &'a [Uv]) -> Result<Self, MeshError> {
+        if uvs.len() != self.positions.len() {
+            return Err(MeshError::UvCountMismatch);
+        }
+        Ok(Mesh {
+            uvs: Some(uvs),
             ..self
         })
     }
@@ -274,6 +299,12 @@ impl<'a> Mesh<'a> {
     #[must_use]
     pub const fn normals(&self) -> Option<&'a [Vec3]> {
         self.normals
+    }
+
+    /// The per-vertex UVs, if any.
+    #[must_use]
+    pub const fn uvs(&self) -> Option<&'a [Uv]> {
+        self.uvs
     }
 
     /// The face normals kept by [`with_face_normals`](Self::with_face_normals), if any.

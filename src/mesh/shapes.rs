@@ -4,7 +4,7 @@
 
 use core::fmt;
 
-use super::{Edge, Mesh, Triangle};
+use super::{Edge, Mesh, Triangle, Uv};
 use crate::math::{shr_round, Angle, Scalar, Vec3};
 
 const fn v(x: i16, y: i16, z: i16) -> Vec3 {
@@ -65,6 +65,83 @@ pub static CUBE: Mesh<'static> = checked(match Mesh::new(&CUBE_POSITIONS, &CUBE_
     Ok(m) => m.with_edges(&CUBE_EDGES),
     Err(e) => Err(e),
 });
+
+/// The cube's six faces, each four corners counter-clockwise seen from outside: the two
+/// triangles `[a, b, c]`, `[a, c, d]` of [`CUBE`] that cover it.
+const fn cube_quads() -> [[u16; 4]; 6] {
+    let mut quads = [[0u16; 4]; 6];
+    let mut f = 0;
+    while f < 6 {
+        let ([a, b, c], [_, _, d]) = (CUBE_TRIANGLES[2 * f], CUBE_TRIANGLES[2 * f + 1]);
+        quads[f] = [a, b, c, d];
+        f += 1;
+    }
+    quads
+}
+
+/// The textured cube's vertices: per face, its four corners with UVs (0, 0), (1, 0), (1, 1),
+/// (0, 1) and the face's normal.
+const fn textured_cube() -> ([Vec3; 24], [Uv; 24], [Vec3; 24], [Triangle; 12]) {
+    let quads = cube_quads();
+    let uv = [[0, 0], [1, 0], [1, 1], [0, 1]];
+    let (mut p, mut t, mut n) = ([Vec3::ZERO; 24], [[Scalar::ZERO; 2]; 24], [Vec3::ZERO; 24]);
+    let mut tri = [[0u16; 3]; 12];
+    let mut f = 0;
+    while f < 6 {
+        let q = quads[f];
+        // The axis on which the four corners agree is the normal's, with their coordinate.
+        let mut normal = [0i32; 3];
+        let mut k = 0;
+        while k < 3 {
+            let c = CUBE_POSITIONS[q[0] as usize].to_bits()[k];
+            let mut same = true;
+            let mut j = 1;
+            while j < 4 {
+                same = same && CUBE_POSITIONS[q[j] as usize].to_bits()[k] == c;
+                j += 1;
+            }
+            if same {
+                normal[k] = c;
+            }
+            k += 1;
+        }
+        let mut j = 0;
+        while j < 4 {
+            let v = 4 * f + j;
+            p[v] = CUBE_POSITIONS[q[j] as usize];
+            t[v] = [
+                Scalar::from_bits(uv[j][0] << 16),
+                Scalar::from_bits(uv[j][1] << 16),
+            ];
+            n[v] = Vec3::from_bits(normal[0], normal[1], normal[2]);
+            j += 1;
+        }
+        let b = 4 * f as u16;
+        tri[2 * f] = [b, b + 1, b + 2];
+        tri[2 * f + 1] = [b, b + 2, b + 3];
+        f += 1;
+    }
+    (p, t, n, tri)
+}
+
+const TEXTURED_CUBE_DATA: ([Vec3; 24], [Uv; 24], [Vec3; 24], [Triangle; 12]) = textured_cube();
+static TEXTURED_CUBE_POSITIONS: [Vec3; 24] = TEXTURED_CUBE_DATA.0;
+static TEXTURED_CUBE_UVS: [Uv; 24] = TEXTURED_CUBE_DATA.1;
+static TEXTURED_CUBE_NORMALS: [Vec3; 24] = TEXTURED_CUBE_DATA.2;
+static TEXTURED_CUBE_TRIANGLES: [Triangle; 12] = TEXTURED_CUBE_DATA.3;
+
+/// [`CUBE`] with a whole image on each face: 24 vertices (four a face, each with the face's
+/// UV corner and normal), 12 triangles. Face normals as vertex normals: Gouraud shades it
+/// flat.
+pub static TEXTURED_CUBE: Mesh<'static> = checked(
+    match Mesh::new(&TEXTURED_CUBE_POSITIONS, &TEXTURED_CUBE_TRIANGLES) {
+        Ok(m) => match m.with_uvs(&TEXTURED_CUBE_UVS) {
+            Ok(m) => m.with_normals(&TEXTURED_CUBE_NORMALS),
+            Err(e) => Err(e),
+        },
+        Err(e) => Err(e),
+    },
+);
 
 static TETRA_POSITIONS: [Vec3; 4] = [v(1, 1, 1), v(1, -1, -1), v(-1, 1, -1), v(-1, -1, 1)];
 static TETRA_TRIANGLES: [Triangle; 4] = [[1, 3, 2], [0, 2, 3], [0, 3, 1], [0, 1, 2]];
@@ -248,18 +325,78 @@ pub fn torus<'a>(
     if ring < 3 || tube < 3 {
         return Err(ShapeError::Resolution);
     }
-    let store = Storage::new(torus_counts(ring, tube), positions, normals, triangles)?;
+    let counts = torus_counts(ring, tube);
+    let store = Storage::new(counts, positions, normals, triangles)?;
+    torus_grid((major, minor), (ring, tube), false, store, &mut [])?.into_mesh()
+}
+
+/// Vertices and triangles of a [`textured_torus`]: a seam's vertices twice.
+#[must_use]
+pub const fn textured_torus_counts(ring: u16, tube: u16) -> (usize, usize) {
+    let n = (ring as usize + 1) * (tube as usize + 1);
+    (n, 2 * ring as usize * tube as usize)
+}
+
+/// [`torus`] with UVs: `u` from 0 to 1 around the axis, `v` from 0 to 1 around the tube,
+/// the seams' vertices doubled (their UVs differ): vertex `i·(tube + 1) + j` for `i` in
+/// `0..=ring` and `j` in `0..=tube`.
+///
+/// ```
+/// use fixed3d::math::{Scalar, Vec3};
+/// use fixed3d::mesh::{textured_torus, textured_torus_counts};
+/// assert_eq!(textured_torus_counts(8, 4), (45, 64));
+/// let (mut p, mut n, mut uv, mut t) =
+///     ([Vec3::ZERO; 45], [Vec3::ZERO; 45], [[Scalar::ZERO; 2]; 45], [[0u16; 3]; 64]);
+/// let (one, minor) = (Scalar::ONE, Scalar::from_num(0.4));
+/// let mesh = textured_torus(one, minor, 8, 4, &mut p, &mut n, &mut uv, &mut t).unwrap();
+/// assert_eq!(mesh.uvs().unwrap()[44], [one, one]);
+/// assert_eq!(mesh.positions()[44], mesh.positions()[0]);
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn textured_torus<'a>(
+    major: Scalar,
+    minor: Scalar,
+    ring: u16,
+    tube: u16,
+    positions: &'a mut [Vec3],
+    normals: &'a mut [Vec3],
+    uvs: &'a mut [Uv],
+    triangles: &'a mut [Triangle],
+) -> Result<Mesh<'a>, ShapeError> {
+    if ring < 3 || tube < 3 {
+        return Err(ShapeError::Resolution);
+    }
+    let counts = textured_torus_counts(ring, tube);
+    let store = Storage::new(counts, positions, normals, triangles)?;
+    let uvs = uvs.get_mut(..counts.0).ok_or(store.too_small)?;
+    let store = torus_grid((major, minor), (ring, tube), true, store, uvs)?;
+    let too_small = store.too_small;
+    store
+        .into_mesh()
+        .and_then(|m| m.with_uvs(uvs).map_err(|_| too_small))
+}
+
+/// Fills a torus's storage (and its UVs, where `uvs` holds one per vertex): a grid of
+/// `ring × tube` vertices wrapped round, or with `seam` one more each way, the last row and
+/// column at the first's positions.
+fn torus_grid<'a>(
+    (major, minor): (Scalar, Scalar),
+    (ring, tube): (u16, u16),
+    seam: bool,
+    store: Storage<'a>,
+    uvs: &mut [Uv],
+) -> Result<Storage<'a>, ShapeError> {
     let (pos, nor, tri) = (
         &mut *store.positions,
         &mut *store.normals,
         &mut *store.triangles,
     );
     let (big, small) = (major.to_bits() as i64, minor.to_bits() as i64);
-    let tube_n = tube as usize;
+    let (rows, columns) = (ring as usize + seam as usize, tube as usize + seam as usize);
     for (k, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
-        let (i, j) = ((k / tube_n) as u32, (k % tube_n) as u32);
-        let u = Angle::turn_fraction(i, ring as u32);
-        let w = Angle::turn_fraction(j, tube as u32);
+        let (i, j) = ((k / columns) as u32, (k % columns) as u32);
+        let u = Angle::turn_fraction(i % ring as u32, ring as u32);
+        let w = Angle::turn_fraction(j % tube as u32, tube as u32);
         let (cu, su, cw, sw) = (u.cos_bits(), u.sin_bits(), w.cos_bits(), w.sin_bits());
         let reach = big + mul_unit(small, cw);
         *p = Vec3::from_bits(
@@ -269,8 +406,19 @@ pub fn torus<'a>(
         );
         let q = |a: i32, b: i32| sat(shr_round(shr_round(a as i64 * b as i64, 30), 14));
         *n = Vec3::from_bits(q(cw, cu), sat(shr_round(sw as i64, 14)), q(cw, su));
+        if let Some(uv) = uvs.get_mut(k) {
+            let fraction = |a: u32, b: u16| Scalar::from_bits(((a << 16) / u32::from(b)) as i32);
+            *uv = [fraction(i, ring), fraction(j, tube)];
+        }
     }
-    let idx = |i: usize, j: usize| ((i % ring as usize) * tube_n + (j % tube_n)) as u16;
+    let idx = |i: usize, j: usize| {
+        if seam {
+            (i * columns + j) as u16
+        } else {
+            ((i % rows) * columns + (j % columns)) as u16
+        }
+    };
+    let tube_n = tube as usize;
     for (k, pair) in tri.chunks_exact_mut(2).enumerate() {
         let (i, j) = (k / tube_n, k % tube_n);
         let (p00, p01, p10, p11) = (idx(i, j), idx(i, j + 1), idx(i + 1, j), idx(i + 1, j + 1));
@@ -279,7 +427,7 @@ pub fn torus<'a>(
             *b = [p00, p11, p10];
         }
     }
-    store.into_mesh()
+    Ok(store)
 }
 
 /// A UV sphere of `radius` around the origin, poles on the Y axis, with unit normals,

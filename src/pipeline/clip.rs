@@ -11,12 +11,26 @@ use heapless::Vec;
 use super::vertex::{distance, inside, reduce, reduce_pair, ScreenMap, PLANES};
 use crate::math::{div_round, magnitude_bits, shr_round};
 
-/// A vertex during clipping: raw Q16.16 clip coordinates and a colour (Gouraud), channels
-/// `0..=255 << 8`.
+/// A vertex during clipping: raw Q16.16 clip coordinates and what is interpolated with them:
+/// a colour (Gouraud), channels `0..=255 << 8`, then a UV (textures, raw Q16.16).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) struct ClipVertex {
     pub(crate) c: [i64; 4],
-    pub(crate) rgb: [i32; 3],
+    pub(crate) varying: [i32; 5],
+}
+
+impl ClipVertex {
+    /// The colour.
+    pub(crate) fn rgb(&self) -> [i32; 3] {
+        let [r, g, b, _, _] = self.varying;
+        [r, g, b]
+    }
+
+    /// The UV.
+    pub(crate) fn uv(&self) -> [i32; 2] {
+        let [_, _, _, u, v] = self.varying;
+        [u, v]
+    }
 }
 
 /// A clipped polygon: 3 vertices plus at most one per plane.
@@ -49,11 +63,12 @@ fn intersect(a: &ClipVertex, b: &ClipVertex, k: u32, m: &ScreenMap) -> ClipVerte
     for ((out, p), q) in c.iter_mut().zip(rl.iter()).zip(rh.iter()) {
         *out = lerp(*p, *q) << shift;
     }
-    let mut rgb = [0i32; 3];
-    for ((out, p), q) in rgb.iter_mut().zip(lo.rgb.iter()).zip(hi.rgb.iter()) {
-        *out = lerp(*p as i64, *q as i64) as i32;
+    let mut varying = [0i32; 5];
+    for ((out, p), q) in varying.iter_mut().zip(lo.varying).zip(hi.varying) {
+        // Between p and q: an i32.
+        *out = lerp(p as i64, q as i64) as i32;
     }
-    ClipVertex { c, rgb }
+    ClipVertex { c, varying }
 }
 
 /// Clips a triangle against the planes in `planes` (outcode bits); an empty polygon when

@@ -16,10 +16,22 @@ use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
 use crate::mesh::{FaceNormal, Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::Lighting;
-use crate::shade::{FaceInputs, Flat, Paint, Shading};
+use crate::shade::{FaceInputs, Paint, Shading};
 
-/// The vertex colours handed to shadings that do not interpolate them.
-const NO_COLORS: [[i32; 3]; 3] = [[0; 3]; 3];
+/// What a triangle's vertices carry to its shading: lit colours (per-vertex shading) and UVs
+/// (textured shading).
+#[derive(Clone, Copy, Debug, Default)]
+struct Varyings {
+    rgb: [[i32; 3]; 3],
+    uv: [[i32; 2]; 3],
+}
+
+/// The varyings handed to shadings that read none: one array of zeros, which no triangle
+/// stores.
+const NO_VARYINGS: Varyings = Varyings {
+    rgb: [[0; 3]; 3],
+    uv: [[0; 2]; 3],
+};
 
 /// Doubled signed area, y down: negative for front faces.
 #[inline]
@@ -143,6 +155,14 @@ impl<const N: usize> ObjectSetup<'_, N> {
         }
     }
 
+    /// The UV of vertex `index`, raw Q16.16 (zero where the mesh has none).
+    #[inline(always)]
+    fn uv(&self, index: u16) -> [i32; 2] {
+        let uvs = self.object.mesh.uvs().unwrap_or(&[]);
+        uvs.get(index as usize)
+            .map_or([0; 2], |[u, v]| [u.to_bits(), v.to_bits()])
+    }
+
     fn clip_from_model(&self) -> Mat4 {
         if let Some(m) = self.clip_from_model.get() {
             return m;
@@ -171,7 +191,11 @@ impl<const N: usize> ObjectSetup<'_, N> {
             c: self
                 .clip_from_model()
                 .transform_within(p.to_bits(), self.object.mesh.extent()),
-            rgb: rgb.map(|c| (c as i32) << 8),
+            varying: {
+                let [r, g, b] = rgb.map(|c| (c as i32) << 8);
+                let [u, v] = self.uv(index);
+                [r, g, b, u, v]
+            },
         }
     }
 }
@@ -312,22 +336,28 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             }
             // Written out: at the firmware's opt-level "s" `array::map` stays a loop.
             let v = [(a.point(), a.z), (b.point(), b.z), (c.point(), c.z)];
-            // Vertex colours matter only to per-vertex shading: the others share one array of
-            // zeros, which no triangle stores.
-            let lit;
-            let colors = if S::PER_VERTEX {
+            // Vertex colours matter only to per-vertex shading, UVs to textures.
+            let carried;
+            let varyings = if S::PER_VERTEX || S::TEXTURED {
                 let rgb = |v: &ScreenVertex| map3(v.rgb, |c| (c as i32) << 8);
-                lit = [rgb(a), rgb(b), rgb(c)];
-                &lit
+                let mut both = NO_VARYINGS;
+                if S::PER_VERTEX {
+                    both.rgb = [rgb(a), rgb(b), rgb(c)];
+                }
+                if S::TEXTURED {
+                    both.uv = tri.map(|i| setup.uv(i));
+                }
+                carried = both;
+                &carried
             } else {
-                &NO_COLORS
+                &NO_VARYINGS
             };
             self.fill_face(
                 target,
                 setup,
                 (Self::face_normal(setup, k), tri),
                 &v,
-                colors,
+                varyings,
                 area,
                 stats,
             )?;
@@ -499,9 +529,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 let v = [(first.0, first.1), (v1.0, v1.1), (v2.0, v2.1)];
                 let area = area2(&[v[0].0, v[1].0, v[2].0]);
                 if kept(facing, area, stats) {
-                    let colors = [first.2, v1.2, v2.2];
+                    let varyings = Varyings {
+                        rgb: [first.2, v1.2, v2.2],
+                        uv: [first.3, v1.3, v2.3],
+                    };
                     let face = (Self::face_normal(setup, k), tri);
-                    self.fill_face(target, setup, face, &v, &colors, area, stats)?;
+                    self.fill_face(target, setup, face, &v, &varyings, area, stats)?;
                 }
             }
         }
@@ -509,8 +542,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     }
 
     /// Shades and fills one screen triangle of `tri` (the whole triangle, or a piece of it after
-    /// clipping), which culling kept: vertices are (snapped position, depth), `colors` their
-    /// lit colours (Gouraud), `area` its doubled signed area.
+    /// clipping), which culling kept: vertices are (snapped position, depth), `varyings`
+    /// their lit colours and UVs, `area` its doubled signed area.
     // Not inlined: one call per triangle costs little and keeps the stage measurable.
     #[inline(never)]
     #[allow(clippy::too_many_arguments)]
@@ -520,7 +553,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         setup: &ObjectSetup<'_, N>,
         (kept, tri): (Option<&FaceNormal>, &Triangle),
         v: &[(ScreenPoint, i32); 3],
-        colors: &[[i32; 3]; 3],
+        varyings: &Varyings,
         area: i64,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
@@ -545,7 +578,16 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             vertices: v,
             // Read by per-vertex shading only: for the others the argument is dead, and the
             // compiler drops it from the call.
-            colors: if S::PER_VERTEX { colors } else { &NO_COLORS },
+            colors: if S::PER_VERTEX {
+                &varyings.rgb
+            } else {
+                &NO_VARYINGS.rgb
+            },
+            uvs: if S::TEXTURED {
+                &varyings.uv
+            } else {
+                &NO_VARYINGS.uv
+            },
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
         };
@@ -554,7 +596,14 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             let paint = self.shading.paint(&face, lighting);
             fill(target, p, z, area, &paint, stats)
         } else {
-            fill(target, p, z, area, &Flat.paint(&face, lighting), stats)
+            fill(
+                target,
+                p,
+                z,
+                area,
+                &self.shading.fallback(&face, lighting),
+                stats,
+            )
         }
     }
 
@@ -743,7 +792,7 @@ where
     }
 }
 
-type Projected = heapless::Vec<(ScreenPoint, i32, [i32; 3]), 9>;
+type Projected = heapless::Vec<(ScreenPoint, i32, [i32; 3], [i32; 2]), 9>;
 
 /// Projects a clipped polygon; `None` if it is empty or a vertex has w ≤ 0.
 fn project_polygon(poly: &Polygon, map: &ScreenMap) -> Option<Projected> {
@@ -753,7 +802,7 @@ fn project_polygon(poly: &Polygon, map: &ScreenMap) -> Option<Projected> {
     let mut out = Projected::new();
     for v in poly {
         let (p, z) = project(v.c, map)?;
-        let _ = out.push((p, z, v.rgb));
+        let _ = out.push((p, z, v.rgb(), v.uv()));
     }
     Some(out)
 }

@@ -10,11 +10,13 @@
 
 mod lambert;
 mod paint;
+mod texture;
 
 pub(crate) use lambert::{flat_color, kept_face_color, lambert, vertex_normal};
 pub use paint::{
     Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
 };
+pub use texture::{TextureCursor, TexturePaint};
 
 use embedded_graphics::pixelcolor::Rgb888;
 
@@ -22,6 +24,7 @@ use crate::math::{map3, Normalize, Vec3};
 use crate::mesh::{FaceNormal, Triangle};
 use crate::raster::ScreenPoint;
 use crate::scene::Lighting;
+use crate::texture::Texture;
 
 mod sealed {
     pub trait Sealed {}
@@ -51,6 +54,8 @@ pub struct FaceInputs<'a> {
     pub(crate) vertices: &'a [(ScreenPoint, i32); 3],
     /// Per vertex: lit colour (Gouraud; zeros for other shadings).
     pub(crate) colors: &'a [[i32; 3]; 3],
+    /// Per vertex: UV, raw Q16.16 (textured shadings; zeros for the others).
+    pub(crate) uvs: &'a [[i32; 2]; 3],
     /// For perspective projections, the value `1/w` is proportional to after subtracting the
     /// depth (Q1.30).
     pub(crate) inverse_w_offset: Option<i64>,
@@ -98,8 +103,20 @@ pub trait Shading: Copy + sealed::Sealed + core::fmt::Debug {
     /// True when faces are lit from the face normals a mesh keeps, where it keeps them.
     #[doc(hidden)]
     const KEPT_FACE_NORMALS: bool = false;
+    /// True when the triangles read their vertices' UVs.
+    #[doc(hidden)]
+    const TEXTURED: bool = false;
     #[doc(hidden)]
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> Self::Paint;
+    /// The paint of a mesh without vertex normals, lit flat (per-vertex shadings only).
+    #[doc(hidden)]
+    type Fallback: Paint;
+    #[doc(hidden)]
+    fn fallback<const N: usize>(
+        &self,
+        face: &FaceInputs<'_>,
+        lighting: &Lighting<N>,
+    ) -> Self::Fallback;
 }
 
 /// The object's colour, no lighting: the smallest code (wireframes, flat-coloured scenes).
@@ -176,6 +193,53 @@ pub struct Gouraud;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct PerspectiveGouraud;
 
+/// A texture lit by the shading `L` ([`Unlit`], [`Flat`] or [`Gouraud`]), each texel's
+/// channels scaled by the light's (`L` lights a white surface: under a white ambient light of
+/// 1 the texel shows as it is). UVs come from the mesh ([`Mesh::with_uvs`]); a mesh without
+/// them reads the texel at UV (0, 0) everywhere.
+///
+/// [`Mesh::with_uvs`]: crate::mesh::Mesh::with_uvs
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Textured<'t, L> {
+    /// The texture.
+    pub texture: &'t Texture<'t>,
+    /// The lighting.
+    pub light: L,
+}
+
+impl<L: Shading> Textured<'_, L> {
+    /// `1/w` weights of the face's vertices for a perspective projection.
+    fn weights(face: &FaceInputs<'_>) -> Option<[i64; 3]> {
+        face.inverse_w_offset
+            .map(|offset| map3(*face.vertices, |v| offset.saturating_sub(v.1 as i64)))
+    }
+}
+
+impl<L> sealed::Sealed for Textured<'_, L> {}
+
+impl<'t, L: Shading> Shading for Textured<'t, L> {
+    type Paint = TexturePaint<'t, L::Paint>;
+    type Fallback = TexturePaint<'t, L::Fallback>;
+    const PER_VERTEX: bool = L::PER_VERTEX;
+    const FACE_LIGHTING: bool = L::FACE_LIGHTING;
+    const KEPT_FACE_NORMALS: bool = L::KEPT_FACE_NORMALS;
+    const TEXTURED: bool = true;
+    fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> Self::Paint {
+        let light = self.light.paint(face, lighting);
+        let q = Self::weights(face);
+        TexturePaint::new(self.texture, &face.screen(), face.uvs, q, face.area2, light)
+    }
+    fn fallback<const N: usize>(
+        &self,
+        face: &FaceInputs<'_>,
+        lighting: &Lighting<N>,
+    ) -> Self::Fallback {
+        let light = self.light.fallback(face, lighting);
+        let q = Self::weights(face);
+        TexturePaint::new(self.texture, &face.screen(), face.uvs, q, face.area2, light)
+    }
+}
+
 impl sealed::Sealed for Unlit {}
 impl sealed::Sealed for Flat {}
 impl sealed::Sealed for Gouraud {}
@@ -183,6 +247,10 @@ impl sealed::Sealed for PerspectiveGouraud {}
 
 impl Shading for Unlit {
     type Paint = SolidPaint;
+    type Fallback = SolidPaint;
+    fn fallback<const N: usize>(&self, face: &FaceInputs<'_>, l: &Lighting<N>) -> SolidPaint {
+        self.paint(face, l)
+    }
     const PER_VERTEX: bool = false;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> SolidPaint {
         SolidPaint(face.base)
@@ -191,6 +259,10 @@ impl Shading for Unlit {
 
 impl Shading for Flat {
     type Paint = SolidPaint;
+    type Fallback = SolidPaint;
+    fn fallback<const N: usize>(&self, face: &FaceInputs<'_>, l: &Lighting<N>) -> SolidPaint {
+        self.paint(face, l)
+    }
     const PER_VERTEX: bool = false;
     const FACE_LIGHTING: bool = true;
     const KEPT_FACE_NORMALS: bool = true;
@@ -213,6 +285,10 @@ impl Shading for Flat {
 
 impl Shading for Gouraud {
     type Paint = SmoothPaint;
+    type Fallback = SolidPaint;
+    fn fallback<const N: usize>(&self, face: &FaceInputs<'_>, l: &Lighting<N>) -> SolidPaint {
+        Flat.paint(face, l)
+    }
     const PER_VERTEX: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> SmoothPaint {
         SmoothPaint::new(&face.screen(), face.vertex_rgb(), face.area2)
@@ -221,6 +297,10 @@ impl Shading for Gouraud {
 
 impl Shading for PerspectiveGouraud {
     type Paint = PerspectivePaint;
+    type Fallback = SolidPaint;
+    fn fallback<const N: usize>(&self, face: &FaceInputs<'_>, l: &Lighting<N>) -> SolidPaint {
+        Flat.paint(face, l)
+    }
     const PER_VERTEX: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> PerspectivePaint {
         let q = match face.inverse_w_offset {

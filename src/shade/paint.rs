@@ -5,7 +5,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::pixelcolor::RgbColor;
 
 use crate::math::{magnitude_bits, DivideBy};
-use crate::raster::{Plane, ScreenPoint};
+use crate::raster::{Plane, ScreenPoint, Span};
 
 /// A source of colours along a span, started at its first pixel.
 pub trait Paint: core::fmt::Debug {
@@ -13,8 +13,8 @@ pub trait Paint: core::fmt::Debug {
     type Cursor: Iterator<Item = Rgb888>;
     /// `Some` when the colour is the same at every pixel (spans can then be filled at once).
     fn solid(&self) -> Option<Rgb888>;
-    /// The colours from pixel `(x, y)` rightwards.
-    fn cursor(&self, x: i32, y: i32) -> Self::Cursor;
+    /// The colours of `span`'s pixels, left to right.
+    fn cursor(&self, span: Span) -> Self::Cursor;
 }
 
 /// One colour for the whole triangle.
@@ -28,7 +28,7 @@ impl Paint for SolidPaint {
         Some(self.0)
     }
     #[inline]
-    fn cursor(&self, _: i32, _: i32) -> Self::Cursor {
+    fn cursor(&self, _: Span) -> Self::Cursor {
         core::iter::repeat(self.0)
     }
 }
@@ -142,7 +142,8 @@ impl Paint for SmoothPaint {
         None
     }
     #[inline(always)]
-    fn cursor(&self, x: i32, y: i32) -> SmoothCursor {
+    fn cursor(&self, span: Span) -> SmoothCursor {
+        let (x, y) = (span.x0, span.y);
         let at = |k: usize| {
             self.origin[k]
                 .wrapping_add(self.along[k].wrapping_mul(x as i64))
@@ -238,7 +239,8 @@ impl Paint for PerspectivePaint {
     fn solid(&self) -> Option<Rgb888> {
         None
     }
-    fn cursor(&self, x: i32, y: i32) -> PerspectiveCursor {
+    fn cursor(&self, span: Span) -> PerspectiveCursor {
+        let (x, y) = (span.x0, span.y);
         PerspectiveCursor {
             acc: self.planes.map(|p| p.at(x, y)),
             step: self.planes.map(|p| p.step_x()),
@@ -273,7 +275,11 @@ mod tests {
             };
             let paint = SmoothPaint::new(&p, rgb, area);
             let y = 1;
-            let mut cursor = paint.cursor(0, y);
+            let mut cursor = paint.cursor(Span {
+                y,
+                x0: 0,
+                x1: width,
+            });
             for x in 0..width - 2 {
                 let c = cursor.next().unwrap_or_default();
                 // Exact barycentric plane at the pixel centre.
