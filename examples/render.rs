@@ -16,10 +16,16 @@
 //!   --color R,G,B                    object colour 0-255 (default 255,160,64)
 //!   --ambient A                      ambient intensity 0-1 (default 0.2)
 //!   --light X,Y,Z[,I]                direction towards a directional light and its intensity
-//!                                    (default one light (-1,1,1) at 0.8); repeat for more lights
+//!                                    (default one light (-1,1,1) at 0.8, unless --ambient is
+//!                                    given); repeat for more lights
 //!   --bg R,G,B                       background (default 0,0,0)
 //!   --no-cull  --no-depth
 //!   --bands ROWS                     render in horizontal bands of ROWS rows (same image)
+//!   --texture PATH                   PNG mapped through the OBJ's `vt` (without it, the
+//!                                    `map_Kd` of the OBJ's `mtllib`, if any), lit by --mode
+//!   --filter nearest|bilinear        texture sampling (default nearest)
+//!   --wrap repeat|clamp              outside UVs [0, 1) (default repeat)
+//!   --affine                         map UVs linearly on screen (default perspective-correct)
 //! ```
 //!
 //! Prints `rendered WxH in T us: covered N pixels, drew K of M triangles`. Exit status 0 on
@@ -34,10 +40,12 @@ use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::projection::{Projection, ProjectionError, Viewport};
 use fixed3d::scene::LightColor;
+use fixed3d::texture::{Filter, Mapping, Texels, Texture, Wrap};
 
 const USAGE: &str = "usage: render [--obj PATH | --shape cube|tetrahedron|octahedron|sphere|torus] [--out PATH] \
 [--size WxH] [--mode wire|flat|gouraud] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z] [--fov DEG] [--near N] [--far F] \
-[--color R,G,B] [--ambient A] [--light X,Y,Z[,I]]... [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS]";
+[--color R,G,B] [--ambient A] [--light X,Y,Z[,I]]... [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS] \
+[--texture PATH] [--filter nearest|bilinear] [--wrap repeat|clamp] [--affine]";
 
 /// Where the PNG goes without `--out`: under the checkout's `target/`, never beside the sources.
 const DEFAULT_OUT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/target/render/frame.png");
@@ -69,6 +77,10 @@ struct Options {
     cull: bool,
     depth: bool,
     bands: u32,
+    texture: Option<String>,
+    filter: Filter,
+    wrap: Wrap,
+    mapping: Mapping,
 }
 
 enum Source {
@@ -141,6 +153,10 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
         cull: true,
         depth: true,
         bands: 0,
+        texture: None,
+        filter: Filter::Nearest,
+        wrap: Wrap::Repeat,
+        mapping: Mapping::Perspective,
     };
     let mut it = args.iter();
     while let Some(flag) = it.next() {
@@ -232,6 +248,32 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
                     .push((dir, LightColor::gray(scalar(i, "--light")?)));
             }
             "--bg" => o.background = rgb(&value()?, "--bg")?,
+            "--texture" => o.texture = Some(value()?),
+            "--filter" => {
+                let v = value()?;
+                o.filter = match v.as_str() {
+                    "nearest" => Filter::Nearest,
+                    "bilinear" => Filter::Bilinear,
+                    _ => {
+                        return Err(Failure::Usage(format!(
+                            "--filter is nearest or bilinear, got {v:?}"
+                        )))
+                    }
+                };
+            }
+            "--wrap" => {
+                let v = value()?;
+                o.wrap = match v.as_str() {
+                    "repeat" => Wrap::Repeat,
+                    "clamp" => Wrap::Clamp,
+                    _ => {
+                        return Err(Failure::Usage(format!(
+                            "--wrap is repeat or clamp, got {v:?}"
+                        )))
+                    }
+                };
+            }
+            "--affine" => o.mapping = Mapping::Affine,
             "--no-cull" => o.cull = false,
             "--no-depth" => o.depth = false,
             "--bands" => {
@@ -251,7 +293,9 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
             "give a mesh with --obj PATH or --shape NAME".into(),
         ));
     }
-    if o.lights.is_empty() {
+    // The default light joins the default ambient light only: `--ambient A` alone lights by
+    // A alone (`--ambient 1` shows a texture's texels as they are).
+    if o.lights.is_empty() && !args.iter().any(|a| a == "--ambient") {
         o.lights = desktop::default_lights();
     }
     Ok(o)
@@ -366,6 +410,30 @@ fn run(args: &[String]) -> Result<String, Failure> {
             })?
         }
     };
+    // The texture: --texture, else the OBJ's own; its texels live as long as the tool.
+    let texture_path =
+        o.texture
+            .clone()
+            .map(std::path::PathBuf::from)
+            .or_else(|| match &o.source {
+                Some(Source::Obj(path)) => desktop::obj_texture_path(path),
+                _ => None,
+            });
+    let texture = match texture_path {
+        Some(path) => {
+            let (texels, tw, th) =
+                desktop::load_texels(&path.to_string_lossy()).map_err(Failure::Input)?;
+            let texels: &'static [Rgb888] = Vec::leak(texels);
+            let t = Texture::new(Texels::Rgb888(texels), tw, th)
+                .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+            Some(
+                t.with_filter(o.filter)
+                    .with_wrap(o.wrap)
+                    .with_mapping(o.mapping),
+            )
+        }
+        None => None,
+    };
     let frame_view = View {
         width: w,
         height: h,
@@ -378,6 +446,7 @@ fn run(args: &[String]) -> Result<String, Failure> {
         cull: o.cull,
         depth: o.depth,
         bands: o.bands,
+        texture,
     };
     let r = render(&objects, &frame_view).map_err(Failure::Input)?;
     if o.out == DEFAULT_OUT {

@@ -215,6 +215,7 @@ impl App {
             cull: self.cull,
             depth: self.depth,
             bands: 0,
+            texture: None,
         })
     }
 

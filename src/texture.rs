@@ -148,7 +148,7 @@ pub enum Filter {
 pub enum Mapping {
     /// As the f64 reference does, through `1/w`: exact at the ends of every run of
     /// [`RUN`] pixels along a span, linear between them. A triangle whose `1/w` varies so
-    /// little that a linear map errs by under 1/16 texel anywhere in it is mapped linearly
+    /// little that a linear map errs by under 1/8 texel anywhere in it is mapped linearly
     /// (no division per span), as are all under an orthographic projection.
     #[default]
     Perspective,

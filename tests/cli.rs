@@ -1,8 +1,12 @@
 //! The render tool's command-line contract: the output line, exit status 0, 1 and 2, and no
 //! panic whatever it is given.
 
+mod common;
+
 use std::path::PathBuf;
 use std::process::{Command, Output};
+
+use common::floor;
 
 /// The render example, built by `cargo test` next to the test binaries (built here if missing).
 fn tool() -> PathBuf {
@@ -330,4 +334,65 @@ fn the_default_output_lies_under_target() {
     assert_eq!(std::fs::read_dir(&cwd).unwrap().count(), 0);
     let png = concat!(env!("CARGO_MANIFEST_DIR"), "/target/render/frame.png");
     assert!(std::fs::metadata(png).unwrap().len() > 0);
+}
+
+/// The textured receding floor from an OBJ file with `vt` (its corners' UVs split at a seam)
+/// and a PNG texture named by the file's `mtllib` and `map_Kd`, under `--ambient 1`: every
+/// pixel the exact f64 map puts clearly inside a texel shows that texel; `--texture` gives the
+/// same image, and `--affine` does not.
+#[test]
+fn render_tool_draws_the_textured_floor_texel_for_texel() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("textured_floor");
+    std::fs::create_dir_all(&dir).unwrap();
+    let texels = floor::texels();
+    let png = dir.join("checker.png");
+    common::golden::write_png(&png, 64, 64, &texels);
+    std::fs::write(dir.join("floor.mtl"), "newmtl floor\nmap_Kd checker.png\n").unwrap();
+    // The floor of tests/texture.rs with a seam along its diagonal: the first face's UVs are
+    // the second's moved by a whole repeat, so its two shared corners are split in two.
+    let obj = "mtllib floor.mtl\nv -20 0 4\nv 20 0 4\nv 20 0 -60\nv -20 0 -60\n\
+               vt 0 0\nvt 10 16\nvt 0 16\nvt 1 0\nvt 11 0\nvt 11 16\n\
+               usemtl floor\nf 1/4 2/5 3/6\nf 1/1 3/2 4/3\n";
+    let obj_path = dir.join("floor.obj");
+    std::fs::write(&obj_path, obj).unwrap();
+    let [ex, ey, ez] = floor::EYE;
+    let [tx, ty, tz] = floor::TARGET;
+    let (eye, target) = (format!("{ex},{ey},{ez}"), format!("{tx},{ty},{tz}"));
+    let render = |name: &str, extra: &[&str]| {
+        let out = dir.join(name).to_string_lossy().into_owned();
+        let mut args = vec![
+            "--obj",
+            obj_path.to_str().unwrap(),
+            "--eye",
+            &eye,
+            "--target",
+            &target,
+            "--fov",
+            "60",
+            "--near",
+            "0.5",
+            "--far",
+            "100",
+            "--ambient",
+            "1",
+            "--out",
+            &out,
+        ];
+        args.extend_from_slice(extra);
+        let o = run(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        common::golden::read_png(std::path::Path::new(&out))
+            .unwrap()
+            .2
+    };
+    let pixels = render("mtl.png", &[]);
+    let (compared, differ) = floor::compare_with_reference(&pixels, &texels);
+    assert!(compared > 15_000, "{compared} pixels compared");
+    assert_eq!(
+        differ, 0,
+        "{differ} of {compared} pixels show another texel"
+    );
+    assert!(render("flag.png", &["--texture", png.to_str().unwrap()]) == pixels);
+    let affine = render("affine.png", &["--affine"]);
+    assert!(floor::compare_with_reference(&affine, &texels).1 > 5_000);
 }

@@ -72,6 +72,18 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     let gouraud_hash = framed(&mut |f, c, fb, d| {
         gouraud(&mesh, f, c, fb, d);
     });
+    let (mut tp, mut tn, mut tuv, mut tt) = (
+        vec![Vec3::ZERO; TEXTURED_VERTICES],
+        vec![Vec3::ZERO; TEXTURED_VERTICES],
+        vec![[fixed3d::math::Scalar::ZERO; 2]; TEXTURED_VERTICES],
+        vec![[0u16; 3]; TORUS_TRIANGLES],
+    );
+    let textured_torus = textured_torus_mesh(&mut tp, &mut tn, &mut tuv, &mut tt);
+    let mut texture_cache = vec![ScreenVertex::DEFAULT; TEXTURED_VERTICES];
+    let mut textured_frame = |f: u32, fb: &mut [Rgb565], d: &mut [u16]| {
+        textured(&textured_torus, f, &mut texture_cache, fb, d);
+    };
+    let textured_hash = framed(&mut |f, _, fb, d| textured_frame(f, fb, d));
     let flat_hash = framed(&mut |f, c, fb, _| {
         flat(f, c, fb);
     });
@@ -200,6 +212,7 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         ("flat", flat_hash),
         ("full", full_hash),
         ("gouraud", gouraud_hash),
+        ("textured", textured_hash),
         ("bands", bands_hash),
         ("obj", obj_hash),
         ("display", display_chain),

@@ -24,6 +24,7 @@ fn view(mode: Mode, look: LookAt, projection: Projection, w: u32, h: u32) -> Vie
         cull: true,
         depth: true,
         bands: 0,
+        texture: None,
     }
 }
 

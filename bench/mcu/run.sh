@@ -38,7 +38,7 @@ if [[ $BOARD == microbit ]]; then
     features=(--no-default-features --features board-microbit)
 else
     TARGETS=${TARGETS:-"thumbv6m-none-eabi thumbv7em-none-eabihf"}
-    PRESETS=${PRESETS:-"wire flat full gouraud bands obj display boards"}
+    PRESETS=${PRESETS:-"wire flat full gouraud textured bands obj display boards"}
     features=()
     # NORMALS=per-frame: `full` and `bands` find each face's normal every frame instead of
     # keeping them.

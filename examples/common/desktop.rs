@@ -11,15 +11,16 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use fixed3d::buffer::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use fixed3d::camera::{Framing, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
-use fixed3d::mesh::{self, vertex_normals, Mesh, Object, Triangle};
+use fixed3d::mesh::{self, vertex_normals, Mesh, Object, Triangle, Uv};
 use fixed3d::obj::{
-    self, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, ObjStream, Placement, WideBounds,
-    NO_INDEX,
+    self, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, ObjStream, Placement, SplitBuffers,
+    WideBounds, NO_INDEX,
 };
 use fixed3d::pipeline::{Cull, Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
-use fixed3d::shade::{Flat, Gouraud, Unlit};
+use fixed3d::shade::{Flat, Gouraud, Textured, Unlit};
+use fixed3d::texture::Texture;
 
 /// Lights a desktop scene holds at most.
 pub const MAX_LIGHTS: usize = 8;
@@ -30,6 +31,9 @@ pub struct Model {
     pub name: String,
     pub positions: Vec<Vec3>,
     pub normals: Vec<Vec3>,
+    /// One per position where the file gives texture coordinates (vertices split at seams),
+    /// else none.
+    pub uvs: Vec<Uv>,
     pub triangles: Vec<Triangle>,
     pub bounds: Aabb,
     /// Set when the file was outside the Q16.16 range and had to be recentred and rescaled.
@@ -63,8 +67,10 @@ const CHUNK: usize = 1 << 16;
 /// What one streamed parse of a file kept.
 struct Parsed {
     positions: Vec<Vec3>,
+    texcoords: Vec<Uv>,
     normals: Vec<Vec3>,
     triangles: Vec<Triangle>,
+    triangle_texcoords: Vec<Triangle>,
     triangle_normals: Vec<Triangle>,
     counts: ObjCounts,
 }
@@ -95,8 +101,10 @@ fn parse_stream(mut r: impl Read, placement: Placement) -> Result<Parsed, LoadEr
     let mut stream = Box::new(ObjStream::<LINE>::new(placement));
     let mut p = Parsed {
         positions: Vec::new(),
+        texcoords: Vec::new(),
         normals: Vec::new(),
         triangles: Vec::new(),
+        triangle_texcoords: Vec::new(),
         triangle_normals: Vec::new(),
         counts: ObjCounts::EMPTY,
     };
@@ -111,15 +119,17 @@ fn parse_stream(mut r: impl Read, placement: Placement) -> Result<Parsed, LoadEr
             (c.positions + more).min(65_537),
             Vec3::ZERO,
         );
+        reserve(&mut p.texcoords, c.texcoords + more, [Scalar::ZERO; 2]);
         reserve(&mut p.normals, c.normals + more, Vec3::ZERO);
         reserve(&mut p.triangles, c.triangles + more, [0; 3]);
+        reserve(&mut p.triangle_texcoords, c.triangles + more, [0; 3]);
         reserve(&mut p.triangle_normals, c.triangles + more, [0; 3]);
         let mut out = ObjBuffers {
             positions: &mut p.positions,
-            texcoords: &mut [],
+            texcoords: &mut p.texcoords,
             normals: &mut p.normals,
             triangles: &mut p.triangles,
-            triangle_texcoords: &mut [],
+            triangle_texcoords: &mut p.triangle_texcoords,
             triangle_normals: &mut p.triangle_normals,
         };
         if n == 0 {
@@ -130,8 +140,10 @@ fn parse_stream(mut r: impl Read, placement: Placement) -> Result<Parsed, LoadEr
         stream.push(piece, &mut out).map_err(LoadError::Obj)?;
     }
     p.positions.truncate(p.counts.positions);
+    p.texcoords.truncate(p.counts.texcoords);
     p.normals.truncate(p.counts.normals);
     p.triangles.truncate(p.counts.triangles);
+    p.triangle_texcoords.truncate(p.counts.triangles);
     p.triangle_normals.truncate(p.counts.triangles);
     Ok(p)
 }
@@ -235,11 +247,43 @@ impl Model {
         };
         let Parsed {
             positions,
+            texcoords,
             normals: file_normals,
             triangles,
+            triangle_texcoords,
             triangle_normals: tri_normals,
             counts,
         } = parsed;
+        // Texture coordinates: a vertex per distinct (position, UV) of the corners.
+        let (positions, uvs, triangles) = if texcoords.is_empty() {
+            (positions, Vec::new(), triangles)
+        } else {
+            let most = 3 * triangles.len();
+            let (mut p, mut uv, mut t) = (
+                vec![Vec3::ZERO; most],
+                vec![[Scalar::ZERO; 2]; most],
+                vec![[0u16; 3]; triangles.len()],
+            );
+            let (mut first, mut next) = (vec![0u16; positions.len()], vec![0u16; most]);
+            let mut out = SplitBuffers {
+                positions: &mut p,
+                uvs: &mut uv,
+                triangles: &mut t,
+                first: &mut first,
+                next: &mut next,
+            };
+            let n = obj::split_corners(
+                &positions,
+                &triangles,
+                &texcoords,
+                &triangle_texcoords,
+                &mut out,
+            )
+            .map_err(LoadError::Obj)?;
+            p.truncate(n);
+            uv.truncate(n);
+            (p, uv, t)
+        };
         let mut normals = vec![Vec3::ZERO; positions.len()];
         let complete =
             !file_normals.is_empty() && tri_normals.iter().flatten().all(|&n| n != NO_INDEX);
@@ -259,6 +303,7 @@ impl Model {
             name: name.into(),
             positions,
             normals,
+            uvs,
             triangles,
             bounds: counts.bounds,
             rescaled,
@@ -355,6 +400,7 @@ impl Model {
             name: name.into(),
             positions,
             normals,
+            uvs: Vec::new(),
             triangles,
             bounds,
             rescaled: None,
@@ -363,9 +409,10 @@ impl Model {
 
     /// The mesh over this model's storage (indices were checked when it was built).
     pub fn mesh(&self) -> Mesh<'_> {
-        Mesh::new(&self.positions, &self.triangles)
+        let mesh = Mesh::new(&self.positions, &self.triangles)
             .and_then(|m| m.with_normals(&self.normals))
-            .unwrap_or(Mesh::EMPTY)
+            .unwrap_or(Mesh::EMPTY);
+        mesh.with_uvs(&self.uvs).unwrap_or(mesh)
     }
 }
 
@@ -428,6 +475,8 @@ pub struct View {
     pub depth: bool,
     /// Render in horizontal bands of this many rows (0: the whole frame at once).
     pub bands: u32,
+    /// The texture of every model, lit by the mode (flat or Gouraud; wireframes ignore it).
+    pub texture: Option<Texture<'static>>,
 }
 
 /// What rendering a frame produced.
@@ -491,7 +540,11 @@ pub fn render(objects: &[Placed<'_>], view: &View) -> Result<Rendered, String> {
     let scene_objects: Vec<Object<'_>> = objects
         .iter()
         .zip(&meshes)
-        .map(|(o, m)| Object::new(m, o.matrix, o.color))
+        .map(|(o, m)| {
+            // A textured surface is lit white: the light then scales its texels.
+            let textured = view.texture.is_some() && view.mode != Mode::Wire;
+            Object::new(m, o.matrix, if textured { Rgb888::WHITE } else { o.color })
+        })
         .collect();
     let mut lighting = Lighting::<MAX_LIGHTS>::new(LightColor::gray(view.ambient));
     for (dir, color) in &view.lights {
@@ -518,6 +571,26 @@ pub fn render(objects: &[Placed<'_>], view: &View) -> Result<Rendered, String> {
             prepared
                 .draw_wireframe(&mut color)
                 .map_err(|e| format!("{e:?}"))?
+        }
+        Mode::Flat | Mode::Gouraud if view.texture.is_some() => {
+            let texture = view.texture.as_ref().ok_or("no texture")?;
+            let (flat, gouraud) = (
+                Textured {
+                    texture,
+                    light: Flat,
+                },
+                Textured {
+                    texture,
+                    light: Gouraud,
+                },
+            );
+            if view.mode == Mode::Flat {
+                let p = frame.prepare(&scene, &mut cache, flat);
+                draw(&p.map_err(|e| e.to_string())?, &mut pixels, view)?
+            } else {
+                let p = frame.prepare(&scene, &mut cache, gouraud);
+                draw(&p.map_err(|e| e.to_string())?, &mut pixels, view)?
+            }
         }
         Mode::Flat => draw(
             &frame
@@ -586,6 +659,64 @@ fn draw<const N: usize, S: fixed3d::shade::Shading>(
     total.drawn =
         total.primitives - total.invalid - total.outside - total.culled - total.degenerate;
     Ok(total)
+}
+
+/// Texels read from a PNG file (any colour type the decoder expands to 8-bit RGB or RGBA,
+/// alpha dropped), row after row from the top, and the image's size.
+pub fn load_texels(path: &str) -> Result<(Vec<Rgb888>, u16, u16), String> {
+    let file = std::fs::File::open(path).map_err(|e| format!("{path}: {e}"))?;
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = decoder.read_info().map_err(|e| format!("{path}: {e}"))?;
+    let mut buf = vec![
+        0;
+        reader
+            .output_buffer_size()
+            .ok_or(format!("{path}: too large"))?
+    ];
+    let info = reader
+        .next_frame(&mut buf)
+        .map_err(|e| format!("{path}: {e}"))?;
+    let channels = info.color_type.samples();
+    let side = |v: u32| {
+        u16::try_from(v)
+            .ok()
+            .filter(|&v| v <= fixed3d::texture::MAX_SIDE)
+            .ok_or(format!(
+                "{path}: a texture is at most {} texels a side, this one is {}x{}",
+                fixed3d::texture::MAX_SIDE,
+                info.width,
+                info.height
+            ))
+    };
+    let (w, h) = (side(info.width)?, side(info.height)?);
+    let texels = buf[..info.buffer_size()]
+        .chunks_exact(channels)
+        .map(|c| match c {
+            [l] | [l, _] => Rgb888::new(*l, *l, *l),
+            [r, g, b, ..] => Rgb888::new(*r, *g, *b),
+            _ => Rgb888::BLACK,
+        })
+        .collect();
+    Ok((texels, w, h))
+}
+
+/// The texture an OBJ file names: the first `map_Kd` of the first `mtllib` file it uses,
+/// relative to the OBJ file's folder; `None` when it names none.
+pub fn obj_texture_path(obj: &str) -> Option<std::path::PathBuf> {
+    let dir = std::path::Path::new(obj).parent()?.to_path_buf();
+    let text = std::fs::read_to_string(obj).ok()?;
+    let value = |text: &str, key: &str| {
+        text.lines().find_map(|l| {
+            let l = l.trim();
+            let rest = l.strip_prefix(key)?;
+            rest.starts_with(char::is_whitespace)
+                .then(|| rest.trim().to_string())
+        })
+    };
+    let mtl = dir.join(value(&text, "mtllib")?);
+    let map = value(&std::fs::read_to_string(&mtl).ok()?, "map_Kd")?;
+    Some(mtl.parent().unwrap_or(&dir).join(map))
 }
 
 /// The default lighting of the desktop tools: one white light towards (−1, 1, 1) at 0.8.

@@ -137,14 +137,16 @@ fn scaled_weights(q: [i64; 3]) -> Option<[i64; 3]> {
     }))
 }
 
-/// True when mapping the triangle linearly errs by less than 1/16 texel anywhere in it: the
-/// perspective map's value is `Σλᵢqᵢsᵢ / Σλᵢqᵢ`, which differs from `Σλᵢsᵢ` by at most
-/// `extent · (q_max − q_min) / q_min` (texel coordinates within `extent` of vertex 0's).
+/// True when mapping the triangle linearly errs by less than 1/8 texel anywhere in it. The
+/// perspective map's value is `Σλᵢqᵢsᵢ / Q` with `Q = Σλᵢqᵢ`, the linear map's `Σλᵢsᵢ`; with
+/// vertex 0's coordinates taken as 0 (each `|sᵢ| ≤ extent`) they differ by
+/// `|Σλᵢsᵢ(qᵢ − Q)| / Q ≤ extent · Σλᵢ|qᵢ − Q| / Q`, and the mean deviation `Σλᵢ|qᵢ − Q|` of
+/// values between `q_min` and `q_max` is at most `(q_max − q_min) / 2`.
 fn nearly_affine(q: &[i64; 3], extent: i64) -> bool {
     let lo = q.iter().copied().min().unwrap_or(1).max(1);
     let hi = q.iter().copied().max().unwrap_or(1);
-    // extent < 2²⁹ (Q16.16), hi − lo ≤ 2¹⁶: the product stays below 2⁵⁰.
-    extent.saturating_mul(hi - lo).saturating_mul(16) < lo << 16
+    // extent ≤ 2²⁸ (Q16.16), hi − lo ≤ 2¹⁶: the product stays below 2⁴⁸.
+    extent.saturating_mul(hi - lo).saturating_mul(4) < lo << 16
 }
 
 /// The running texel coordinates of a [`TexturePaint`] along a span, and its light.

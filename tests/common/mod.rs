@@ -5,6 +5,7 @@
 
 #[path = "../../examples/common/exact.rs"]
 mod exact;
+pub mod floor;
 pub mod golden;
 #[path = "../../examples/common/reference.rs"]
 pub mod reference;

@@ -10,12 +10,13 @@ use embedded_graphics::Pixel;
 use fixed3d::buffer::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 use fixed3d::camera::{Camera, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
-use fixed3d::mesh::{torus, Mesh, Object, Triangle, CUBE};
+use fixed3d::mesh::{textured_torus, torus, Mesh, Object, Triangle, Uv, CUBE};
 use fixed3d::pipeline::{Bin, Cull, Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::render::{Model, Renderer};
 use fixed3d::scene::{DirectionalLight, Light, LightColor, Lighting, Scene};
-use fixed3d::shade::{Flat, Gouraud, Unlit};
+use fixed3d::shade::{Flat, Gouraud, Textured, Unlit};
+use fixed3d::texture::{Texels, Texture};
 
 /// Frames per preset (the hash chains over them).
 pub const FRAMES: u32 = 4;
@@ -505,6 +506,56 @@ pub fn gouraud(
     let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
     let scene = Scene::new(&objects, three_lights());
     depth_frame(frame(W, H)?, &scene, Gouraud, cache, color, depth)
+}
+
+/// The `textured` preset's torus: `full`'s with UVs, its seams' vertices doubled.
+pub const TEXTURED_VERTICES: usize = 49 * 25;
+
+/// The `textured` torus into the given storage.
+pub fn textured_torus_mesh<'a>(
+    p: &'a mut [Vec3],
+    n: &'a mut [Vec3],
+    uv: &'a mut [Uv],
+    t: &'a mut [Triangle],
+) -> Mesh<'a> {
+    textured_torus(Scalar::ONE, s(2, 5), 48, 24, p, n, uv, t).unwrap_or(Mesh::EMPTY)
+}
+
+/// The `textured` preset's 64x64 texture, in flash: an 8x8 checker of two colour ramps.
+pub static TEXELS: [Rgb565; 64 * 64] = checker();
+
+const fn checker() -> [Rgb565; 64 * 64] {
+    let mut t = [Rgb565::new(0, 0, 0); 64 * 64];
+    let mut i = 0;
+    while i < 64 * 64 {
+        let (x, y) = ((i % 64) as u8, (i / 64) as u8);
+        t[i] = if (x / 8 + y / 8) % 2 == 0 {
+            Rgb565::new(31, x, 31 - y / 2)
+        } else {
+            Rgb565::new(y / 2, 20, x / 2)
+        };
+        i += 1;
+    }
+    t
+}
+
+/// `textured`: the torus under `full`'s light with [`TEXELS`] on it, perspective-correct,
+/// flat Lambert, u16 depth.
+pub fn textured(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let texture = Texture::new(Texels::Rgb565(&TEXELS), 64, 64).ok()?;
+    let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
+    let scene = Scene::new(&objects, sun());
+    let shading = Textured {
+        texture: &texture,
+        light: Flat,
+    };
+    depth_frame(frame(W, H)?, &scene, shading, cache, color, depth)
 }
 
 /// `bands`: `full`'s torus drawn by the [`Renderer`] through `BAND_ROWS`-row buffers into
