@@ -22,7 +22,8 @@
 //!   --no-cull  --no-depth
 //!   --bands ROWS                     render in horizontal bands of ROWS rows (same image)
 //!   --texture PATH                   PNG mapped through the OBJ's `vt` (without it, the
-//!                                    `map_Kd` of the OBJ's `mtllib`, if any), lit by --mode
+//!                                    `map_Kd` of the OBJ's `mtllib`, if any and readable),
+//!                                    lit by --mode
 //!   --filter nearest|bilinear        texture sampling (default nearest)
 //!   --wrap repeat|clamp              outside UVs [0, 1) (default repeat)
 //!   --affine                         map UVs linearly on screen (default perspective-correct)
@@ -77,6 +78,8 @@ struct Options {
     cull: bool,
     depth: bool,
     bands: u32,
+    /// `--ambient` was given (no default directional light then).
+    ambient_given: bool,
     texture: Option<String>,
     filter: Filter,
     wrap: Wrap,
@@ -153,6 +156,7 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
         cull: true,
         depth: true,
         bands: 0,
+        ambient_given: false,
         texture: None,
         filter: Filter::Nearest,
         wrap: Wrap::Repeat,
@@ -219,6 +223,7 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
                     )));
                 }
                 o.ambient = scalar(v, "--ambient")?;
+                o.ambient_given = true;
             }
             "--light" => {
                 let n = numbers(&value()?, "--light", 3, 4)?;
@@ -250,28 +255,12 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
             "--bg" => o.background = rgb(&value()?, "--bg")?,
             "--texture" => o.texture = Some(value()?),
             "--filter" => {
-                let v = value()?;
-                o.filter = match v.as_str() {
-                    "nearest" => Filter::Nearest,
-                    "bilinear" => Filter::Bilinear,
-                    _ => {
-                        return Err(Failure::Usage(format!(
-                            "--filter is nearest or bilinear, got {v:?}"
-                        )))
-                    }
-                };
+                let choices = [("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)];
+                o.filter = choice(&value()?, "--filter", &choices)?;
             }
             "--wrap" => {
-                let v = value()?;
-                o.wrap = match v.as_str() {
-                    "repeat" => Wrap::Repeat,
-                    "clamp" => Wrap::Clamp,
-                    _ => {
-                        return Err(Failure::Usage(format!(
-                            "--wrap is repeat or clamp, got {v:?}"
-                        )))
-                    }
-                };
+                let choices = [("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)];
+                o.wrap = choice(&value()?, "--wrap", &choices)?;
             }
             "--affine" => o.mapping = Mapping::Affine,
             "--no-cull" => o.cull = false,
@@ -295,10 +284,22 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
     }
     // The default light joins the default ambient light only: `--ambient A` alone lights by
     // A alone (`--ambient 1` shows a texture's texels as they are).
-    if o.lights.is_empty() && !args.iter().any(|a| a == "--ambient") {
+    if o.lights.is_empty() && !o.ambient_given {
         o.lights = desktop::default_lights();
     }
     Ok(o)
+}
+
+/// The value of `choices` named `v`, or a usage error naming them.
+fn choice<T: Copy>(v: &str, flag: &str, choices: &[(&str, T)]) -> Result<T, Failure> {
+    choices
+        .iter()
+        .find(|(name, _)| *name == v)
+        .map(|&(_, c)| c)
+        .ok_or_else(|| {
+            let names: Vec<&str> = choices.iter().map(|(name, _)| *name).collect();
+            Failure::Usage(format!("{flag} is {}, got {v:?}", names.join(" or ")))
+        })
 }
 
 fn run(args: &[String]) -> Result<String, Failure> {
@@ -410,22 +411,30 @@ fn run(args: &[String]) -> Result<String, Failure> {
             })?
         }
     };
-    // The texture: --texture, else the OBJ's own; its texels live as long as the tool.
-    let texture_path =
-        o.texture
-            .clone()
-            .map(std::path::PathBuf::from)
-            .or_else(|| match &o.source {
-                Some(Source::Obj(path)) => desktop::obj_texture_path(path),
-                _ => None,
-            });
-    let texture = match texture_path {
-        Some(path) => {
-            let (texels, tw, th) =
-                desktop::load_texels(&path.to_string_lossy()).map_err(Failure::Input)?;
-            let texels: &'static [Rgb888] = Vec::leak(texels);
-            let t = Texture::new(Texels::Rgb888(texels), tw, th)
-                .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+    // The texture: --texture, else the one the OBJ's material names (for a model with UVs;
+    // one that cannot be read is then left out, with a warning).
+    let texels = match (&o.texture, &o.source) {
+        (Some(path), _) => Some((
+            path.clone(),
+            desktop::load_texels(path).map_err(Failure::Input)?,
+        )),
+        (None, Some(Source::Obj(obj))) if !model.uvs.is_empty() => desktop::obj_texture_path(obj)
+            .and_then(|path| {
+                let path = path.to_string_lossy().into_owned();
+                match desktop::load_texels(&path) {
+                    Ok(t) => Some((path, t)),
+                    Err(e) => {
+                        eprintln!("warning: the material's texture is left out: {e}");
+                        None
+                    }
+                }
+            }),
+        _ => None,
+    };
+    let texture = match &texels {
+        Some((path, (texels, tw, th))) => {
+            let t = Texture::new(Texels::Rgb888(texels), *tw, *th)
+                .map_err(|e| Failure::Input(format!("{path}: {e}")))?;
             Some(
                 t.with_filter(o.filter)
                     .with_wrap(o.wrap)

@@ -166,7 +166,7 @@ impl App {
             * recentre
     }
 
-    fn view(&self) -> Result<View, String> {
+    fn view(&self) -> Result<View<'static>, String> {
         let aspect = Scalar::from_num(WIDTH as f32 / HEIGHT as f32);
         let r = self.radius;
         let projection = if self.ortho {

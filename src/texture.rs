@@ -23,7 +23,7 @@
 
 use core::fmt;
 
-use embedded_graphics::pixelcolor::{Bgr565, Bgr888, Gray8, GrayColor, Rgb565, Rgb888, RgbColor};
+use embedded_graphics::pixelcolor::{Bgr565, Bgr888, Gray8, Rgb565, Rgb888, RgbColor};
 
 /// The largest width or height of a texture, in texels.
 pub const MAX_SIDE: u16 = 4096;
@@ -75,15 +75,10 @@ impl<'a> Texels<'a> {
         let black = Rgb888::BLACK;
         match self {
             Texels::Rgb565(s) => s.get(i).map_or(black, |&c| c.into()),
-            Texels::Bgr565(s) => s.get(i).map_or(black, |&c| {
-                Rgb888::new(widen(c.r(), 5), widen(c.g(), 6), widen(c.b(), 5))
-            }),
+            Texels::Bgr565(s) => s.get(i).map_or(black, |&c| c.into()),
             Texels::Rgb888(s) => s.get(i).copied().unwrap_or(black),
-            Texels::Bgr888(s) => s.get(i).map_or(black, |c| Rgb888::new(c.r(), c.g(), c.b())),
-            Texels::Gray8(s) => s.get(i).map_or(black, |c| {
-                let l = c.luma();
-                Rgb888::new(l, l, l)
-            }),
+            Texels::Bgr888(s) => s.get(i).map_or(black, |&c| c.into()),
+            Texels::Gray8(s) => s.get(i).map_or(black, |&c| c.into()),
             Texels::Rgb565Be(s) => {
                 let at = i.wrapping_mul(2);
                 match (s.get(at), s.get(at.wrapping_add(1))) {
@@ -98,12 +93,6 @@ impl<'a> Texels<'a> {
             }
         }
     }
-}
-
-/// A channel of `bits` bits scaled to 8 bits, rounded (as embedded-graphics converts).
-fn widen(v: u8, bits: u32) -> u8 {
-    let max = (1u32 << bits) - 1;
-    ((u32::from(v).min(max) * 255 + max / 2) / max) as u8
 }
 
 macro_rules! texels_from {
@@ -289,33 +278,41 @@ impl<'a> Texture<'a> {
     }
 
     /// The colour at texel coordinates `(s, t)` (Q16.16 texel units: `s = u·width`,
-    /// `t = (1 − v)·height`), wrapped or clamped and filtered as the texture says. What every
-    /// textured pixel reads, and what the f64 reference is checked against.
+    /// `t = (1 − v)·height`), wrapped or clamped and filtered as the texture says: what a
+    /// textured pixel whose centre maps to `(s, t)` shows under a white light.
     #[must_use]
     pub fn sample(&self, s: i32, t: i32) -> Rgb888 {
-        let addr = Addressing::new(self);
-        match self.filter {
-            Filter::Nearest => self.texels.rgb(addr.index(s >> 16, t >> 16)),
-            Filter::Bilinear => addr.bilinear(&self.texels, s, t),
-        }
+        let sampler = Sampler::new(self);
+        let (ps, pt) = sampler.periods();
+        let (s, t) = if sampler.repeat {
+            (s.rem_euclid(ps), t.rem_euclid(pt))
+        } else {
+            (s, t)
+        };
+        sampler.texel(s, t)
     }
 }
 
-/// A texture's sides as the sampler reads them.
+/// A texture as each triangle's paint reads it (copied into the paint: the texels' slice,
+/// the sides and how they are read).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Addressing {
+pub(crate) struct Sampler<'a> {
+    texels: Texels<'a>,
     width: i32,
     height: i32,
     repeat: bool,
+    bilinear: bool,
 }
 
-impl Addressing {
+impl<'a> Sampler<'a> {
     #[inline(always)]
-    pub(crate) fn new(texture: &Texture<'_>) -> Self {
-        Addressing {
+    pub(crate) fn new(texture: &Texture<'a>) -> Self {
+        Sampler {
+            texels: texture.texels,
             width: i32::from(texture.width).max(1),
             height: i32::from(texture.height).max(1),
             repeat: texture.wrap == Wrap::Repeat,
+            bilinear: texture.filter == Filter::Bilinear,
         }
     }
 
@@ -325,45 +322,61 @@ impl Addressing {
         (self.width << 16, self.height << 16)
     }
 
-    /// The sides in texels.
-    #[inline(always)]
-    pub(crate) fn sides(&self) -> (i32, i32) {
-        (self.width, self.height)
-    }
-
     /// Whether the texture repeats.
     #[inline(always)]
     pub(crate) fn repeats(&self) -> bool {
         self.repeat
     }
 
-    /// Texel `(x, y)` wrapped or clamped into the image: its index.
+    /// The colour at `(s, t)` (Q16.16 texel units), each in `[0, period)` when the texture
+    /// repeats, anything when it is clamped.
     #[inline(always)]
-    pub(crate) fn index(&self, x: i32, y: i32) -> usize {
-        let (x, y) = if self.repeat {
-            (x.rem_euclid(self.width), y.rem_euclid(self.height))
-        } else {
-            (x.clamp(0, self.width - 1), y.clamp(0, self.height - 1))
-        };
-        self.in_image(x, y)
+    pub(crate) fn texel(&self, s: i32, t: i32) -> Rgb888 {
+        if self.bilinear {
+            return self.bilinear(s, t);
+        }
+        // Repeating, the coordinates lie in the image already: the clamps change nothing.
+        let x = (s >> 16).clamp(0, self.width - 1);
+        let y = (t >> 16).clamp(0, self.height - 1);
+        self.texels.rgb(self.index(x, y))
     }
 
-    /// The index of texel `(x, y)` already in the image.
+    /// The index of texel `(x, y)` of the image.
     #[inline(always)]
-    pub(crate) fn in_image(&self, x: i32, y: i32) -> usize {
+    fn index(&self, x: i32, y: i32) -> usize {
         (y as u32 as usize)
             .wrapping_mul(self.width as u32 as usize)
             .wrapping_add(x as u32 as usize)
     }
 
+    /// Texel column or row `v` of an image `side` texels across, for `v` within one side of
+    /// it: wrapped round when repeating, else clamped to the edge.
+    #[inline(always)]
+    fn wrapped(&self, v: i32, side: i32) -> i32 {
+        if !self.repeat {
+            v.clamp(0, side - 1)
+        } else if v < 0 {
+            v + side
+        } else if v >= side {
+            v - side
+        } else {
+            v
+        }
+    }
+
     /// The four texels around `(s, t)` blended by 8-bit weights.
-    pub(crate) fn bilinear(&self, texels: &Texels<'_>, s: i32, t: i32) -> Rgb888 {
+    fn bilinear(&self, s: i32, t: i32) -> Rgb888 {
         // Texel centres lie at half units: blend from the one up and left of the sample.
         let (s, t) = (s.saturating_sub(1 << 15), t.saturating_sub(1 << 15));
         let (x, y) = (s >> 16, t >> 16);
         let (fx, fy) = ((s >> 8 & 255) as u32, (t >> 8 & 255) as u32);
-        let at = |dx: i32, dy: i32| texels.rgb(self.index(x.wrapping_add(dx), y.wrapping_add(dy)));
-        let (a, b, c, d) = (at(0, 0), at(1, 0), at(0, 1), at(1, 1));
+        let (x0, x1) = (self.wrapped(x, self.width), self.wrapped(x + 1, self.width));
+        let (y0, y1) = (
+            self.wrapped(y, self.height),
+            self.wrapped(y + 1, self.height),
+        );
+        let at = |x: i32, y: i32| self.texels.rgb(self.index(x, y));
+        let (a, b, c, d) = (at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1));
         let mix = |a: u8, b: u8, c: u8, d: u8| {
             let top = u32::from(a) * (256 - fx) + u32::from(b) * fx;
             let bottom = u32::from(c) * (256 - fx) + u32::from(d) * fx;

@@ -8,21 +8,33 @@ use std::process::{Command, Output};
 
 use common::floor;
 
-/// The render example, built by `cargo test` next to the test binaries (built here if missing).
+/// The render example of this test's build profile, brought up to date once per test run
+/// (a test run with `--test cli` alone does not build examples).
 fn tool() -> PathBuf {
-    let exe = std::env::current_exe().unwrap();
-    let dir = exe.parent().unwrap().parent().unwrap(); // target/<profile>
-    let path = dir
-        .join("examples")
-        .join(format!("render{}", std::env::consts::EXE_SUFFIX));
-    if !path.exists() {
+    static TOOL: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    TOOL.get_or_init(|| {
+        let exe = std::env::current_exe().unwrap();
+        let dir = exe.parent().unwrap().parent().unwrap(); // target/<profile>
+        let profile = match dir.file_name().and_then(|n| n.to_str()) {
+            Some("debug") | None => "dev",
+            Some(other) => other,
+        };
         let status = Command::new(env!("CARGO"))
-            .args(["build", "--example", "render"])
+            .args([
+                "build",
+                "--quiet",
+                "--example",
+                "render",
+                "--profile",
+                profile,
+            ])
             .status()
             .unwrap();
         assert!(status.success());
-    }
-    path
+        dir.join("examples")
+            .join(format!("render{}", std::env::consts::EXE_SUFFIX))
+    })
+    .clone()
 }
 
 fn run(args: &[&str]) -> Output {
@@ -395,4 +407,21 @@ fn render_tool_draws_the_textured_floor_texel_for_texel() {
     assert!(render("flag.png", &["--texture", png.to_str().unwrap()]) == pixels);
     let affine = render("affine.png", &["--affine"]);
     assert!(floor::compare_with_reference(&affine, &texels).1 > 5_000);
+    // A material whose texture is missing leaves it out, with a warning; --texture naming a
+    // missing file is an error.
+    std::fs::write(dir.join("floor.mtl"), "newmtl floor\nmap_Kd gone.png\n").unwrap();
+    let out = dir.join("untextured.png").to_string_lossy().into_owned();
+    let _ = std::fs::remove_file(dir.join("gone.png"));
+    let o = run(&["--obj", obj_path.to_str().unwrap(), "--out", &out]);
+    assert!(o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("warning: the material's texture"));
+    let o = run(&[
+        "--obj",
+        obj_path.to_str().unwrap(),
+        "--out",
+        &out,
+        "--texture",
+        "gone.png",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
 }

@@ -11,7 +11,7 @@ use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Scalar, Vec3};
 use fixed3d::projection::{Projection, Viewport};
 
-fn view(mode: Mode, look: LookAt, projection: Projection, w: u32, h: u32) -> View {
+fn view(mode: Mode, look: LookAt, projection: Projection, w: u32, h: u32) -> View<'static> {
     View {
         width: w,
         height: h,

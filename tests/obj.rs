@@ -3,8 +3,8 @@
 
 use fixed3d::math::{Scalar, Vec3};
 use fixed3d::obj::{
-    bounds, parse, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, ObjStream, Placement,
-    StaticObj, Storage, NO_INDEX,
+    bounds, parse, split_corners, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, ObjStream,
+    Placement, SplitBuffers, StaticObj, Storage, NO_INDEX,
 };
 use proptest::prelude::*;
 
@@ -783,4 +783,57 @@ proptest! {
         let streamed = parse_stream::<1024>(text.as_bytes(), &chunks, cap);
         prop_assert!(same_result(&whole, &streamed), "{:?}\n{:?}\n{:?}", text, whole, streamed);
     }
+}
+
+/// `split_corners` gives each distinct (position, UV) its own vertex: corners that agree share
+/// one (two UV indices of equal values count as one UV), a corner without `vt` takes (0, 0),
+/// and short storage or a bad index is an error, never a write past a slice.
+#[test]
+fn split_corners_shares_what_agrees_and_splits_seams() {
+    let s = Scalar::from_num;
+    let p = [Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z];
+    let uv = [
+        [s(0), s(0)],
+        [s(1), s(0)],
+        [s(0), s(1)],
+        [s(0), s(0)],
+        [s(1), s(1)],
+    ];
+    // Triangle 0 and 1 share positions 0 and 2; position 0's UVs agree (indices 0 and 3 hold
+    // equal values), position 2's differ (a seam). Triangle 2 has no texture coordinates.
+    let tris = [[0, 1, 2], [0, 2, 3], [1, 3, 0]];
+    let tri_uv = [[0, 1, 2], [3, 4, 2], [NO_INDEX; 3]];
+    let split_these = |tris: &[[u16; 3]], cap: usize, first: usize, t: usize| {
+        let (mut sp, mut su, mut st) = (
+            vec![Vec3::ZERO; cap],
+            vec![[Scalar::ZERO; 2]; cap],
+            vec![[9u16; 3]; t],
+        );
+        let (mut f, mut n) = (vec![0u16; first], vec![0u16; cap]);
+        let mut out = SplitBuffers {
+            positions: &mut sp,
+            uvs: &mut su,
+            triangles: &mut st,
+            first: &mut f,
+            next: &mut n,
+        };
+        split_corners(&p, tris, &uv, &tri_uv, &mut out).map(|k| (k, sp, su, st))
+    };
+    let split = |cap: usize, first: usize, t: usize| split_these(&tris, cap, first, t);
+    let (k, sp, su, st) = split(9, 4, 3).unwrap();
+    assert_eq!(k, 7);
+    assert_eq!(st, vec![[0, 1, 2], [0, 3, 4], [5, 6, 0]]);
+    assert_eq!(&sp[..k], &[p[0], p[1], p[2], p[2], p[3], p[1], p[3]]);
+    let zero = [Scalar::ZERO; 2];
+    assert_eq!(&su[..k], &[uv[0], uv[1], uv[2], uv[4], uv[2], zero, zero]);
+    let kind = |r: Result<_, ObjError>| r.map(|_| ()).unwrap_err().kind;
+    let positions = ObjErrorKind::CapacityExceeded(Storage::Positions);
+    assert_eq!(kind(split(5, 4, 3)), positions);
+    assert_eq!(kind(split(9, 3, 3)), positions);
+    assert_eq!(
+        kind(split(9, 4, 2)),
+        ObjErrorKind::CapacityExceeded(Storage::Triangles)
+    );
+    let bad = split_these(&[[0, 1, 9]], 3, 4, 1);
+    assert_eq!(kind(bad), ObjErrorKind::IndexOutOfRange);
 }

@@ -7,10 +7,7 @@ mod common;
 
 use common::golden;
 use common::scene::*;
-use embedded_graphics::draw_target::DrawTarget;
-use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
-use embedded_graphics::Pixel;
 use fixed3d::camera::{Camera, CameraError};
 use fixed3d::mesh::{Mesh, CUBE};
 use fixed3d::pipeline::{Bin, Cull, ScreenVertex, Stats};
@@ -18,51 +15,12 @@ use fixed3d::projection::{ProjectionError, Viewport};
 use fixed3d::render::{Model, PreparedFrame, RenderError, Renderer, Shade, MAX_LIGHTS};
 use fixed3d::scene::{Light, LightError};
 
-/// A display that keeps what it is sent, and counts the writes.
-struct Screen {
-    w: u32,
-    h: u32,
-    pixels: Vec<Rgb565>,
-    writes: usize,
-}
+/// The renderer's display: Rgb565, blank where nothing was written.
+type Screen = common::screen::Screen<Rgb565>;
 
-impl Screen {
-    fn new(w: u32, h: u32) -> Self {
-        Screen {
-            w,
-            h,
-            pixels: vec![Rgb565::new(1, 2, 3); (w * h) as usize],
-            writes: 0,
-        }
-    }
-
-    fn rgb(&self) -> Vec<Rgb888> {
-        self.pixels.iter().map(|&p| p.into()).collect()
-    }
-}
-
-impl OriginDimensions for Screen {
-    fn size(&self) -> Size {
-        Size::new(self.w, self.h)
-    }
-}
-
-impl DrawTarget for Screen {
-    type Color = Rgb565;
-    type Error = core::convert::Infallible;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            if p.x >= 0 && p.y >= 0 && (p.x as u32) < self.w && (p.y as u32) < self.h {
-                self.pixels[(p.y as u32 * self.w + p.x as u32) as usize] = c;
-                self.writes += 1;
-            }
-        }
-        Ok(())
-    }
+/// A `w` x `h` display.
+fn screen(w: u32, h: u32) -> Screen {
+    Screen::new(w, h, Rgb565::new(1, 2, 3))
 }
 
 fn camera() -> Camera {
@@ -75,7 +33,7 @@ fn lights() -> [Light; 2] {
 
 /// Renders `models` through buffers of `rows` rows and storage for `bins` bins.
 fn render(models: &[Model<'_>], rows: u32, bins: usize) -> (Screen, Stats) {
-    let mut screen = Screen::new(320, 240);
+    let mut screen = screen(320, 240);
     let vertices: usize = models.iter().map(|m| m.mesh().positions().len()).sum();
     let (mut v, mut b) = (
         vec![ScreenVertex::DEFAULT; vertices],
@@ -256,7 +214,7 @@ fn every_shade_draws_the_same_in_bands() {
 fn setup_errors_are_reported() {
     let models = [Model::new(&CUBE, Rgb888::RED)];
     let try_render = |lights: &[Light], camera: &Camera, vertices: usize, cells: usize, w: u32| {
-        let mut screen = Screen::new(w, 8);
+        let mut screen = screen(w, 8);
         let (mut v, mut b) = (vec![ScreenVertex::DEFAULT; vertices], vec![Bin::EMPTY; 12]);
         let (mut c, mut d) = (vec![Rgb565::BLACK; cells], vec![0u16; cells]);
         Renderer::from_slices(&mut v, &mut b, &mut c, &mut d)
@@ -347,16 +305,19 @@ fn unlit_models_keep_their_colour() {
     assert!(c.iter().filter(|&&p| p == Rgb565::from(BASE)).count() > 28_000);
 }
 
-/// Without the `gouraud` and `wireframe` features a model that needs one is an error naming
-/// it (and the build links neither's code).
+/// Without the `gouraud`, `texture` and `wireframe` features a model that needs one is an
+/// error naming it (and the build links none of their code).
 #[test]
-#[cfg(not(all(feature = "gouraud", feature = "wireframe")))]
+#[cfg(not(all(feature = "gouraud", feature = "texture", feature = "wireframe")))]
 fn models_needing_a_missing_feature_are_errors() {
-    let mut screen = Screen::new(32, 32);
+    use fixed3d::texture::{Texels, Texture};
+    let mut screen = screen(32, 32);
     let (mut v, mut b) = (vec![ScreenVertex::DEFAULT; 8], vec![Bin::EMPTY; 12]);
     let (mut c, mut d) = (vec![Rgb565::BLACK; 32 * 32], vec![0u16; 32 * 32]);
     let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
     let cube = Model::new(&CUBE, Rgb888::RED);
+    let texels = [Rgb888::RED];
+    let texture = Texture::new(Texels::from(&texels), 1, 1).unwrap();
     for (model, feature, on) in [
         (
             cube.shaded(Shade::Gouraud),
@@ -364,6 +325,11 @@ fn models_needing_a_missing_feature_are_errors() {
             cfg!(feature = "gouraud"),
         ),
         (cube.wireframe(), "wireframe", cfg!(feature = "wireframe")),
+        (
+            cube.textured(&texture),
+            "texture",
+            cfg!(feature = "texture"),
+        ),
     ] {
         let drawn = renderer.render(&[model], &lights(), &camera(), &mut screen);
         if !on {
@@ -382,7 +348,7 @@ fn a_display_whose_box_is_off_the_origin_gets_the_same_frame() {
     let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
     let models = [Model::new(&mesh, BASE)];
     let (direct, _) = render(&models, 16, 2304);
-    let mut screen = Screen::new(320, 240);
+    let mut screen = screen(320, 240);
     let (mut v, mut b) = (vec![ScreenVertex::DEFAULT; 1152], vec![Bin::EMPTY; 2304]);
     let (mut c, mut d) = (vec![Rgb565::BLACK; 320 * 16], vec![0u16; 320 * 16]);
     let mut view = screen.translated(Point::new(7, -3));

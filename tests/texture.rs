@@ -7,10 +7,8 @@ mod common;
 
 use common::floor::*;
 use common::golden;
-use embedded_graphics::draw_target::DrawTarget;
-use embedded_graphics::geometry::{OriginDimensions, Size};
+use common::screen::Screen;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
-use embedded_graphics::Pixel;
 use fixed3d::camera::Camera;
 use fixed3d::math::{Scalar, Vec3};
 use fixed3d::mesh::{textured_torus, textured_torus_counts, Mesh};
@@ -18,43 +16,9 @@ use fixed3d::render::{Model, Renderer, Shade, Storage};
 use fixed3d::scene::Light;
 use fixed3d::texture::{Filter, Mapping, Texels, Texture, Wrap};
 
-/// A display that keeps what it is sent.
-struct Screen {
-    w: u32,
-    h: u32,
-    pixels: Vec<Rgb888>,
-}
-
-impl Screen {
-    fn new(w: u32, h: u32) -> Self {
-        Screen {
-            w,
-            h,
-            pixels: vec![Rgb888::new(1, 2, 3); (w * h) as usize],
-        }
-    }
-}
-
-impl OriginDimensions for Screen {
-    fn size(&self) -> Size {
-        Size::new(self.w, self.h)
-    }
-}
-
-impl DrawTarget for Screen {
-    type Color = Rgb888;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb888>>>(
-        &mut self,
-        it: I,
-    ) -> Result<(), Self::Error> {
-        for Pixel(p, c) in it {
-            if p.x >= 0 && p.y >= 0 && (p.x as u32) < self.w && (p.y as u32) < self.h {
-                self.pixels[(p.y as u32 * self.w + p.x as u32) as usize] = c;
-            }
-        }
-        Ok(())
-    }
+/// The tests' display, blank where nothing was written.
+fn screen(w: u32, h: u32) -> Screen<Rgb888> {
+    Screen::new(w, h, Rgb888::new(1, 2, 3))
 }
 
 /// The floor drawn with `texture` under a white ambient light of 1, through buffers of
@@ -72,7 +36,7 @@ fn draw_floor(texture: &Texture<'_>, rows: u32) -> Vec<Rgb888> {
     let n = (W * rows) as usize;
     let (mut color, mut depth) = (vec![Rgb888::BLACK; n], vec![0u16; n]);
     let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
-    let mut screen = Screen::new(W, H);
+    let mut screen = screen(W, H);
     renderer
         .render(&models, &[Light::ambient(1)], &camera, &mut screen)
         .unwrap();
@@ -156,7 +120,7 @@ fn textured_torus_lit_golden_images() {
         let mut storage = Storage::<{ COUNTS.0 }, { COUNTS.1 }>::new();
         let (mut color, mut depth) = (vec![Rgb888::BLACK; 320 * 16], vec![0u16; 320 * 16]);
         let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
-        let mut screen = Screen::new(320, 240);
+        let mut screen = screen(320, 240);
         renderer
             .render(&[model], lights, &camera, &mut screen)
             .unwrap();

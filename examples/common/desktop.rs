@@ -461,7 +461,7 @@ pub struct Placed<'m> {
 
 /// Everything about a frame but the models.
 #[derive(Clone, Debug)]
-pub struct View {
+pub struct View<'t> {
     pub width: u32,
     pub height: u32,
     pub mode: Mode,
@@ -476,7 +476,7 @@ pub struct View {
     /// Render in horizontal bands of this many rows (0: the whole frame at once).
     pub bands: u32,
     /// The texture of every model, lit by the mode (flat or Gouraud; wireframes ignore it).
-    pub texture: Option<Texture<'static>>,
+    pub texture: Option<Texture<'t>>,
 }
 
 /// What rendering a frame produced.
@@ -534,7 +534,7 @@ pub fn scene_bounds(objects: &[Placed<'_>]) -> Aabb {
 }
 
 /// Renders the objects as seen through `view` into an RGB888 image.
-pub fn render(objects: &[Placed<'_>], view: &View) -> Result<Rendered, String> {
+pub fn render(objects: &[Placed<'_>], view: &View<'_>) -> Result<Rendered, String> {
     let viewport = Viewport::new(view.width, view.height).map_err(|e| e.to_string())?;
     let meshes: Vec<Mesh<'_>> = objects.iter().map(|o| o.model.mesh()).collect();
     let scene_objects: Vec<Object<'_>> = objects
@@ -617,7 +617,7 @@ pub fn render(objects: &[Placed<'_>], view: &View) -> Result<Rendered, String> {
 fn draw<const N: usize, S: fixed3d::shade::Shading>(
     prepared: &fixed3d::pipeline::Prepared<'_, '_, N, S>,
     pixels: &mut [Rgb888],
-    view: &View,
+    view: &View<'_>,
 ) -> Result<Stats, String> {
     let (w, h) = (view.width, view.height);
     if !view.depth {
@@ -702,21 +702,35 @@ pub fn load_texels(path: &str) -> Result<(Vec<Rgb888>, u16, u16), String> {
 }
 
 /// The texture an OBJ file names: the first `map_Kd` of the first `mtllib` file it uses,
-/// relative to the OBJ file's folder; `None` when it names none.
+/// relative to the OBJ file's folder; `None` when it names none. Files are read a line at a
+/// time, each cut at `LINE` bytes, as the parser reads them.
 pub fn obj_texture_path(obj: &str) -> Option<std::path::PathBuf> {
-    let dir = std::path::Path::new(obj).parent()?.to_path_buf();
-    let text = std::fs::read_to_string(obj).ok()?;
-    let value = |text: &str, key: &str| {
-        text.lines().find_map(|l| {
-            let l = l.trim();
-            let rest = l.strip_prefix(key)?;
-            rest.starts_with(char::is_whitespace)
-                .then(|| rest.trim().to_string())
-        })
+    let first_value = |path: &std::path::Path, key: &str| -> Option<String> {
+        let mut reader = std::io::BufReader::new(std::fs::File::open(path).ok()?);
+        let mut line = Vec::new();
+        loop {
+            line.clear();
+            let n = std::io::BufRead::read_until(
+                &mut std::io::Read::take(&mut reader, LINE as u64),
+                b'\n',
+                &mut line,
+            )
+            .ok()?;
+            if n == 0 {
+                return None;
+            }
+            let text = String::from_utf8_lossy(&line);
+            let mut words = text.split_whitespace();
+            if words.next() == Some(key) {
+                return words.next().map(String::from);
+            }
+        }
     };
-    let mtl = dir.join(value(&text, "mtllib")?);
-    let map = value(&std::fs::read_to_string(&mtl).ok()?, "map_Kd")?;
-    Some(mtl.parent().unwrap_or(&dir).join(map))
+    let obj = std::path::Path::new(obj);
+    let dir = obj.parent()?;
+    let mtl = dir.join(first_value(obj, "mtllib")?);
+    let map = first_value(&mtl, "map_Kd")?;
+    Some(mtl.parent().unwrap_or(dir).join(map))
 }
 
 /// The default lighting of the desktop tools: one white light towards (−1, 1, 1) at 0.8.

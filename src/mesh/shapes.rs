@@ -203,7 +203,7 @@ pub enum ShapeError {
     TooManyVertices,
     /// The storage given is too small: this many vertices and triangles are needed.
     StorageTooSmall {
-        /// Vertices needed (positions and normals).
+        /// Vertices needed (positions and normals, and UVs for a textured shape).
         vertices: usize,
         /// Triangles needed.
         triangles: usize,
@@ -248,6 +248,8 @@ pub const fn uv_sphere_counts(segments: u16, rings: u16) -> (usize, usize) {
 struct Storage<'a> {
     positions: &'a mut [Vec3],
     normals: &'a mut [Vec3],
+    /// For a shape with UVs.
+    uvs: Option<&'a mut [Uv]>,
     triangles: &'a mut [Triangle],
     too_small: ShapeError,
 }
@@ -257,6 +259,7 @@ impl<'a> Storage<'a> {
         (vertices, tris): (usize, usize),
         positions: &'a mut [Vec3],
         normals: &'a mut [Vec3],
+        uvs: Option<&'a mut [Uv]>,
         triangles: &'a mut [Triangle],
     ) -> Result<Self, ShapeError> {
         if vertices > 65_536 {
@@ -266,6 +269,10 @@ impl<'a> Storage<'a> {
             vertices,
             triangles: tris,
         };
+        let uvs = match uvs {
+            Some(uvs) => Some(uvs.get_mut(..vertices).ok_or(too_small)?),
+            None => None,
+        };
         match (
             positions.get_mut(..vertices),
             normals.get_mut(..vertices),
@@ -274,6 +281,7 @@ impl<'a> Storage<'a> {
             (Some(positions), Some(normals), Some(triangles)) => Ok(Storage {
                 positions,
                 normals,
+                uvs,
                 triangles,
                 too_small,
             }),
@@ -284,9 +292,13 @@ impl<'a> Storage<'a> {
     /// The mesh over the filled storage (its indices are checked once more).
     fn into_mesh(self) -> Result<Mesh<'a>, ShapeError> {
         let too_small = self.too_small;
-        Mesh::new(self.positions, self.triangles)
-            .and_then(|m| m.with_normals(self.normals))
-            .map_err(|_| too_small)
+        let mesh =
+            Mesh::new(self.positions, self.triangles).and_then(|m| m.with_normals(self.normals));
+        match self.uvs {
+            Some(uvs) => mesh.and_then(|m| m.with_uvs(uvs)),
+            None => mesh,
+        }
+        .map_err(|_| too_small)
     }
 }
 
@@ -322,12 +334,8 @@ pub fn torus<'a>(
     normals: &'a mut [Vec3],
     triangles: &'a mut [Triangle],
 ) -> Result<Mesh<'a>, ShapeError> {
-    if ring < 3 || tube < 3 {
-        return Err(ShapeError::Resolution);
-    }
-    let counts = torus_counts(ring, tube);
-    let store = Storage::new(counts, positions, normals, triangles)?;
-    torus_grid((major, minor), (ring, tube), false, store, &mut [])?.into_mesh()
+    let shape = ((major, minor), (ring, tube));
+    torus_into(shape, positions, normals, None, triangles)
 }
 
 /// Vertices and triangles of a [`textured_torus`]: a seam's vertices twice.
@@ -363,34 +371,36 @@ pub fn textured_torus<'a>(
     uvs: &'a mut [Uv],
     triangles: &'a mut [Triangle],
 ) -> Result<Mesh<'a>, ShapeError> {
+    let shape = ((major, minor), (ring, tube));
+    torus_into(shape, positions, normals, Some(uvs), triangles)
+}
+
+/// A torus into the caller's storage: without `uvs` a grid of `ring × tube` vertices wrapped
+/// round ([`torus`]), with them one more each way, the last row and column at the first's
+/// positions ([`textured_torus`]).
+fn torus_into<'a>(
+    ((major, minor), (ring, tube)): ((Scalar, Scalar), (u16, u16)),
+    positions: &'a mut [Vec3],
+    normals: &'a mut [Vec3],
+    uvs: Option<&'a mut [Uv]>,
+    triangles: &'a mut [Triangle],
+) -> Result<Mesh<'a>, ShapeError> {
     if ring < 3 || tube < 3 {
         return Err(ShapeError::Resolution);
     }
-    let counts = textured_torus_counts(ring, tube);
-    let store = Storage::new(counts, positions, normals, triangles)?;
-    let uvs = uvs.get_mut(..counts.0).ok_or(store.too_small)?;
-    let store = torus_grid((major, minor), (ring, tube), true, store, uvs)?;
-    let too_small = store.too_small;
-    store
-        .into_mesh()
-        .and_then(|m| m.with_uvs(uvs).map_err(|_| too_small))
-}
-
-/// Fills a torus's storage (and its UVs, where `uvs` holds one per vertex): a grid of
-/// `ring × tube` vertices wrapped round, or with `seam` one more each way, the last row and
-/// column at the first's positions.
-fn torus_grid<'a>(
-    (major, minor): (Scalar, Scalar),
-    (ring, tube): (u16, u16),
-    seam: bool,
-    store: Storage<'a>,
-    uvs: &mut [Uv],
-) -> Result<Storage<'a>, ShapeError> {
+    let seam = uvs.is_some();
+    let counts = if seam {
+        textured_torus_counts(ring, tube)
+    } else {
+        torus_counts(ring, tube)
+    };
+    let mut store = Storage::new(counts, positions, normals, uvs, triangles)?;
     let (pos, nor, tri) = (
         &mut *store.positions,
         &mut *store.normals,
         &mut *store.triangles,
     );
+    let uvs = store.uvs.as_deref_mut().unwrap_or(&mut []);
     let (big, small) = (major.to_bits() as i64, minor.to_bits() as i64);
     let (rows, columns) = (ring as usize + seam as usize, tube as usize + seam as usize);
     for (k, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
@@ -427,7 +437,7 @@ fn torus_grid<'a>(
             *b = [p00, p11, p10];
         }
     }
-    Ok(store)
+    store.into_mesh()
 }
 
 /// A UV sphere of `radius` around the origin, poles on the Y axis, with unit normals,
@@ -457,6 +467,7 @@ pub fn uv_sphere<'a>(
         uv_sphere_counts(segments, rings),
         positions,
         normals,
+        None,
         triangles,
     )?;
     let (pos, nor, tri) = (
@@ -548,6 +559,7 @@ mod tests {
         outward(&CUBE);
         outward(&TETRAHEDRON);
         outward(&OCTAHEDRON);
+        outward(&TEXTURED_CUBE);
     }
 
     #[test]
@@ -574,5 +586,15 @@ mod tests {
         );
         let err = torus(Scalar::ONE, Scalar::ONE, 2, 4, &mut p, &mut n, &mut t).unwrap_err();
         assert_eq!(err, ShapeError::Resolution);
+        // A textured torus needs its UVs' storage too.
+        let (mut p, mut n, mut t) = ([Vec3::ZERO; 25], [Vec3::ZERO; 25], [[0u16; 3]; 32]);
+        let mut uv = [[Scalar::ZERO; 2]; 24];
+        let too_small = ShapeError::StorageTooSmall {
+            vertices: 25,
+            triangles: 32,
+        };
+        let one = Scalar::ONE;
+        let err = textured_torus(one, one, 4, 4, &mut p, &mut n, &mut uv, &mut t);
+        assert_eq!(err.unwrap_err(), too_small);
     }
 }

@@ -23,10 +23,14 @@ pub struct SplitBuffers<'a> {
 /// vertex, as [`Mesh::with_uvs`](crate::mesh::Mesh::with_uvs) needs: a position whose
 /// corners carry different UVs (a seam) is split, corners that agree share one. Corners
 /// without a texture coordinate take UV (0, 0). Returns the split mesh's vertex count; its
-/// triangles are `out.triangles[..triangles.len()]`. `triangle_normals` of the file then go
-/// with the split triangles ([`corner_normals_to_vertices`](super::corner_normals_to_vertices) gives the new vertices
-/// normals). [`ObjErrorKind::CapacityExceeded`] names the array that is too short (line and
-/// column 0); [`ObjErrorKind::TooManyVertices`] when more than 65,535 vertices result.
+/// triangles are `out.triangles[..triangles.len()]`, and the file's `triangle_normals` go
+/// with them ([`corner_normals_to_vertices`](super::corner_normals_to_vertices) gives the
+/// new vertices normals). Errors have line and column 0:
+/// [`ObjErrorKind::CapacityExceeded`] of [`Storage::Positions`] when `first` holds fewer than
+/// the file's positions or the split vertices outgrow `positions`, `uvs` or `next`, of
+/// [`Storage::Triangles`] when `out.triangles` is the shorter;
+/// [`ObjErrorKind::IndexOutOfRange`] for a corner naming no position;
+/// [`ObjErrorKind::TooManyVertices`] when more than 65,535 vertices result.
 ///
 /// ```
 /// use fixed3d::math::{Scalar, Vec3};

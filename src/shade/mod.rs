@@ -6,7 +6,9 @@
 //! once per vertex, from the mesh's normals, then colours interpolated across the triangle:
 //! affine in screen space, every pixel a convex combination of the vertex colours) and
 //! [`PerspectiveGouraud`] (the same, interpolated perspective-correctly at three divisions per
-//! pixel; `docs/accuracy.md` measures the difference).
+//! pixel; `docs/accuracy.md` measures the difference). [`Textured`] maps a
+//! [`Texture`] across each triangle and scales its texels by one of
+//! the others' light.
 
 mod lambert;
 mod paint;
@@ -88,7 +90,8 @@ impl FaceInputs<'_> {
     }
 }
 
-/// A way of shading triangles: [`Unlit`], [`Flat`], [`Gouraud`] or [`PerspectiveGouraud`].
+/// A way of shading triangles: [`Unlit`], [`Flat`], [`Gouraud`], [`PerspectiveGouraud`] or
+/// [`Textured`].
 pub trait Shading: Copy + sealed::Sealed + core::fmt::Debug {
     /// The per-triangle colour source handed to targets.
     #[doc(hidden)]

@@ -4,25 +4,23 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{magnitude_bits, DivideBy};
 use crate::raster::{Plane, ScreenPoint, Span};
-use crate::texture::{Addressing, Filter, Mapping, Texels, Texture, RUN};
+use crate::texture::{Mapping, Sampler, Texture, RUN};
 
 use super::Paint;
 
-/// Texel coordinates across a triangle (vertex 0's aside) are held below this many texels
-/// (2²⁸ in Q16.16): the planes' values then stay within their range.
+/// A triangle's texel coordinates, less vertex 0's, are held within ±2¹² texels (this many
+/// bits in Q16.16): with the weights below, the planes' values stay below 2⁴⁵.
 const SPREAD_BITS: u32 = 28;
-/// Vertex weights `q ∝ 1/w` are scaled so that the largest is 2¹⁶.
+/// Vertex weights `q ∝ 1/w` are scaled so that the largest lies in [2¹⁶, 2¹⁷).
 const Q_BITS: u32 = 16;
-/// The denominator plane carries `q` shifted by this (its values below 2⁴⁰).
+/// The denominator plane carries `q` shifted by this (its values below 2⁴¹).
 const Q_PLANE_SHIFT: u32 = 24;
 
 /// A texture across one triangle, lit by `light` (a [`SolidPaint`](super::SolidPaint) or a
 /// [`SmoothPaint`](super::SmoothPaint) of light colours: white shows the texel as it is).
 #[derive(Clone, Copy, Debug)]
 pub struct TexturePaint<'t, L> {
-    texels: Texels<'t>,
-    addr: Addressing,
-    bilinear: bool,
+    sampler: Sampler<'t>,
     light: L,
     /// Vertex 0's texel coordinates (Q16.16), reduced into the image when it repeats.
     base: [i32; 2],
@@ -30,7 +28,8 @@ pub struct TexturePaint<'t, L> {
     /// `(s − s₀)·q`, `(t − t₀)·q` and `q << Q_PLANE_SHIFT`.
     planes: [Plane; 3],
     perspective: bool,
-    /// Affine: the steps along a row in Q16.16, reduced into the period when repeating.
+    /// Affine: the steps along a row in Q16.16, reduced into the period when repeating
+    /// (perspective: found for each run).
     step: [i32; 2],
 }
 
@@ -69,7 +68,7 @@ impl<'t, L> TexturePaint<'t, L> {
         area2: i64,
         light: L,
     ) -> Self {
-        let addr = Addressing::new(texture);
+        let sampler = Sampler::new(texture);
         let (width, height) = (i64::from(texture.width()), i64::from(texture.height()));
         // s = u·width, t = (1 − v)·height, Q16.16 texel units.
         let st = uv.map(|[u, v]| [i64::from(u) * width, ((1i64 << 16) - i64::from(v)) * height]);
@@ -77,7 +76,7 @@ impl<'t, L> TexturePaint<'t, L> {
         let limit = 1i64 << SPREAD_BITS;
         let spread =
             st.map(|[s, t]| [(s - s0).clamp(-limit, limit), (t - t0).clamp(-limit, limit)]);
-        let (periods, repeat) = (addr.periods(), addr.repeats());
+        let (periods, repeat) = (sampler.periods(), sampler.repeats());
         let base = [reduce(s0, periods.0, repeat), reduce(t0, periods.1, repeat)];
         let q = match (texture.mapping(), q) {
             (Mapping::Perspective, Some(q)) => scaled_weights(q),
@@ -102,14 +101,14 @@ impl<'t, L> TexturePaint<'t, L> {
                 ([a, b, Plane::default()], false)
             }
         };
-        let step = |k: usize, period: i32| {
-            let s = planes.get(k).map_or(0, |p| p.step_x());
-            reduce_step(s.saturating_add(1 << 15) >> 16, period, repeat)
+        let step = |k: usize, period: i32| match planes.get(k) {
+            Some(p) if !perspective => {
+                reduce_step(p.step_x().saturating_add(1 << 15) >> 16, period, repeat)
+            }
+            _ => 0,
         };
         TexturePaint {
-            texels: texture.texels(),
-            addr,
-            bilinear: texture.filter() == Filter::Bilinear,
+            sampler,
             light,
             base,
             step: [step(0, periods.0), step(1, periods.1)],
@@ -119,7 +118,8 @@ impl<'t, L> TexturePaint<'t, L> {
     }
 }
 
-/// The weights scaled so that the largest is 2^[`Q_BITS`] (each at least 1); `None` when
+/// The weights scaled so that the largest lies in [2^[`Q_BITS`], 2^([`Q_BITS`] + 1)) (each at
+/// least 1); `None` when
 /// they are all equal (nothing to correct).
 fn scaled_weights(q: [i64; 3]) -> Option<[i64; 3]> {
     let q = q.map(|v| v.max(1));
@@ -145,20 +145,21 @@ fn scaled_weights(q: [i64; 3]) -> Option<[i64; 3]> {
 fn nearly_affine(q: &[i64; 3], extent: i64) -> bool {
     let lo = q.iter().copied().min().unwrap_or(1).max(1);
     let hi = q.iter().copied().max().unwrap_or(1);
-    // extent ≤ 2²⁸ (Q16.16), hi − lo ≤ 2¹⁶: the product stays below 2⁴⁸.
+    // extent ≤ 2²⁸ (Q16.16), hi − lo < 2¹⁷: the product stays below 2⁴⁸.
     extent.saturating_mul(hi - lo).saturating_mul(4) < lo << 16
 }
 
 /// The running texel coordinates of a [`TexturePaint`] along a span, and its light.
 #[derive(Clone, Copy, Debug)]
 pub struct TextureCursor<'t, C> {
-    texels: Texels<'t>,
-    addr: Addressing,
-    bilinear: bool,
+    sampler: Sampler<'t>,
     light: C,
     /// Texel coordinates (Q16.16) and their steps: `s` in [0, period) when repeating.
     s: [i32; 2],
     step: [i32; 2],
+    /// What a coordinate is brought back below: the period when repeating, else a bound
+    /// that a clamped coordinate (below 2³¹ in magnitude, see `reduce`) never reaches.
+    wrap: [i32; 2],
     /// Pixels left before the next exact point (perspective), or of the whole span.
     left: u32,
     /// Perspective: the planes at the next exact point, their steps, and the pixels after it.
@@ -202,7 +203,7 @@ impl<C> TextureCursor<'_, C> {
         let start = self.exact;
         let end = self.exact_at(self.acc);
         self.exact = end;
-        let (periods, repeat) = (self.addr.periods(), self.addr.repeats());
+        let (periods, repeat) = (self.sampler.periods(), self.sampler.repeats());
         let step = |k: usize, period: i32| {
             let d = end[k]
                 .wrapping_sub(start[k])
@@ -217,34 +218,19 @@ impl<C> TextureCursor<'_, C> {
         self.left = n;
     }
 
-    /// The texel at the current coordinates.
-    #[inline(always)]
-    fn texel(&self) -> Rgb888 {
-        let [s, t] = self.s;
-        if self.bilinear {
-            return self.addr.bilinear(&self.texels, s, t);
-        }
-        let (w, h) = self.addr.sides();
-        let x = (s >> 16).clamp(0, w - 1);
-        let y = (t >> 16).clamp(0, h - 1);
-        self.texels.rgb(self.addr.in_image(x, y))
-    }
-
-    /// Moves to the next pixel.
+    /// Moves to the next pixel: a repeating coordinate and its step both lie in
+    /// [0, period), so one subtraction brings their sum back into it.
     #[inline(always)]
     fn advance(&mut self) {
-        let (ps, pt) = self.addr.periods();
         let [s, t] = self.s;
         let [ds, dt] = self.step;
+        let [ws, wt] = self.wrap;
         let (mut s, mut t) = (s.wrapping_add(ds), t.wrapping_add(dt));
-        // Repeating: both in [0, period), so one subtraction brings the sum back into it.
-        if self.addr.repeats() {
-            if s >= ps {
-                s = s.wrapping_sub(ps);
-            }
-            if t >= pt {
-                t = t.wrapping_sub(pt);
-            }
+        if s >= ws {
+            s = s.wrapping_sub(ws);
+        }
+        if t >= wt {
+            t = t.wrapping_sub(wt);
         }
         self.s = [s, t];
     }
@@ -273,7 +259,8 @@ impl<C: Iterator<Item = Rgb888>> Iterator for TextureCursor<'_, C> {
             self.next_run();
         }
         self.left = self.left.wrapping_sub(1);
-        let texel = self.texel();
+        let [s, t] = self.s;
+        let texel = self.sampler.texel(s, t);
         self.advance();
         let light = self.light.next().unwrap_or(Rgb888::WHITE);
         Some(modulate(texel, light))
@@ -290,14 +277,17 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
     #[inline(always)]
     fn cursor(&self, span: Span) -> Self::Cursor {
         let Span { y, x0, x1 } = span;
-        let (periods, repeat) = (self.addr.periods(), self.addr.repeats());
+        let (periods, repeat) = (self.sampler.periods(), self.sampler.repeats());
         let mut cursor = TextureCursor {
-            texels: self.texels,
-            addr: self.addr,
-            bilinear: self.bilinear,
+            sampler: self.sampler,
             light: self.light.cursor(span),
             s: [0; 2],
             step: self.step,
+            wrap: if repeat {
+                [periods.0, periods.1]
+            } else {
+                [i32::MAX; 2]
+            },
             left: u32::MAX,
             acc: [0; 3],
             acc_step: [0; 3],

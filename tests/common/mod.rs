@@ -10,6 +10,7 @@ pub mod golden;
 #[path = "../../examples/common/reference.rs"]
 pub mod reference;
 pub mod scene;
+pub mod screen;
 pub mod world;
 
 #[allow(unused_imports)]
