@@ -43,5 +43,5 @@ pub mod prelude {
     pub use crate::math::{Angle, Number, Scalar, Vec3};
     pub use crate::mesh::{Mesh, CUBE, OCTAHEDRON, TETRAHEDRON};
     pub use crate::render::{Model, RenderError, Renderer, Shade, Storage, Style, Wireframe};
-    pub use crate::scene::Light;
+    pub use crate::scene::{Attenuation, Light, PointLight};
 }

@@ -44,8 +44,8 @@ use crate::scene::{Light, LightColor, LightError, Lighting, Scene};
 use crate::shade::{Flat, Gouraud, PerspectiveGouraud, Shading, Textured, Unlit};
 use crate::texture::Texture;
 
-/// The most directional lights a frame of the [`Renderer`] takes (ambient lights are summed
-/// into one and do not count).
+/// The most directional and point lights a frame of the [`Renderer`] takes (ambient lights
+/// are summed into one and do not count).
 pub const MAX_LIGHTS: usize = 4;
 
 /// How a model's surfaces are lit (Lambert's law, see [`scene`](crate::scene)).
@@ -263,7 +263,8 @@ pub enum RenderError<E> {
     Projection(ProjectionError),
     /// The camera's placement does not make a view (see [`Camera::view`]).
     Camera(CameraError),
-    /// More than [`MAX_LIGHTS`] directional lights, or one with a zero direction.
+    /// More than [`MAX_LIGHTS`] directional and point lights, or a directional light with a
+    /// zero direction.
     Lights(LightError),
     /// The storage holds fewer vertices than the models have.
     CacheTooSmall {
@@ -279,7 +280,8 @@ pub enum RenderError<E> {
     },
     /// More models than 65,535.
     TooManyModels,
-    /// A model needs a cargo feature this build lacks (`gouraud`, `texture` or `wireframe`).
+    /// A model or light needs a cargo feature this build lacks (`gouraud`, `point-light`,
+    /// `texture` or `wireframe`).
     Disabled {
         /// The feature.
         feature: &'static str,
@@ -322,7 +324,7 @@ impl<E: fmt::Debug> fmt::Display for RenderError<E> {
             }
             RenderError::TooManyModels => f.write_str("more than 65,535 models"),
             RenderError::Disabled { feature } => {
-                write!(f, "a model needs the `{feature}` feature of fixed3d")
+                write!(f, "the scene needs the `{feature}` feature of fixed3d")
             }
         }
     }
@@ -572,7 +574,12 @@ impl<'f> PreparedFrame<'f> {
         if let Some(feature) = models.iter().find_map(missing_feature) {
             return Err(RenderError::Disabled { feature });
         }
-        let lighting = Lighting::from_lights(lights).map_err(RenderError::Lights)?;
+        let lighting = Lighting::from_lights(lights).map_err(|e| match e {
+            LightError::Disabled => RenderError::Disabled {
+                feature: "point-light",
+            },
+            e => RenderError::Lights(e),
+        })?;
         let view = camera.view().map_err(RenderError::Camera)?;
         let projection = camera
             .projection(&viewport)

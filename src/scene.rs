@@ -1,14 +1,16 @@
-//! What a frame shows: objects, an ambient colour and directional lights.
+//! What a frame shows: objects, an ambient colour, directional lights and point lights.
 //!
-//! Lambert's law, per colour channel: `colour = base · clamp(ambient + Σᵢ lightᵢ · max(0, N·Lᵢ),
-//! 0, 1)`, where `N` is the unit surface normal and `Lᵢ` the unit direction **from the surface
-//! towards** light *i*. The lights live in a fixed-capacity list whose size the caller chooses.
+//! Lambert's law, per colour channel: `colour = base · clamp(ambient + Σᵢ lightᵢ · aᵢ ·
+//! max(0, N·Lᵢ), 0, 1)`, where `N` is the unit surface normal, `Lᵢ` the unit direction **from
+//! the surface towards** light *i* and `aᵢ` its [`Attenuation`] at the surface's distance
+//! (1 for a directional light). The lights live in a fixed-capacity list whose size the caller
+//! chooses.
 
 use core::fmt;
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-use crate::math::{is_scaled_rotation, normalize, Number, Scalar, Vec3};
+use crate::math::{is_scaled_rotation, map3, normalize, unit_and_length, Number, Scalar, Vec3};
 use crate::mesh::Object;
 
 /// The colour and intensity of a light: one [`Scalar`] per channel, 1.0 is full strength
@@ -53,9 +55,18 @@ impl LightColor {
 
     #[inline]
     pub(crate) fn channels(&self) -> [i64; 3] {
-        [self.r, self.g, self.b].map(|c| c.to_bits() as i64)
+        self.bits().map(i64::from)
+    }
+
+    /// The channels' raw Q16.16 bits.
+    pub(crate) const fn bits(&self) -> [i32; 3] {
+        [self.r.to_bits(), self.g.to_bits(), self.b.to_bits()]
     }
 }
+
+/// Whether point lights are lit (the `point-light` feature): without it no code that lights by
+/// them is linked, and adding one is [`LightError::Disabled`].
+const POINT_LIGHT: bool = cfg!(feature = "point-light");
 
 /// True for a channel (raw Q16.16) in [0, 1].
 const fn unit_channel(c: i64) -> bool {
@@ -82,11 +93,16 @@ impl From<Rgb888> for LightColor {
 }
 
 /// A light of a scene, as the [`Renderer`](crate::render::Renderer) takes them: a slice of
-/// ambient and directional lights. Ambient lights add up.
+/// ambient, directional and point lights. Ambient lights add up.
 ///
 /// ```
-/// use fixed3d::scene::Light;
-/// let lights = [Light::ambient(0.2), Light::directional([-1, 1, 1], 0.8)];
+/// use fixed3d::scene::{Attenuation, Light, PointLight};
+/// let lights = [
+///     Light::ambient(0.2),
+///     Light::directional([-1, 1, 1], 0.8),
+///     Light::point([0, 2, 1], 0.5),
+///     PointLight::new([2, 0, 0], 4).attenuated(Attenuation::InverseSquare).within(6).into(),
+/// ];
 /// # let _ = lights;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -102,6 +118,8 @@ pub enum Light {
         /// Its colour and strength.
         color: LightColor,
     },
+    /// Light from a point in the world, in every direction.
+    Point(PointLight),
 }
 
 impl Light {
@@ -119,6 +137,101 @@ impl Light {
         Light::Directional {
             towards: towards.into(),
             color: color.into(),
+        }
+    }
+
+    /// A point light at `position` (world space), not attenuated and not cut off: see
+    /// [`PointLight`] for both.
+    #[must_use]
+    pub fn point(position: impl Into<Vec3>, color: impl Into<LightColor>) -> Self {
+        Light::Point(PointLight::new(position, color))
+    }
+}
+
+impl From<PointLight> for Light {
+    fn from(light: PointLight) -> Self {
+        Light::Point(light)
+    }
+}
+
+/// How a point light weakens with the distance `d` (in world units) from it: the factor its
+/// colour is scaled by.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Attenuation {
+    /// 1 at every distance.
+    #[default]
+    None,
+    /// `1 / (1 + d)`.
+    Linear,
+    /// `1 / (1 + d²)`: the physical fall-off, kept finite at the light.
+    InverseSquare,
+}
+
+impl Attenuation {
+    /// The factor (Q2.30, in [0, 1], rounded down) at distance `d` (raw Q16.16).
+    fn factor(self, d: u64) -> i32 {
+        const ONE: u64 = 1 << 30;
+        let f = match self {
+            Attenuation::None => ONE,
+            // 2⁴⁶ / (2¹⁶ + d) is (1 / (1 + d)) in Q2.30.
+            Attenuation::Linear => (ONE << 16) / (1u64 << 16).saturating_add(d),
+            // d² below 2⁶², else the factor is below 2⁻³⁰.
+            Attenuation::InverseSquare if d < 1 << 31 => (ONE << 32) / ((1 << 32) + d * d),
+            Attenuation::InverseSquare => 0,
+        };
+        f as i32
+    }
+}
+
+/// A light at a point, shining in every direction: a colour, how it weakens with distance and
+/// a range beyond which it lights nothing.
+///
+/// ```
+/// use fixed3d::scene::{Attenuation, Light, PointLight};
+/// let lamp = PointLight::new([0, 3, 0], 2).attenuated(Attenuation::Linear).within(10);
+/// let lights = [Light::ambient(0.1), lamp.into()];
+/// # let _ = lights;
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PointLight {
+    /// Where it is, in world space.
+    pub position: Vec3,
+    /// Its colour and strength (before attenuation).
+    pub color: LightColor,
+    /// How it weakens with distance.
+    pub attenuation: Attenuation,
+    /// The distance from which it lights nothing; `None` for no limit.
+    pub range: Option<Scalar>,
+}
+
+impl PointLight {
+    /// A light at `position`, not attenuated, with no range limit.
+    #[must_use]
+    pub fn new(position: impl Into<Vec3>, color: impl Into<LightColor>) -> Self {
+        PointLight {
+            position: position.into(),
+            color: color.into(),
+            attenuation: Attenuation::None,
+            range: None,
+        }
+    }
+
+    /// With `attenuation`.
+    #[must_use]
+    pub const fn attenuated(self, attenuation: Attenuation) -> Self {
+        PointLight {
+            attenuation,
+            ..self
+        }
+    }
+
+    /// Lighting nothing at `range` (world units) and beyond.
+    #[must_use]
+    pub fn within(self, range: impl Number) -> Self {
+        PointLight {
+            range: Some(range.to_scalar()),
+            ..self
         }
     }
 }
@@ -148,6 +261,8 @@ pub enum LightError {
     Full,
     /// The direction is the zero vector.
     ZeroDirection,
+    /// A point light, in a build without the `point-light` feature.
+    Disabled,
 }
 
 impl fmt::Display for LightError {
@@ -155,35 +270,78 @@ impl fmt::Display for LightError {
         f.write_str(match self {
             LightError::Full => "no room for another light",
             LightError::ZeroDirection => "a light direction must not be zero",
+            LightError::Disabled => "point lights need the `point-light` feature of fixed3d",
         })
     }
 }
 
 impl core::error::Error for LightError {}
 
+/// A point light as lighting reads it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct PreparedPoint {
+    /// World position, raw Q16.16.
+    position: [i32; 3],
+    /// Colour, raw Q16.16 per channel.
+    pub(crate) color: [i32; 3],
+    attenuation: Attenuation,
+    /// Raw Q16.16 distance from which it lights nothing (`u32::MAX`: none; a range is below
+    /// 2³¹).
+    range: u32,
+}
+
+impl PreparedPoint {
+    fn new(light: &PointLight) -> Self {
+        PreparedPoint {
+            position: light.position.to_bits(),
+            color: light.color.bits(),
+            attenuation: light.attenuation,
+            range: light
+                .range
+                .map_or(u32::MAX, |r| r.to_bits().max(0).unsigned_abs()),
+        }
+    }
+
+    /// The unit direction (Q2.30) from a surface point `at` (raw Q16.16, in the lighting's
+    /// space) towards the light, and the light's attenuation there (Q2.30, in [0, 1]); `None`
+    /// at the light itself and from its range on.
+    pub(crate) fn towards(&self, at: [i64; 3]) -> Option<([i32; 3], i32)> {
+        let [x, y, z] = self.position.map(i64::from);
+        // Positions from the vertex stage are below 2⁴⁸: differences fit.
+        let v = map3([(x, at[0]), (y, at[1]), (z, at[2])], |(p, a)| {
+            p.saturating_sub(a)
+        });
+        let (unit, distance) = unit_and_length(v)?;
+        (distance < u64::from(self.range)).then(|| (unit, self.attenuation.factor(distance)))
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) struct PreparedLight {
     /// Unit direction towards the light, Q2.30.
     pub(crate) direction: [i32; 3],
-    pub(crate) color: [i64; 3],
+    /// Colour, raw Q16.16 per channel.
+    pub(crate) color: [i32; 3],
 }
 
-/// An ambient colour and up to `N` directional lights.
+/// An ambient colour and up to `N` directional and point lights.
 ///
 /// ```
 /// use fixed3d::math::{Scalar, Vec3};
-/// use fixed3d::scene::{DirectionalLight, LightColor, LightError, Lighting};
-/// let mut lighting = Lighting::<1>::new(LightColor::gray(Scalar::from_num(0.2)));
+/// use fixed3d::scene::{DirectionalLight, LightColor, LightError, Lighting, PointLight};
+/// let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(0.2)));
 /// let sun = DirectionalLight::new(Vec3::from_int(-1, 1, 1), LightColor::gray(Scalar::from_num(0.8)));
 /// assert_eq!(lighting.push(sun), Ok(()));
+/// assert_eq!(lighting.push_point(PointLight::new([0, 2, 0], 1)), Ok(()));
 /// assert_eq!(lighting.push(sun), Err(LightError::Full));
 /// ```
 #[derive(Clone, Debug)]
 pub struct Lighting<const N: usize> {
     ambient: LightColor,
     lights: heapless::Vec<PreparedLight, N>,
-    /// True while the ambient colour and every light are grey (equal channels): Lambert then
-    /// sums one channel for all three.
+    points: heapless::Vec<PreparedPoint, N>,
+    /// True while the ambient colour and every directional light are grey (equal channels) and
+    /// there is no point light: Lambert then sums one channel for all three.
     grey: bool,
     /// True while they are grey and every channel lies in [0, 1] (the usual lights): that one
     /// sum then fits a word (see [`in_words`](Self::in_words)).
@@ -203,29 +361,50 @@ impl<const N: usize> Lighting<N> {
         Lighting {
             ambient,
             lights: heapless::Vec::new(),
+            points: heapless::Vec::new(),
             grey,
             words: grey && unit_channel(r as i64),
         }
     }
 
-    /// Adds a light; its direction is normalised here, once.
+    /// Adds a directional light; its direction is normalised here, once.
     pub fn push(&mut self, light: DirectionalLight) -> Result<(), LightError> {
         let direction =
             normalize(light.direction.to_bits().map(i64::from)).ok_or(LightError::ZeroDirection)?;
         let prepared = PreparedLight {
             direction,
-            color: light.color.channels(),
+            color: light.color.bits(),
         };
+        if self.len() >= N {
+            return Err(LightError::Full);
+        }
         self.lights.push(prepared).map_err(|_| LightError::Full)?;
         let [r, g, b] = prepared.color;
         self.grey &= r == g && g == b;
-        self.words &= self.grey && unit_channel(r);
+        self.words &= self.grey && unit_channel(r.into());
+        Ok(())
+    }
+
+    /// Adds a point light (its terms are summed per channel). [`LightError::Disabled`]
+    /// without the `point-light` feature.
+    pub fn push_point(&mut self, light: PointLight) -> Result<(), LightError> {
+        if !POINT_LIGHT {
+            return Err(LightError::Disabled);
+        }
+        if self.len() >= N {
+            return Err(LightError::Full);
+        }
+        self.points
+            .push(PreparedPoint::new(&light))
+            .map_err(|_| LightError::Full)?;
+        self.grey = false;
+        self.words = false;
         Ok(())
     }
 
     /// The lighting of a slice of [`Light`]s: the ambient lights summed (each channel
-    /// saturated), the directional ones in order. [`LightError::Full`] when there are more
-    /// than `N` directional lights, [`LightError::ZeroDirection`] for a zero direction.
+    /// saturated), the others in order. [`LightError::Full`] when there are more than `N`
+    /// directional and point lights, [`LightError::ZeroDirection`] for a zero direction.
     ///
     /// ```
     /// use fixed3d::scene::{Light, LightError, Lighting};
@@ -242,12 +421,16 @@ impl<const N: usize> Lighting<N> {
                     sum.g.saturating_add(c.g),
                     sum.b.saturating_add(c.b),
                 ),
-                Light::Directional { .. } => sum,
+                Light::Directional { .. } | Light::Point(_) => sum,
             });
         let mut lighting = Lighting::new(ambient);
         for light in lights {
-            if let Light::Directional { towards, color } = *light {
-                lighting.push(DirectionalLight::new(towards, color))?;
+            match *light {
+                Light::Ambient(_) => {}
+                Light::Directional { towards, color } => {
+                    lighting.push(DirectionalLight::new(towards, color))?;
+                }
+                Light::Point(point) => lighting.push_point(point)?,
             }
         }
         Ok(lighting)
@@ -259,16 +442,16 @@ impl<const N: usize> Lighting<N> {
         self.ambient
     }
 
-    /// How many lights there are.
+    /// How many directional and point lights there are.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.lights.len()
+        self.lights.len() + self.points.len()
     }
 
-    /// True when there is no directional light.
+    /// True when there is no directional or point light.
     #[must_use]
     pub fn is_empty(&self) -> bool {
-        self.lights.is_empty()
+        self.len() == 0
     }
 
     /// The directional lights, at most `N` as the iterator says: a loop over them then has a
@@ -277,7 +460,14 @@ impl<const N: usize> Lighting<N> {
         self.lights.iter().take(N)
     }
 
-    /// True when the ambient colour and every light have three equal channels.
+    /// The point lights, at most `N` (none without the `point-light` feature: then no code
+    /// that lights by them is linked).
+    pub(crate) fn points(&self) -> impl Iterator<Item = &PreparedPoint> + Clone {
+        self.points.iter().take(if POINT_LIGHT { N } else { 0 })
+    }
+
+    /// True when the ambient colour and every directional light have three equal channels and
+    /// there is no point light.
     pub(crate) fn is_grey(&self) -> bool {
         self.grey
     }
@@ -293,9 +483,10 @@ impl<const N: usize> Lighting<N> {
     /// (world from model, see [`Mat4::normal_matrix`](crate::math::Mat4)) is a rotation times a
     /// scale: then `n · l` in world space equals `n' · Rᵀl` in model space for the model-space
     /// unit normal `n'`, and flat shading needs no product by the normal matrix per triangle.
-    /// `None` for any other matrix (a non-uniform scale or a shear: normals must be carried).
+    /// `None` for any other matrix (a non-uniform scale or a shear: normals must be carried),
+    /// and when there are point lights (they are lit from world-space positions).
     pub(crate) fn in_model_space(&self, normal_matrix: &[[i32; 3]; 3]) -> Option<Lighting<N>> {
-        if !is_scaled_rotation(normal_matrix) {
+        if self.points().next().is_some() || !is_scaled_rotation(normal_matrix) {
             return None;
         }
         let mut lights = self.lights.clone();
@@ -311,6 +502,7 @@ impl<const N: usize> Lighting<N> {
         Some(Lighting {
             ambient: self.ambient,
             lights,
+            points: heapless::Vec::new(),
             grey: self.grey,
             words: self.words,
         })

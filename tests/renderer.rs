@@ -305,10 +305,15 @@ fn unlit_models_keep_their_colour() {
     assert!(c.iter().filter(|&&p| p == Rgb565::from(BASE)).count() > 28_000);
 }
 
-/// Without the `gouraud`, `texture` and `wireframe` features a model that needs one is an
-/// error naming it (and the build links none of their code).
+/// Without the `gouraud`, `point-light`, `texture` and `wireframe` features a model or light
+/// that needs one is an error naming it (and the build links none of their code).
 #[test]
-#[cfg(not(all(feature = "gouraud", feature = "texture", feature = "wireframe")))]
+#[cfg(not(all(
+    feature = "gouraud",
+    feature = "point-light",
+    feature = "texture",
+    feature = "wireframe"
+)))]
 fn models_needing_a_missing_feature_are_errors() {
     use fixed3d::texture::{Texels, Texture};
     let mut screen = screen(32, 32);
@@ -335,6 +340,12 @@ fn models_needing_a_missing_feature_are_errors() {
         if !on {
             assert_eq!(drawn, Err(RenderError::Disabled { feature }));
         }
+    }
+    let lamp = [Light::point([0, 2, 2], 1)];
+    let drawn = renderer.render(&[cube], &lamp, &camera(), &mut screen);
+    if !cfg!(feature = "point-light") {
+        let feature = "point-light";
+        assert_eq!(drawn, Err(RenderError::Disabled { feature }));
     }
 }
 

@@ -177,6 +177,14 @@ pub(crate) fn cross_in_words(a: [i32; 3], b: [i32; 3]) -> [i32; 3] {
 /// first shifted so that the largest has its top bit at 2³⁰ (the leading-zero renormalisation
 /// of case T33), then divided by the integer square root of the sum of squares. `None` for zero.
 pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
+    unit_and_length(v).map(|(unit, _)| unit)
+}
+
+/// [`normalize`]'s unit vector and the vector's length in its own units (found from the
+/// shifted components: within about 2^(shift) of the exact length; saturated at `u64::MAX`).
+/// In line, so that [`normalize`] carries no code for the length.
+#[inline(always)]
+pub(crate) fn unit_and_length(v: [i64; 3]) -> Option<([i32; 3], u64)> {
     let bits = magnitude_bits(&v) as i32;
     if bits == 0 {
         return None;
@@ -197,14 +205,20 @@ pub(crate) fn normalize(v: [i64; 3]) -> Option<[i32; 3]> {
             a * a
         })
         .sum(); // each < 2^62 (after rounding at most 2^31 → 2^62), three sum below 2^64
-    let len = isqrt_u64(sum) as i64; // in [2^30, 2^31·√3)
+    let len = isqrt_u64(sum); // in [2^30, 2^31·√3)
     if len == 0 {
         return None;
     }
-    Some(scaled.map(|c| {
-        let q = super::div_round(c << 30, len);
+    let unit = scaled.map(|c| {
+        let q = super::div_round(c << 30, len as i64);
         q.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
-    }))
+    });
+    let length = if shift > 0 {
+        len.saturating_mul(1 << shift)
+    } else {
+        len >> (-shift) as u32
+    };
+    Some((unit, length))
 }
 
 /// `a·b` exactly, for components whose products sum within ±2⁶³ (written out: at

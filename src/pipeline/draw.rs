@@ -124,10 +124,10 @@ struct ObjectSetup<'o, const N: usize> {
     clip_from_model: Cell<Option<Mat4>>,
     normal_matrix: [[i32; 3]; 3],
     /// For flat shading, the lights seen from model space when the model matrix is a rotation
-    /// times a scale (`in_model_space`: face normals then need no normal matrix), else the
-    /// scene's: one place for every face to read them.
-    lighting: Lighting<N>,
-    in_model_space: bool,
+    /// times a scale (face normals then need no normal matrix); `None` where faces read the
+    /// scene's (see [`lighting`](Self::lighting)).
+    model_lighting: Option<Lighting<N>>,
+    scene_lighting: &'o Lighting<N>,
     /// The mesh's kept face normals, where the shading reads them ([`Flat`]): lit in model
     /// space, by [`Normalize::Newton`] (what they keep); none otherwise. An empty slice rather
     /// than `None`: a front face's normal is one bounds test.
@@ -141,6 +141,12 @@ struct ObjectSetup<'o, const N: usize> {
 }
 
 impl<const N: usize> ObjectSetup<'_, N> {
+    /// The lights its faces are lit by: one place for every face to read them.
+    #[inline(always)]
+    fn lighting(&self) -> &Lighting<N> {
+        self.model_lighting.as_ref().unwrap_or(self.scene_lighting)
+    }
+
     /// The cached vertices of triangle `tri`; `None` if an index refers to no vertex.
     #[inline(always)]
     fn corners(&self, tri: &Triangle) -> Option<[&ScreenVertex; 3]> {
@@ -255,8 +261,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 frame: &self.frame,
                 clip_from_model: Cell::new(None),
                 normal_matrix,
-                lighting: model_lighting.unwrap_or_else(|| self.scene.lighting.clone()),
-                in_model_space,
+                model_lighting,
+                scene_lighting: &self.scene.lighting,
                 face_normals,
                 // Bit k of `inside` (none from the 65th object on).
                 inside: k < 64 && self.inside & 1 << k != 0,
@@ -565,14 +571,18 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         }
         let z = map3(*v, |v| v.1);
         // Flat shading in model space where the model matrix allows it (see `in_model_space`).
-        let lighting = &setup.lighting;
-        let normal_matrix = (!setup.in_model_space).then_some(&setup.normal_matrix);
+        let lighting = setup.lighting();
+        let normal_matrix = setup
+            .model_lighting
+            .is_none()
+            .then_some(&setup.normal_matrix);
         let face = FaceInputs {
             base: setup.object.color,
             positions: setup.object.mesh.positions(),
             indices: tri,
             face_normal: if S::KEPT_FACE_NORMALS { kept } else { None },
             extents: (setup.object.mesh.extent(), setup.object.mesh.edge_extent()),
+            model_matrix: &setup.object.model,
             normal_matrix,
             normalize: self.frame.precision.normalize(),
             vertices: v,

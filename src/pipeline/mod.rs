@@ -210,6 +210,7 @@ impl Frame {
                 None
             };
             let extent = object.mesh.extent();
+            let points = S::PER_VERTEX && scene.lighting.points().next().is_some();
             // Clip coordinates known to need no reduction (every unit-scale scene).
             let fits = clip_from_model.fits_32_bits(extent);
             // Every vertex known inside every plane (an object on screen and beyond the near
@@ -250,9 +251,17 @@ impl Frame {
                 };
                 let rgb = match normals.and_then(|n| n.get(i)) {
                     Some(n) => {
+                        // World position, for point lights alone.
+                        let at = if points {
+                            let w = object.model.transform_within(p.to_bits(), extent);
+                            [w[0], w[1], w[2]]
+                        } else {
+                            [0; 3]
+                        };
                         let lit = crate::shade::lambert(
                             object.color,
                             vertex_normal(n.to_bits(), &normal_matrix, self.precision.normalize()),
+                            at,
                             &scene.lighting,
                         );
                         use embedded_graphics::pixelcolor::RgbColor;

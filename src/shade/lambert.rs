@@ -8,24 +8,27 @@ use crate::math::{
 };
 #[cfg(test)]
 use crate::math::{dot_wide, normalize};
-use crate::scene::{Lighting, PreparedLight};
+use crate::scene::Lighting;
 
-/// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal.
-/// Per channel: `floor(base · clamp(ambient + Σ light · max(0, n·l), 0, 1))`.
+/// Lit colour of `base` for unit normal `n` (Q2.30), or ambient only when there is no normal,
+/// at the point `at` (raw Q16.16 in the lighting's space: read for point lights alone).
+/// Per channel: `floor(base · clamp(ambient + Σ light · attenuation · max(0, n·l), 0, 1))`.
 pub(crate) fn lambert<const N: usize>(
     base: Rgb888,
     n: Option<[i32; 3]>,
+    at: [i64; 3],
     lighting: &Lighting<N>,
 ) -> Rgb888 {
-    lambert_by(base, lighting, |light| cosine(n, light))
+    lambert_by(base, lighting, at, |l| cosine(n, l))
 }
 
-/// [`lambert`] with each light's `max(0, n·l)` (Q2.30) from `cosine`.
+/// [`lambert`] with `max(0, n·l)` (Q2.30) for each light's unit direction `l` from `cosine`.
 #[inline(always)]
 fn lambert_by<const N: usize>(
     base: Rgb888,
     lighting: &Lighting<N>,
-    cosine: impl Fn(&PreparedLight) -> i32,
+    at: [i64; 3],
+    cosine: impl Fn(&[i32; 3]) -> i32,
 ) -> Rgb888 {
     // Grey lights beyond [0, 1] take one sum in 64 bits on x86-64 and the per-channel sums on
     // 32-bit cores.
@@ -35,20 +38,27 @@ fn lambert_by<const N: usize>(
         lighting.in_words()
     };
     if !one_sum {
-        // Coloured lights or ambient: a sum per channel, from the cosines gathered here (one
-        // copy of those sums serves every way of finding them).
+        // Coloured or point lights, or coloured ambient: a sum per channel, from the cosines
+        // gathered here (one copy of those sums serves every way of finding them).
         let mut cosines = [0; N];
         for (d, light) in cosines.iter_mut().zip(lighting.lights()) {
-            *d = cosine(light);
+            *d = cosine(&light.direction);
         }
-        return lambert_colored(base, lighting, &cosines);
+        let mut points = [0; N];
+        for (d, point) in points.iter_mut().zip(lighting.points()) {
+            *d = point
+                .towards(at)
+                .map_or(0, |(l, factor)| attenuate(cosine(&l), factor));
+        }
+        return lambert_colored(base, lighting, &cosines, &points);
     }
     if lighting.in_words() {
         // Grey ambient and lights in [0, 1] (the usual kind): one sum in a word serves the
         // three channels, each term below 2¹⁷ and the sum below 2³¹ (see `in_words`).
         let ambient = lighting.ambient().r.to_bits();
         let s = lighting.lights().fold(ambient, |s, light| {
-            s.wrapping_add(term_in_words(light.color[0] as u32, cosine(light) as u32) as i32)
+            let d = cosine(&light.direction);
+            s.wrapping_add(term_in_words(light.color[0] as u32, d as u32) as i32)
         });
         let s = s.clamp(0, 1 << 16);
         return Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s));
@@ -56,34 +66,42 @@ fn lambert_by<const N: usize>(
     // Grey ambient and lights, some beyond [0, 1] (x86-64): one sum in 64 bits.
     let ambient = i64::from(lighting.ambient().r.to_bits());
     let s = lighting.lights().fold(ambient, |s, light| {
-        s.wrapping_add(term(light.color[0], cosine(light)))
+        s.wrapping_add(term(light.color[0].into(), cosine(&light.direction)))
     });
     let s = intensity(s);
     Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s))
 }
 
-/// [`lambert_by`] for coloured lights or ambient: a sum per channel, from each light's
-/// `max(0, n·l)` in the order of the lights.
+/// [`lambert_by`] for coloured or point lights: a sum per channel, from each directional
+/// light's `max(0, n·l)` and each point light's attenuated one, in the order of the lights.
 #[inline(never)]
 fn lambert_colored<const N: usize>(
     base: Rgb888,
     lighting: &Lighting<N>,
     cosines: &[i32; N],
+    points: &[i32; N],
 ) -> Rgb888 {
     let mut sum = lighting.ambient().channels();
-    for (light, &d) in lighting.lights().zip(cosines) {
-        for (s, c) in sum.iter_mut().zip(light.color) {
-            *s = s.wrapping_add(term(c, d));
+    let directional = lighting.lights().map(|l| &l.color).zip(cosines);
+    for (color, &d) in directional.chain(lighting.points().map(|p| &p.color).zip(points)) {
+        for (s, &c) in sum.iter_mut().zip(color) {
+            *s = s.wrapping_add(term(c.into(), d));
         }
     }
     let [r, g, b] = sum.map(intensity);
     Rgb888::new(lit(base.r(), r), lit(base.g(), g), lit(base.b(), b))
 }
 
-/// `max(0, n·l)` (Q2.30) for unit normal `n` and a light (no normal: 0).
+/// `max(0, n·l)` (Q2.30) for unit normal `n` and a light's unit direction `l` (no normal: 0).
 #[inline(always)]
-fn cosine(n: Option<[i32; 3]>, light: &PreparedLight) -> i32 {
-    n.map_or(0, |n| cosine_unit(n, light.direction))
+fn cosine(n: Option<[i32; 3]>, l: &[i32; 3]) -> i32 {
+    n.map_or(0, |n| cosine_unit(n, *l))
+}
+
+/// A cosine (Q2.30, below 2³¹) scaled by an attenuation factor (Q2.30, in [0, 1]).
+#[inline(always)]
+fn attenuate(d: i32, factor: i32) -> i32 {
+    (mul_wide(d, factor) >> 30) as i32
 }
 
 /// One channel's term of a light whose `cosine` is `d`: Q16.16 · Q2.30 → Q16.16 (the channel
@@ -126,11 +144,13 @@ pub(crate) fn face_normal(
 
 /// Lit colour of a model-space triangle, counter-clockwise front, flat shaded: Lambert of its
 /// face normal, in world space through `normal_matrix` (in the lighting's space without one),
-/// by [`face_lambert`]. `extent` and `edge_extent` bound the mesh's coordinates and its
+/// by [`face_lambert`], at the point `at` (its centre in the lighting's space, raw Q16.16: read
+/// for point lights alone). `extent` and `edge_extent` bound the mesh's coordinates and its
 /// triangles' edges (see [`face_direction`]).
 pub(crate) fn flat_color<const N: usize>(
     base: Rgb888,
     p: [[i32; 3]; 3],
+    at: [i64; 3],
     normal_matrix: Option<&[[i32; 3]; 3]>,
     method: Normalize,
     (extent, edge_extent): (u32, u32),
@@ -139,6 +159,7 @@ pub(crate) fn flat_color<const N: usize>(
     face_lambert(
         base,
         face_direction(p, normal_matrix, extent, edge_extent),
+        at,
         method,
         lighting,
     )
@@ -148,7 +169,8 @@ pub(crate) fn flat_color<const N: usize>(
 /// direction `d`: the same colour, or `None` where `d` cannot tell whether the face turns to a
 /// light (each product within ±2³¹, where the direction's rounding to 15 bits could move the
 /// sign of its product: the remainders of the shift, each below one unit of the shifted
-/// direction, move it by less than the light's components' sum of magnitudes, √3·2³⁰).
+/// direction, move it by less than the light's components' sum of magnitudes, √3·2³⁰), or
+/// where there are point lights (a kept normal is lit without the face's position).
 #[inline(always)]
 pub(crate) fn kept_face_color<const N: usize>(
     base: Rgb888,
@@ -156,51 +178,55 @@ pub(crate) fn kept_face_color<const N: usize>(
     lighting: &Lighting<N>,
 ) -> Option<Rgb888> {
     const SURE: i64 = 1 << 31;
+    if lighting.points().next().is_some() {
+        return None;
+    }
     let mut undecided = false;
     for light in lighting.lights() {
         let t = d.dot(light.direction);
         if t >= SURE {
-            return Some(lambert_by(base, lighting, |light| {
-                d.cosine(light.direction)
-            }));
+            return Some(lambert_by(base, lighting, [0; 3], |l| d.cosine(*l)));
         }
         undecided |= t > -SURE;
     }
     if undecided {
         None
     } else {
-        Some(lambert(base, None, lighting))
+        Some(lambert(base, None, [0; 3], lighting))
     }
 }
 
 /// Lambert of a face whose direction is `n` (any i32 components but `i32::MIN`, as
-/// [`face_direction`] gives). A face that turns from every light gets the ambient colour
-/// without being normalised: its direction's products with the lights are all ≤ 0, so Lambert
-/// adds nothing. With [`Normalize::Newton`] (the default) no unit normal is formed: each
-/// light's cosine is the direction's product with the light over its length.
+/// [`face_direction`] gives) at the point `at`. Without point lights, a face that turns from
+/// every light gets the ambient colour without being normalised: its direction's products with
+/// the lights are all ≤ 0, so Lambert adds nothing. With [`Normalize::Newton`] (the default)
+/// no unit normal is formed: each light's cosine is the direction's product with the light
+/// over its length.
 #[inline(always)]
 fn face_lambert<const N: usize>(
     base: Rgb888,
     n: [i32; 3],
+    at: [i64; 3],
     method: Normalize,
     lighting: &Lighting<N>,
 ) -> Rgb888 {
     // Components below 2³¹ and unit directions: products below 2⁶¹, sums below 2⁶³.
     let faces = |l: &[i32; 3]| dot_is_positive(n, *l);
+    let lit = lighting.points().next().is_some() || lighting.lights().any(|l| faces(&l.direction));
     // Every case but Newton's leaves through the one `lambert` below: with a second call
     // (an early return for faces turned away) it and the reciprocal square root left the
     // line and took more flash.
-    let unit = if !lighting.lights().any(|l| faces(&l.direction)) {
+    let unit = if !lit {
         None
     } else if method == Normalize::Newton {
         if let Some(d) = NewtonDirection::new(n) {
-            return lambert_by(base, lighting, |light| d.cosine(light.direction));
+            return lambert_by(base, lighting, at, |l| d.cosine(*l));
         }
         None
     } else {
         method.unit32(n)
     };
-    lambert(base, unit, lighting)
+    lambert(base, unit, at, lighting)
 }
 
 /// Unit world-space vertex normal (Q2.30) from a model-space normal (raw Q16.16); `None` for a
@@ -379,7 +405,7 @@ mod tests {
             let v = [next(), next(), next()];
             let raw = v.map(|c| (c * (1 << 20) as f64) as i64);
             let Some(n) = normalize(raw) else { continue };
-            let got = lambert(base, Some(n), &lighting);
+            let got = lambert(base, Some(n), [0; 3], &lighting);
             let nf = to_f(n);
             let d = ((nf[0] * l[0] + nf[1] * l[1] + nf[2] * l[2]) / ll).max(0.0);
             let s = 0.2 + 0.8 * d;
@@ -393,7 +419,10 @@ mod tests {
             }
         }
         // No normal: ambient only.
-        assert_eq!(lambert(base, None, &lighting), Rgb888::new(50, 31, 12));
+        assert_eq!(
+            lambert(base, None, [0; 3], &lighting),
+            Rgb888::new(50, 31, 12)
+        );
         // Overbright lights clamp at full intensity.
         let mut hot = Lighting::<1>::new(LightColor::gray(Scalar::from_num(3)));
         hot.push(DirectionalLight::new(
@@ -401,7 +430,7 @@ mod tests {
             LightColor::gray(Scalar::from_num(100)),
         ))
         .unwrap();
-        assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &hot), base);
+        assert_eq!(lambert(base, Some([0, 1 << 30, 0]), [0; 3], &hot), base);
     }
 
     /// The grey shortcuts (one sum for three channels, in a word for lights in [0, 1]) give
@@ -430,11 +459,11 @@ mod tests {
                 let n = normalize(v);
                 let mut cosines = [0; 3];
                 for (c, light) in cosines.iter_mut().zip(lighting.lights()) {
-                    *c = cosine(n, light);
+                    *c = cosine(n, &light.direction);
                 }
                 assert_eq!(
-                    lambert(base, n, &lighting),
-                    lambert_colored(base, &lighting, &cosines),
+                    lambert(base, n, [0; 3], &lighting),
+                    lambert_colored(base, &lighting, &cosines, &[0; 3]),
                     "{v:?}"
                 );
             }
@@ -444,7 +473,7 @@ mod tests {
         tinted.push(DirectionalLight::new(Vec3::Y, warm)).unwrap();
         assert!(!tinted.is_grey());
         assert_eq!(
-            lambert(base, Some([0, 1 << 30, 0]), &tinted),
+            lambert(base, Some([0, 1 << 30, 0]), [0; 3], &tinted),
             Rgb888::new(255, 160, 44)
         );
         let blue = LightColor::new(Scalar::ZERO, Scalar::ZERO, Scalar::ONE);
@@ -464,7 +493,7 @@ mod tests {
         let unit_lambert = |base, n, lighting: &Lighting<4>| {
             let faces = lighting.lights().any(|l| dot_wide(n, l.direction) > 0);
             let unit = faces.then(|| Normalize::Newton.unit32(n)).flatten();
-            lambert(base, unit, lighting)
+            lambert(base, unit, [0; 3], lighting)
         };
         let scene = lighting_of(&[((-1, 1, 1), 0.8)]);
         let mut three = lighting_of(&[((-1, 1, 1), 0.6), ((2, -1, 3), 0.5), ((0, 0, -1), 2.5)]);
@@ -499,10 +528,10 @@ mod tests {
                 for tri in mesh.triangles() {
                     let q = tri.map(|i| mesh.positions()[i as usize].to_bits());
                     let n = face_direction(q, Some(&nm), mesh.extent(), mesh.edge_extent());
-                    let got = face_lambert(base, n, Normalize::Newton, lighting);
+                    let got = face_lambert(base, n, [0; 3], Normalize::Newton, lighting);
                     assert_eq!(got, unit_lambert(base, n, lighting), "{q:?}");
                     faces += 1;
-                    lit += (got != lambert(base, None, lighting)) as usize;
+                    lit += (got != lambert(base, None, [0; 3], lighting)) as usize;
                 }
             }
         }
@@ -554,7 +583,7 @@ mod tests {
                 / len;
             worst_exact = worst_exact.max((got as f64 - exact.max(0.0)).abs() / UNIT_ONE as f64);
             let (a, b) = (
-                face_lambert(base, n, Normalize::Newton, &light),
+                face_lambert(base, n, [0; 3], Normalize::Newton, &light),
                 unit_lambert(base, n, &light),
             );
             for (a, b) in [(a.r(), b.r()), (a.g(), b.g()), (a.b(), b.b())] {
@@ -632,7 +661,7 @@ mod tests {
             match kept_face_color(base, &d, &lighting) {
                 Some(color) => {
                     let from_positions =
-                        flat_color(base, p, None, Normalize::Newton, extents, &lighting);
+                        flat_color(base, p, [0; 3], None, Normalize::Newton, extents, &lighting);
                     assert_eq!(color, from_positions, "{p:?} {lighting:?}");
                     decided += 1;
                 }
@@ -642,6 +671,101 @@ mod tests {
         assert!(
             decided > 30_000 && undecided > 10_000 && flipped > 1_000,
             "{decided} {undecided} {flipped}"
+        );
+    }
+
+    /// Point lights at random surface points, normals and positions, under every attenuation,
+    /// with and without a range, coloured and overbright, beside a directional light: every
+    /// channel within one 8-bit step of the f64 value of the same (quantised) inputs. A surface
+    /// at the light or from its range on gets nothing from it.
+    #[test]
+    fn point_lights_within_one_step_of_f64() {
+        use crate::scene::{Attenuation, PointLight};
+        let mut rng = crate::testing::XorShift(0x6A09_E667_F3BC_C909u64);
+        let mut uniform = |lo: f64, hi: f64| {
+            lo + (hi - lo) * ((rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
+        };
+        let q = |v: f64| Scalar::from_num(v);
+        let f = |s: Scalar| s.to_bits() as f64 / 65536.0;
+        let base = Rgb888::new(255, 160, 64);
+        let (mut lit, mut cut) = (0, 0);
+        for k in 0..30_000 {
+            let raw = [(); 3].map(|_| (uniform(-1.0, 1.0) * (1 << 20) as f64) as i64);
+            let Some(n) = normalize(raw) else { continue };
+            let at = [(); 3].map(|_| q(uniform(-8.0, 8.0)));
+            let position = [(); 3].map(|_| q(uniform(-8.0, 8.0)));
+            let attenuation = [
+                Attenuation::None,
+                Attenuation::Linear,
+                Attenuation::InverseSquare,
+            ][k % 3];
+            let color = LightColor::new(q(uniform(0.0, 2.0)), q(uniform(0.0, 1.0)), q(0.5));
+            let mut light =
+                PointLight::new(Vec3::new(position[0], position[1], position[2]), color)
+                    .attenuated(attenuation);
+            if k % 4 == 0 {
+                light = light.within(q(uniform(0.5, 12.0)));
+            }
+            let mut lighting = Lighting::<2>::new(LightColor::gray(q(0.1)));
+            let sun = LightColor::gray(q(0.3));
+            if k % 2 == 0 {
+                lighting
+                    .push(DirectionalLight::new(Vec3::from_int(-1, 1, 1), sun))
+                    .unwrap();
+            }
+            lighting.push_point(light).unwrap();
+            let at_bits = at.map(|c| i64::from(c.to_bits()));
+            let got = lambert(base, Some(n), at_bits, &lighting);
+            // The f64 value.
+            let nf = n.map(|c| c as f64 / (1u64 << 30) as f64);
+            let v: [f64; 3] = core::array::from_fn(|j| f(position[j]) - f(at[j]));
+            let d = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            let in_range = light.range.is_none_or(|r| d < f(r));
+            let near_edge = light.range.is_some_and(|r| (d - f(r)).abs() < 1e-3);
+            if near_edge || d < 1e-3 {
+                continue;
+            }
+            let cos = (nf[0] * v[0] + nf[1] * v[1] + nf[2] * v[2]) / d;
+            let factor = match attenuation {
+                Attenuation::Linear => 1.0 / (1.0 + d),
+                Attenuation::InverseSquare => 1.0 / (1.0 + d * d),
+                _ => 1.0,
+            };
+            let point = if in_range { cos.max(0.0) * factor } else { 0.0 };
+            let s3 = 1.0 / 3f64.sqrt();
+            let sun_cos = (-nf[0] + nf[1] + nf[2]) * s3;
+            let sun = if k % 2 == 0 {
+                f(q(0.3)) * sun_cos.max(0.0)
+            } else {
+                0.0
+            };
+            let channel = |c: Scalar, b: u8| {
+                let s = (f(q(0.1)) + sun + f(c) * point).clamp(0.0, 1.0);
+                (b as f64 * s).floor() as i32
+            };
+            let want = [
+                channel(color.r, base.r()),
+                channel(color.g, base.g()),
+                channel(color.b, base.b()),
+            ];
+            let got = [got.r(), got.g(), got.b()].map(i32::from);
+            for (g, w) in got.iter().zip(want) {
+                assert!(
+                    (g - w).abs() <= 1,
+                    "{n:?} {at:?} {light:?}: {got:?} vs {want:?}"
+                );
+            }
+            lit += (in_range && cos > 0.0) as u32;
+            cut += !in_range as u32;
+        }
+        assert!(lit > 10_000 && cut > 1_000, "{lit} {cut}");
+        // At the light itself: ambient alone.
+        let mut lighting = Lighting::<1>::new(LightColor::gray(q(0.2)));
+        lighting.push_point(PointLight::new([1, 2, 3], 1)).unwrap();
+        let at = [1i64 << 16, 2 << 16, 3 << 16];
+        assert_eq!(
+            lambert(base, Some([0, 1 << 30, 0]), at, &lighting),
+            lambert(base, None, at, &lighting)
         );
     }
 
@@ -700,13 +824,21 @@ mod tests {
                 let world = flat_color(
                     base,
                     p,
+                    [0; 3],
                     Some(&nm),
                     Normalize::Newton,
                     (1 << 17, 1 << 18),
                     &lighting,
                 );
-                let local =
-                    flat_color(base, p, None, Normalize::Newton, (1 << 17, 1 << 18), &model);
+                let local = flat_color(
+                    base,
+                    p,
+                    [0; 3],
+                    None,
+                    Normalize::Newton,
+                    (1 << 17, 1 << 18),
+                    &model,
+                );
                 let (w, l) = (
                     [world.r(), world.g(), world.b()],
                     [local.r(), local.g(), local.b()],

@@ -22,7 +22,7 @@ pub use texture::{TextureCursor, TexturePaint};
 
 use embedded_graphics::pixelcolor::Rgb888;
 
-use crate::math::{map3, Normalize, Vec3};
+use crate::math::{map3, Mat4, Normalize, Vec3};
 use crate::mesh::{FaceNormal, Triangle};
 use crate::raster::ScreenPoint;
 use crate::scene::Lighting;
@@ -47,6 +47,8 @@ pub struct FaceInputs<'a> {
     /// The mesh's largest coordinate magnitude and largest edge component (raw Q16.16, see
     /// [`Mesh::edge_extent`](crate::mesh::Mesh)).
     pub(crate) extents: (u32, u32),
+    /// World-from-model matrix (for the face's centre, which point lights read).
+    pub(crate) model_matrix: &'a Mat4,
     /// World-from-model normal matrix (cofactor, raw Q16.16); `None` when the lighting is
     /// already in model space.
     pub(crate) normal_matrix: Option<&'a [[i32; 3]; 3]>,
@@ -79,6 +81,20 @@ impl FaceInputs<'_> {
         map3([a, b, c], |i| {
             p.get(i).copied().unwrap_or_default().to_bits()
         })
+    }
+
+    /// The face's centre in the lighting's space (raw Q16.16): world space where there are
+    /// point lights (the lighting is then never in model space), else unread and zero.
+    fn centre<const N: usize>(&self, lighting: &Lighting<N>) -> [i64; 3] {
+        if lighting.points().next().is_none() {
+            return [0; 3];
+        }
+        let [a, b, c] = self.model();
+        let mean = map3([0, 1, 2], |j| {
+            ((a[j] as i64 + b[j] as i64 + c[j] as i64) / 3) as i32
+        });
+        let w = self.model_matrix.transform_within(mean, self.extents.0);
+        [w[0], w[1], w[2]]
     }
 
     fn screen(&self) -> [ScreenPoint; 3] {
@@ -278,6 +294,7 @@ impl Shading for Flat {
         SolidPaint(flat_color(
             face.base,
             face.model(),
+            face.centre(lighting),
             face.normal_matrix,
             face.normalize,
             face.extents,

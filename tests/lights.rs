@@ -1,0 +1,213 @@
+//! Point lights through the renderer: a flat face lit at its centre and Gouraud vertices lit
+//! at their world positions, against f64, wherever the model is placed; golden images of the
+//! torus under a point light, flat and Gouraud.
+
+mod common;
+
+use common::golden;
+use common::screen::Screen;
+use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+use fixed3d::mesh::{torus, torus_counts, Mesh};
+use fixed3d::prelude::*;
+use fixed3d::scene::LightColor;
+
+const BLANK: Rgb888 = Rgb888::new(1, 2, 3);
+const BASE: Rgb888 = Rgb888::new(255, 160, 64);
+
+/// An equilateral triangle about the origin in the plane y = 0, facing +y, its corners one
+/// unit from the centre, every vertex normal +y. A light on the y axis is as far from each
+/// corner as from the others and at the same angle: Gouraud then gives one colour.
+fn triangle_positions() -> [Vec3; 3] {
+    let s = 3f64.sqrt() / 2.0;
+    [[0.0, 0.0, -1.0], [-s, 0.0, 0.5], [s, 0.0, 0.5]].map(Vec3::from)
+}
+
+fn attenuate(a: Attenuation, d: f64) -> f64 {
+    match a {
+        Attenuation::Linear => 1.0 / (1.0 + d),
+        Attenuation::InverseSquare => 1.0 / (1.0 + d * d),
+        _ => 1.0,
+    }
+}
+
+/// The f64 colour of a surface lit by ambient 0.1 and a white point light of `intensity` at
+/// distance `d` and cosine `cos`.
+fn expected(intensity: f64, a: Attenuation, d: f64, cos: f64) -> [i32; 3] {
+    let s = (0.1 + intensity * cos * attenuate(a, d)).clamp(0.0, 1.0);
+    [BASE.r(), BASE.g(), BASE.b()].map(|b| (b as f64 * s).floor() as i32)
+}
+
+/// Flat: the face's colour is that of its centre, straight below the light (cosine 1,
+/// distance h·scale). Gouraud: each corner's, at distance scale·√(1 + h²). Random turns,
+/// scales and places, every attenuation, one light above the triangle.
+#[test]
+fn point_lights_light_faces_at_their_centre_and_vertices_where_they_are() {
+    let positions = triangle_positions();
+    let normals = [Vec3::Y; 3];
+    let triangles = [[0u16, 1, 2]];
+    let mesh = Mesh::new(&positions, &triangles)
+        .and_then(|m| m.with_normals(&normals))
+        .unwrap();
+    let mut rng = common::Rng(0x9E37_79B9_7F4A_7C15);
+    let mut checked = 0;
+    for k in 0..60 {
+        let (turn, scale) = (rng.range(0.0, 360.0), rng.range(0.5, 3.0));
+        let place = [
+            rng.range(-5.0, 5.0),
+            rng.range(-2.0, 2.0),
+            rng.range(-5.0, 5.0),
+        ];
+        let h = rng.range(0.3, 4.0);
+        let attenuation = [
+            Attenuation::None,
+            Attenuation::Linear,
+            Attenuation::InverseSquare,
+        ][k % 3];
+        let intensity = rng.range(0.2, 3.0);
+        // Quantise what the f64 value reads as the library does.
+        let (scale, h, intensity) = (
+            Scalar::from_num(scale).to_num::<f64>(),
+            Scalar::from_num(h).to_num::<f64>(),
+            Scalar::from_num(intensity).to_num::<f64>(),
+        );
+        let place = place.map(|c| Scalar::from_num(c).to_num::<f64>());
+        let lamp = [place[0], place[1] + h * scale, place[2]];
+        let lights = [
+            Light::ambient(0.1),
+            PointLight::new(lamp, intensity)
+                .attenuated(attenuation)
+                .into(),
+        ];
+        let centre = Vec3::from(place);
+        let eye = [
+            place[0] + 0.5,
+            place[1] + 6.0 * scale,
+            place[2] + 3.0 * scale,
+        ];
+        let camera = Camera::perspective(60, 0.5, 100).looking_at(eye, centre);
+        let corner = scale * (1.0 + h * h).sqrt();
+        for (shade, want) in [
+            (
+                Shade::Flat,
+                expected(intensity, attenuation, h * scale, 1.0),
+            ),
+            (
+                Shade::Gouraud,
+                expected(intensity, attenuation, corner, h * scale / corner),
+            ),
+        ] {
+            let model = Model::new(&mesh, BASE)
+                .scaled(scale)
+                .rotated_y(turn)
+                .translated(place)
+                .shaded(shade);
+            let mut screen = Screen::new(64, 64, BLANK);
+            let mut storage = Storage::<3, 1>::new();
+            let (mut c, mut d) = ([Rgb888::BLACK; 64 * 64], [0u16; 64 * 64]);
+            let mut renderer = Renderer::new(&mut storage, &mut c, &mut d);
+            renderer
+                .render(&[model], &lights, &camera, &mut screen)
+                .unwrap();
+            let drawn: Vec<_> = screen
+                .pixels
+                .iter()
+                .filter(|&&p| p != Rgb888::BLACK)
+                .collect();
+            assert!(drawn.len() > 50, "{k}: {} pixels", drawn.len());
+            for p in drawn {
+                let got = [p.r(), p.g(), p.b()].map(i32::from);
+                let close = got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1);
+                assert!(close, "{k} {shade:?} {attenuation:?}: {got:?} vs {want:?}");
+            }
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 120);
+}
+
+/// A light's range cuts it off: a face beyond it gets the ambient light alone, a face within
+/// it more.
+#[test]
+fn a_point_light_lights_nothing_from_its_range_on() {
+    let positions = triangle_positions();
+    let triangles = [[0u16, 1, 2]];
+    let mesh = Mesh::new(&positions, &triangles).unwrap();
+    let camera = Camera::perspective(60, 0.5, 100).looking_at([0.5, 6.0, 3.0], [0, 0, 0]);
+    let colour = |range: f64| {
+        let lamp = PointLight::new([0, 2, 0], 1).within(range);
+        let mut screen = Screen::new(64, 64, BLANK);
+        let mut storage = Storage::<3, 1>::new();
+        let (mut c, mut d) = ([Rgb888::BLACK; 64 * 64], [0u16; 64 * 64]);
+        let mut renderer = Renderer::new(&mut storage, &mut c, &mut d);
+        let lights = [Light::ambient(0.1), lamp.into()];
+        let model = Model::new(&mesh, BASE);
+        renderer
+            .render(&[model], &lights, &camera, &mut screen)
+            .unwrap();
+        screen.pixels[32 * 64 + 32]
+    };
+    let ambient = Rgb888::new(25, 16, 6);
+    assert_eq!(colour(1.99), ambient);
+    assert_eq!(colour(2.0), ambient);
+    assert_eq!(colour(2.01), BASE);
+}
+
+/// The torus of the reference scene beside a warm point light that falls off with the square
+/// of the distance, a cool directional light and a little ambient: flat and Gouraud.
+#[test]
+fn golden_point_light_torus() {
+    let (nv, nt) = torus_counts(48, 24);
+    let (mut p, mut n, mut t) = (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0; 3]; nt]);
+    let mesh = torus(
+        Scalar::ONE,
+        Scalar::from_num(0.4),
+        48,
+        24,
+        &mut p,
+        &mut n,
+        &mut t,
+    )
+    .unwrap();
+    let warm = Rgb888::new(255, 200, 140);
+    let lights = [
+        Light::ambient(0.08),
+        Light::directional([1, 1, 1], Rgb888::new(40, 60, 90)),
+        PointLight::new(
+            [-0.9, 0.4, 0.8],
+            LightColor::from_rgb888(warm, Scalar::from_num(3)),
+        )
+        .attenuated(Attenuation::InverseSquare)
+        .within(4)
+        .into(),
+    ];
+    let camera = Camera::perspective(60, 1, 10).looking_at([0.0, 1.2, 3.0], [0, 0, 0]);
+    let draw = |shade: Shade| {
+        let model = Model::new(&mesh, Rgb888::new(230, 230, 230))
+            .rotated_x(60)
+            .shaded(shade);
+        let mut screen = Screen::new(320, 240, BLANK);
+        let (mut v, mut b) = (
+            vec![fixed3d::pipeline::ScreenVertex::DEFAULT; nv],
+            vec![fixed3d::pipeline::Bin::EMPTY; nt],
+        );
+        let (mut c, mut d) = (vec![Rgb888::BLACK; 320 * 40], vec![0u16; 320 * 40]);
+        let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
+        renderer
+            .render(&[model], &lights, &camera, &mut screen)
+            .unwrap();
+        screen.pixels
+    };
+    let flat = draw(Shade::Flat);
+    let gouraud = draw(Shade::Gouraud);
+    golden::check("point_light_torus_flat", 320, 240, &flat);
+    golden::check("point_light_torus_gouraud", 320, 240, &gouraud);
+    // The light falls off: the brightest pixels are far brighter than the dimmest lit ones.
+    let luma = |c: &Rgb888| c.r() as u32 + c.g() as u32 + c.b() as u32;
+    let lit: Vec<u32> = gouraud
+        .iter()
+        .filter(|c| **c != Rgb888::BLACK)
+        .map(luma)
+        .collect();
+    assert!(lit.len() > 20_000);
+    assert!(lit.iter().max() > Some(&600) && lit.iter().min() < Some(&150));
+}
