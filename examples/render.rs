@@ -15,9 +15,15 @@
 //!   --near N --far F                 clip planes (defaults derived from the framing)
 //!   --color R,G,B                    object colour 0-255 (default 255,160,64)
 //!   --ambient A                      ambient intensity 0-1 (default 0.2)
-//!   --light X,Y,Z[,I]                direction towards a directional light and its intensity
-//!                                    (default one light (-1,1,1) at 0.8, unless --ambient is
-//!                                    given); repeat for more lights
+//!   --light X,Y,Z[,I | ,R,G,B]       direction towards a directional light and its intensity,
+//!                                    white or per channel (default one light (-1,1,1) at 0.8,
+//!                                    unless --ambient or --point-light is given); repeatable
+//!   --point-light X,Y,Z[,I | ,R,G,B] a point light at world position X,Y,Z (intensity default
+//!                                    1); repeatable
+//!   --attenuation none|linear|inverse-square
+//!                                    how point lights fall off with distance d: 1, 1/(1+d) or
+//!                                    1/(1+d²) (default none)
+//!   --range R                        point lights light nothing from distance R on
 //!   --bg R,G,B                       background (default 0,0,0)
 //!   --no-cull  --no-depth
 //!   --bands ROWS                     render in horizontal bands of ROWS rows (same image)
@@ -40,12 +46,13 @@ use embedded_graphics::pixelcolor::Rgb888;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::projection::{Projection, ProjectionError, Viewport};
-use fixed3d::scene::LightColor;
+use fixed3d::scene::{Attenuation, Light, LightColor};
 use fixed3d::texture::{Filter, Mapping, Texels, Texture, Wrap};
 
 const USAGE: &str = "usage: render [--obj PATH | --shape cube|tetrahedron|octahedron|sphere|torus] [--out PATH] \
 [--size WxH] [--mode wire|flat|gouraud] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z] [--fov DEG] [--near N] [--far F] \
-[--color R,G,B] [--ambient A] [--light X,Y,Z[,I]]... [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS] \
+[--color R,G,B] [--ambient A] [--light X,Y,Z[,I|,R,G,B]]... [--point-light X,Y,Z[,I|,R,G,B]]... \
+[--attenuation none|linear|inverse-square] [--range R] [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS] \
 [--texture PATH] [--filter nearest|bilinear] [--wrap repeat|clamp] [--affine]";
 
 /// Where the PNG goes without `--out`: under the checkout's `target/`, never beside the sources.
@@ -73,7 +80,10 @@ struct Options {
     far: Option<Scalar>,
     color: Rgb888,
     ambient: Scalar,
-    lights: Vec<(Vec3, LightColor)>,
+    lights: Vec<Light>,
+    /// How every point light falls off, and where it stops.
+    attenuation: Attenuation,
+    range: Option<Scalar>,
     background: Rgb888,
     cull: bool,
     depth: bool,
@@ -157,6 +167,8 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
         depth: true,
         bands: 0,
         ambient_given: false,
+        attenuation: Attenuation::None,
+        range: None,
         texture: None,
         filter: Filter::Nearest,
         wrap: Wrap::Repeat,
@@ -226,31 +238,36 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
                 o.ambient_given = true;
             }
             "--light" => {
-                let n = numbers(&value()?, "--light", 3, 4)?;
-                let dir = Vec3::new(
-                    scalar(n[0], "--light")?,
-                    scalar(n[1], "--light")?,
-                    scalar(n[2], "--light")?,
-                );
-                if dir == Vec3::ZERO {
+                let n = numbers(&value()?, "--light", 3, 6)?;
+                let towards = vec3_of(&n, "--light")?;
+                if towards == Vec3::ZERO {
                     return Err(Failure::Usage(
                         "--light: the direction must not be zero".into(),
                     ));
                 }
-                let i = n.get(3).copied().unwrap_or(0.8);
-                if !(0.0..=100.0).contains(&i) {
-                    return Err(Failure::Usage(format!(
-                        "--light: intensity is between 0 and 100, got {i}"
-                    )));
+                let color = light_color(n.get(3..).unwrap_or(&[]), 0.8, "--light")?;
+                push_light(&mut o.lights, Light::directional(towards, color))?;
+            }
+            "--point-light" => {
+                let n = numbers(&value()?, "--point-light", 3, 6)?;
+                let at = vec3_of(&n, "--point-light")?;
+                let color = light_color(n.get(3..).unwrap_or(&[]), 1.0, "--point-light")?;
+                push_light(&mut o.lights, Light::point(at, color))?;
+            }
+            "--attenuation" => {
+                let choices = [
+                    ("none", Attenuation::None),
+                    ("linear", Attenuation::Linear),
+                    ("inverse-square", Attenuation::InverseSquare),
+                ];
+                o.attenuation = choice(&value()?, "--attenuation", &choices)?;
+            }
+            "--range" => {
+                let v = numbers(&value()?, "--range", 1, 1)?[0];
+                if v <= 0.0 {
+                    return Err(Failure::Usage(format!("--range is above 0, got {v}")));
                 }
-                if o.lights.len() == desktop::MAX_LIGHTS {
-                    return Err(Failure::Usage(format!(
-                        "at most {} lights",
-                        desktop::MAX_LIGHTS
-                    )));
-                }
-                o.lights
-                    .push((dir, LightColor::gray(scalar(i, "--light")?)));
+                o.range = Some(scalar(v, "--range")?);
             }
             "--bg" => o.background = rgb(&value()?, "--bg")?,
             "--texture" => o.texture = Some(value()?),
@@ -287,7 +304,54 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
     if o.lights.is_empty() && !o.ambient_given {
         o.lights = desktop::default_lights();
     }
+    // --attenuation and --range apply to every point light, wherever they were given.
+    for light in &mut o.lights {
+        if let Light::Point(p) = light {
+            p.attenuation = o.attenuation;
+            p.range = o.range;
+        }
+    }
     Ok(o)
+}
+
+/// The first three of `n` as a vector.
+fn vec3_of(n: &[f32], flag: &str) -> Result<Vec3, Failure> {
+    let c = |k: usize| scalar(n.get(k).copied().unwrap_or(0.0), flag);
+    Ok(Vec3::new(c(0)?, c(1)?, c(2)?))
+}
+
+/// A light's colour from nothing (white at `default`), one intensity or three per channel,
+/// each from 0 to 100.
+fn light_color(n: &[f32], default: f32, flag: &str) -> Result<LightColor, Failure> {
+    if n.iter().any(|i| !(0.0..=100.0).contains(i)) {
+        return Err(Failure::Usage(format!(
+            "{flag}: intensities are between 0 and 100, got {n:?}"
+        )));
+    }
+    match *n {
+        [] => Ok(LightColor::gray(scalar(default, flag)?)),
+        [i] => Ok(LightColor::gray(scalar(i, flag)?)),
+        [r, g, b] => Ok(LightColor::new(
+            scalar(r, flag)?,
+            scalar(g, flag)?,
+            scalar(b, flag)?,
+        )),
+        _ => Err(Failure::Usage(format!(
+            "{flag} takes X,Y,Z, X,Y,Z,I or X,Y,Z,R,G,B"
+        ))),
+    }
+}
+
+/// Adds a directional or point light, or says there are too many.
+fn push_light(lights: &mut Vec<Light>, light: Light) -> Result<(), Failure> {
+    if lights.len() == desktop::MAX_LIGHTS {
+        return Err(Failure::Usage(format!(
+            "at most {} directional and point lights",
+            desktop::MAX_LIGHTS
+        )));
+    }
+    lights.push(light);
+    Ok(())
 }
 
 /// The value of `choices` named `v`, or a usage error naming them.

@@ -5,7 +5,8 @@
 //! ```
 //!
 //! Opens on the given OBJ files (or a bundled teapot among a few shapes), framed by their
-//! bounding box, lit by an ambient colour and three coloured lights. Keys (also shown by H):
+//! bounding box, lit by an ambient colour and three coloured lights (and a point light that L
+//! drops where the camera is). Keys (also shown by H):
 //!
 //! | key | does |
 //! |---|---|
@@ -19,6 +20,8 @@
 //! | C | back-face culling on / off |
 //! | O | orthographic / perspective |
 //! | Tab | spinning on / off |
+//! | L | put a point light where the camera is (fly, then L again, to move it) |
+//! | K | remove the point light |
 //! | R | add an object: path, colour and position asked on the terminal |
 //! | Backspace | remove the last object |
 //! | P | save the frame as `target/screenshots/viewer-NNN.png`, never over an earlier file |
@@ -52,7 +55,7 @@ use fixed3d::camera::FlyCamera;
 use fixed3d::math::{Angle, Scalar, Vec3};
 use fixed3d::mesh::Transform;
 use fixed3d::projection::Projection;
-use fixed3d::scene::LightColor;
+use fixed3d::scene::{Attenuation, Light, LightColor, PointLight};
 
 const WIDTH: u32 = 640;
 const HEIGHT: u32 = 480;
@@ -63,6 +66,7 @@ const HELP: &[&str] = &[
     "arrows turn        +/- field of view",
     "M or 1/2/3 wire/flat/gouraud   Z depth   C culling",
     "O ortho/perspective   Tab spin   P save PNG",
+    "L point light at the camera   K remove it",
     "R add object (terminal)   Backspace remove last",
     "H help   Esc quit",
 ];
@@ -129,6 +133,8 @@ struct App {
     spinning: bool,
     spin: Angle,
     help: bool,
+    /// Where the point light is, if there is one.
+    lamp: Option<Vec3>,
     held: HashSet<Keycode>,
     prompt: Option<Prompt>,
     message: String,
@@ -185,7 +191,8 @@ impl App {
             )
         }
         .map_err(|e| e.to_string())?;
-        let third = Scalar::from_num(0.45);
+        let s = |v: f32| Scalar::from_num(v);
+        let third = s(0.45);
         Ok(View {
             width: WIDTH,
             height: HEIGHT,
@@ -193,24 +200,20 @@ impl App {
             view: self.camera.view(),
             projection,
             ambient: Scalar::from_num(0.15),
-            lights: vec![
-                (
-                    Vec3::from_int(-1, 1, 1),
-                    LightColor::new(
-                        Scalar::from_num(0.75),
-                        Scalar::from_num(0.7),
-                        Scalar::from_num(0.6),
-                    ),
-                ),
-                (
-                    Vec3::from_int(1, 0, 1),
-                    LightColor::new(third, Scalar::from_num(0.15), Scalar::from_num(0.1)),
-                ),
-                (
-                    Vec3::from_int(0, -1, -1),
-                    LightColor::new(Scalar::from_num(0.1), Scalar::from_num(0.2), third),
-                ),
-            ],
+            lights: [
+                Light::directional([-1, 1, 1], LightColor::new(s(0.75), s(0.7), s(0.6))),
+                Light::directional([1, 0, 1], LightColor::new(third, s(0.15), s(0.1))),
+                Light::directional([0, -1, -1], LightColor::new(s(0.1), s(0.2), third)),
+            ]
+            .into_iter()
+            .chain(self.lamp.map(|at| {
+                // Warm, falling off with the square of the distance: at the scene's radius
+                // from the lamp, a little over half strength.
+                let k = (0.6 * (1.0 + r * r)).min(1000.0);
+                let lamp = PointLight::new(at, LightColor::new(s(k), s(0.85 * k), s(0.6 * k)));
+                Light::from(lamp.attenuated(Attenuation::InverseSquare))
+            }))
+            .collect(),
             background: Rgb888::new(12, 12, 20),
             cull: self.cull,
             depth: self.depth,
@@ -264,6 +267,24 @@ impl App {
             Keycode::O => self.ortho = !self.ortho,
             Keycode::Tab => self.spinning = !self.spinning,
             Keycode::H => self.help = !self.help,
+            Keycode::L => {
+                let at = self.camera.position;
+                self.lamp = Some(at);
+                self.message = format!(
+                    "point light at {:.2},{:.2},{:.2}",
+                    at.x.to_num::<f32>(),
+                    at.y.to_num::<f32>(),
+                    at.z.to_num::<f32>()
+                );
+                println!("{}", self.message);
+            }
+            Keycode::K => {
+                self.message = match self.lamp.take() {
+                    Some(_) => "point light removed".into(),
+                    None => "no point light to remove".into(),
+                };
+                println!("{}", self.message);
+            }
             Keycode::Backspace => {
                 self.message = match self.items.pop() {
                     Some(_) => format!("removed the last object, {} left", self.items.len()),
@@ -533,6 +554,7 @@ fn main() {
         spinning: true,
         spin: Angle::ZERO,
         help: false,
+        lamp: None,
         held: HashSet::new(),
         prompt: None,
         message: "H for help".into(),

@@ -120,6 +120,11 @@ fn bad_arguments_exit_2() {
         vec!["--shape", "cube", "--color", "256,0,0"],
         vec!["--shape", "cube", "--ambient", "2"],
         vec!["--shape", "cube", "--light", "0,0,0"],
+        vec!["--shape", "cube", "--light", "1,1,1,1,1"],
+        vec!["--shape", "cube", "--light", "1,1,1,-1"],
+        vec!["--shape", "cube", "--point-light", "0,0"],
+        vec!["--shape", "cube", "--attenuation", "cubic"],
+        vec!["--shape", "cube", "--range", "0"],
         vec!["--shape", "cube", "--near", "-1", "--far", "5"],
         vec!["--shape", "cube", "--bands", "0"],
         vec!["--shape", "cube", "--what"],
@@ -424,4 +429,58 @@ fn render_tool_draws_the_textured_floor_texel_for_texel() {
         "gone.png",
     ]);
     assert_eq!(o.status.code(), Some(1));
+}
+
+/// `--point-light` lights the side of a sphere it stands beside; `--attenuation` dims it with
+/// distance; from `--range` on it lights nothing (the image of the ambient light alone); a
+/// coloured one tints.
+#[test]
+fn render_tool_point_lights() {
+    let draw = |name: &str, extra: &[&str]| {
+        let out = out_png(name);
+        let mut args = vec!["--shape", "sphere", "--size", "80x60", "--out", &out];
+        args.extend(["--ambient", "0.1", "--eye", "0,0,4", "--target", "0,0,0"]);
+        args.extend(extra);
+        let o = run(&args);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        common::golden::read_png(std::path::Path::new(&out))
+            .unwrap()
+            .2
+    };
+    let halves = |p: &[embedded_graphics::pixelcolor::Rgb888]| {
+        use embedded_graphics::pixelcolor::RgbColor;
+        let mut sums = [0u64; 2];
+        for (i, c) in p.iter().enumerate() {
+            sums[usize::from(i % 80 >= 40)] += u64::from(c.r()) + u64::from(c.g());
+        }
+        sums
+    };
+    let left = halves(&draw("cli_lamp_left.png", &["--point-light", "-3,0,2,2"]));
+    let right = halves(&draw("cli_lamp_right.png", &["--point-light", "3,0,2,2"]));
+    assert!(
+        left[0] > 2 * left[1] && right[1] > 2 * right[0],
+        "{left:?} {right:?}"
+    );
+    let far = [
+        "--point-light",
+        "-3,0,2,2",
+        "--attenuation",
+        "inverse-square",
+    ];
+    let dimmed = halves(&draw("cli_lamp_dim.png", &far));
+    assert!(dimmed[0] < left[0] / 2, "{dimmed:?} {left:?}");
+    let ambient = draw("cli_lamp_none.png", &[]);
+    let cut = draw(
+        "cli_lamp_cut.png",
+        &["--point-light", "-3,0,2,2", "--range", "2"],
+    );
+    assert_eq!(cut, ambient);
+    use embedded_graphics::pixelcolor::RgbColor;
+    let red = draw("cli_lamp_red.png", &["--point-light", "0,0,3,1,0,0"]);
+    assert!(red.iter().any(|c| c.r() > 200) && red.iter().all(|c| c.g() < 30));
 }

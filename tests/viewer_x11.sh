@@ -3,7 +3,7 @@
 # screenshots with ImageMagick, and checks that the picture changes the right way.
 #   W makes the model larger; Left turns the view (the scene moves right); + widens the field of
 #   view and moves nothing (whatever keys the layout needs for it); M changes the image; P saves
-#   screenshots under new names; the frame-time lines pause while R asks on the terminal, and a
+#   screenshots under new names; L adds a point light and K removes it; the frame-time lines pause while R asks on the terminal, and a
 #   file without triangles is asked again; Escape quits cleanly; without a display the viewer
 #   exits 1 with one line.
 # Needs: xvfb xdotool imagemagick x11-utils libsdl2 (installed by .ci/run), and the viewer built
@@ -84,6 +84,25 @@ shot mode
 n=$(changed left mode)
 echo "M: $n pixels changed"
 [ "$n" -gt 2000 ] || fail "M did not change the image ($n pixels)"
+
+# In Gouraud mode (3), L puts a point light at the camera: the scene brightens; K takes it away
+# again: the scene is as it was (the status line, which shows the message and the frame time,
+# is left out).
+scene() { convert "$out/$1.png" -crop 640x460+0+20 +repage "$out/$1-scene.png"; }
+xdotool key 3; sleep 0.6
+shot unlit; scene unlit
+xdotool key l; sleep 0.6
+shot lamp; scene lamp
+grep -q "point light at" "$out/viewer.log" || fail "L did not report the point light"
+n=$(changed unlit-scene lamp-scene)
+echo "L: $n pixels changed"
+[ "$n" -gt 2000 ] || fail "L did not light the scene ($n pixels)"
+xdotool key k; sleep 0.6
+shot unlit2; scene unlit2
+n=$(changed unlit-scene unlit2-scene)
+echo "K: $n pixels differ from before L"
+[ "$n" -lt 20 ] || fail "K did not take the point light away ($n pixels)"
+grep -q "point light removed" "$out/viewer.log" || fail "K did not report the removal"
 
 # P saves under the next free name, never over an earlier file.
 xdotool key p; sleep 0.5; xdotool key p; sleep 0.5

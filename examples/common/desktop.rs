@@ -18,7 +18,7 @@ use fixed3d::obj::{
 };
 use fixed3d::pipeline::{Cull, Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
-use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
+use fixed3d::scene::{Light, Lighting, Scene};
 use fixed3d::shade::{Flat, Gouraud, Textured, Unlit};
 use fixed3d::texture::Texture;
 
@@ -468,8 +468,8 @@ pub struct View<'t> {
     pub view: Mat4,
     pub projection: Projection,
     pub ambient: Scalar,
-    /// Direction towards each light, and its colour.
-    pub lights: Vec<(Vec3, LightColor)>,
+    /// Directional and point lights (beside the ambient light).
+    pub lights: Vec<Light>,
     pub background: Rgb888,
     pub cull: bool,
     pub depth: bool,
@@ -546,12 +546,10 @@ pub fn render(objects: &[Placed<'_>], view: &View<'_>) -> Result<Rendered, Strin
             Object::new(m, o.matrix, if textured { Rgb888::WHITE } else { o.color })
         })
         .collect();
-    let mut lighting = Lighting::<MAX_LIGHTS>::new(LightColor::gray(view.ambient));
-    for (dir, color) in &view.lights {
-        lighting
-            .push(DirectionalLight::new(*dir, *color))
-            .map_err(|e| format!("light: {e}"))?;
-    }
+    let ambient = [Light::ambient(view.ambient)];
+    let lights: Vec<Light> = ambient.iter().chain(&view.lights).copied().collect();
+    let lighting =
+        Lighting::<MAX_LIGHTS>::from_lights(&lights).map_err(|e| format!("light: {e}"))?;
     let scene = Scene::new(&scene_objects, lighting);
     let frame = Frame::new(&view.view, &view.projection, viewport).with_cull(if view.cull {
         Cull::Back
@@ -734,11 +732,8 @@ pub fn obj_texture_path(obj: &str) -> Option<std::path::PathBuf> {
 }
 
 /// The default lighting of the desktop tools: one white light towards (−1, 1, 1) at 0.8.
-pub fn default_lights() -> Vec<(Vec3, LightColor)> {
-    vec![(
-        Vec3::from_int(-1, 1, 1),
-        LightColor::gray(Scalar::from_num(0.8)),
-    )]
+pub fn default_lights() -> Vec<Light> {
+    vec![Light::directional([-1, 1, 1], 0.8)]
 }
 
 /// Writes an RGB888 image as PNG.
