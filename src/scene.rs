@@ -305,7 +305,7 @@ impl PreparedPoint {
     /// The unit direction (Q2.30) from a surface point `at` (raw Q16.16, in the lighting's
     /// space) towards the light, and the light's attenuation there (Q2.30, in [0, 1]); `None`
     /// at the light itself and from its range on.
-    pub(crate) fn towards(&self, at: [i64; 3]) -> Option<([i32; 3], i32)> {
+    pub(crate) fn towards(&self, at: &[i64; 3]) -> Option<([i32; 3], i32)> {
         let [x, y, z] = self.position.map(i64::from);
         // Positions from the vertex stage are below 2⁴⁸: differences fit.
         let v = map3([(x, at[0]), (y, at[1]), (z, at[2])], |(p, a)| {

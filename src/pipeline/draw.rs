@@ -15,7 +15,7 @@ use crate::buffer::{
 use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
 use crate::mesh::{FaceNormal, Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
-use crate::scene::Lighting;
+use crate::scene::{LightColor, Lighting};
 use crate::shade::{FaceInputs, Paint, Shading};
 
 /// What a triangle's vertices carry to its shading: lit colours (per-vertex shading) and UVs
@@ -124,9 +124,10 @@ struct ObjectSetup<'o, const N: usize> {
     clip_from_model: Cell<Option<Mat4>>,
     normal_matrix: [[i32; 3]; 3],
     /// For flat shading, the lights seen from model space when the model matrix is a rotation
-    /// times a scale (face normals then need no normal matrix); `None` where faces read the
-    /// scene's (see [`lighting`](Self::lighting)).
-    model_lighting: Option<Lighting<N>>,
+    /// times a scale (`in_model_space`: face normals then need no normal matrix); otherwise
+    /// faces read the scene's (see [`lighting`](Self::lighting)).
+    model_lighting: Lighting<N>,
+    in_model_space: bool,
     scene_lighting: &'o Lighting<N>,
     /// The mesh's kept face normals, where the shading reads them ([`Flat`]): lit in model
     /// space, by [`Normalize::Newton`] (what they keep); none otherwise. An empty slice rather
@@ -144,7 +145,11 @@ impl<const N: usize> ObjectSetup<'_, N> {
     /// The lights its faces are lit by: one place for every face to read them.
     #[inline(always)]
     fn lighting(&self) -> &Lighting<N> {
-        self.model_lighting.as_ref().unwrap_or(self.scene_lighting)
+        if self.in_model_space {
+            &self.model_lighting
+        } else {
+            self.scene_lighting
+        }
     }
 
     /// The cached vertices of triangle `tri`; `None` if an index refers to no vertex.
@@ -261,7 +266,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 frame: &self.frame,
                 clip_from_model: Cell::new(None),
                 normal_matrix,
-                model_lighting,
+                model_lighting: model_lighting.unwrap_or(Lighting::new(LightColor::BLACK)),
+                in_model_space,
                 scene_lighting: &self.scene.lighting,
                 face_normals,
                 // Bit k of `inside` (none from the 65th object on).
@@ -572,10 +578,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let z = map3(*v, |v| v.1);
         // Flat shading in model space where the model matrix allows it (see `in_model_space`).
         let lighting = setup.lighting();
-        let normal_matrix = setup
-            .model_lighting
-            .is_none()
-            .then_some(&setup.normal_matrix);
+        let normal_matrix = (!setup.in_model_space).then_some(&setup.normal_matrix);
         let face = FaceInputs {
             base: setup.object.color,
             positions: setup.object.mesh.positions(),

@@ -261,7 +261,7 @@ impl Frame {
                         let lit = crate::shade::lambert(
                             object.color,
                             vertex_normal(n.to_bits(), &normal_matrix, self.precision.normalize()),
-                            at,
+                            &at,
                             &scene.lighting,
                         );
                         use embedded_graphics::pixelcolor::RgbColor;

@@ -16,7 +16,7 @@ use crate::scene::Lighting;
 pub(crate) fn lambert<const N: usize>(
     base: Rgb888,
     n: Option<[i32; 3]>,
-    at: [i64; 3],
+    at: &[i64; 3],
     lighting: &Lighting<N>,
 ) -> Rgb888 {
     lambert_by(base, lighting, at, |l| cosine(n, l))
@@ -27,7 +27,7 @@ pub(crate) fn lambert<const N: usize>(
 fn lambert_by<const N: usize>(
     base: Rgb888,
     lighting: &Lighting<N>,
-    at: [i64; 3],
+    at: &[i64; 3],
     cosine: impl Fn(&[i32; 3]) -> i32,
 ) -> Rgb888 {
     // Grey lights beyond [0, 1] take one sum in 64 bits on x86-64 and the per-channel sums on
@@ -40,17 +40,18 @@ fn lambert_by<const N: usize>(
     if !one_sum {
         // Coloured or point lights, or coloured ambient: a sum per channel, from the cosines
         // gathered here (one copy of those sums serves every way of finding them).
+        // The directional lights' cosines, then the point lights' (together at most N).
         let mut cosines = [0; N];
-        for (d, light) in cosines.iter_mut().zip(lighting.lights()) {
+        let mut slots = cosines.iter_mut();
+        for (light, d) in lighting.lights().zip(slots.by_ref()) {
             *d = cosine(&light.direction);
         }
-        let mut points = [0; N];
-        for (d, point) in points.iter_mut().zip(lighting.points()) {
+        for (point, d) in lighting.points().zip(slots) {
             *d = point
                 .towards(at)
                 .map_or(0, |(l, factor)| attenuate(cosine(&l), factor));
         }
-        return lambert_colored(base, lighting, &cosines, &points);
+        return lambert_colored(base, lighting, &cosines);
     }
     if lighting.in_words() {
         // Grey ambient and lights in [0, 1] (the usual kind): one sum in a word serves the
@@ -73,17 +74,19 @@ fn lambert_by<const N: usize>(
 }
 
 /// [`lambert_by`] for coloured or point lights: a sum per channel, from each directional
-/// light's `max(0, n·l)` and each point light's attenuated one, in the order of the lights.
+/// light's `max(0, n·l)`, then each point light's attenuated one, in `cosines`.
 #[inline(never)]
 fn lambert_colored<const N: usize>(
     base: Rgb888,
     lighting: &Lighting<N>,
     cosines: &[i32; N],
-    points: &[i32; N],
 ) -> Rgb888 {
     let mut sum = lighting.ambient().channels();
-    let directional = lighting.lights().map(|l| &l.color).zip(cosines);
-    for (color, &d) in directional.chain(lighting.points().map(|p| &p.color).zip(points)) {
+    let colors = lighting.lights().map(|l| &l.color);
+    for (color, &d) in colors
+        .chain(lighting.points().map(|p| &p.color))
+        .zip(cosines)
+    {
         for (s, &c) in sum.iter_mut().zip(color) {
             *s = s.wrapping_add(term(c.into(), d));
         }
@@ -150,7 +153,7 @@ pub(crate) fn face_normal(
 pub(crate) fn flat_color<const N: usize>(
     base: Rgb888,
     p: [[i32; 3]; 3],
-    at: [i64; 3],
+    at: &[i64; 3],
     normal_matrix: Option<&[[i32; 3]; 3]>,
     method: Normalize,
     (extent, edge_extent): (u32, u32),
@@ -185,14 +188,14 @@ pub(crate) fn kept_face_color<const N: usize>(
     for light in lighting.lights() {
         let t = d.dot(light.direction);
         if t >= SURE {
-            return Some(lambert_by(base, lighting, [0; 3], |l| d.cosine(*l)));
+            return Some(lambert_by(base, lighting, &[0; 3], |l| d.cosine(*l)));
         }
         undecided |= t > -SURE;
     }
     if undecided {
         None
     } else {
-        Some(lambert(base, None, [0; 3], lighting))
+        Some(lambert(base, None, &[0; 3], lighting))
     }
 }
 
@@ -206,7 +209,7 @@ pub(crate) fn kept_face_color<const N: usize>(
 fn face_lambert<const N: usize>(
     base: Rgb888,
     n: [i32; 3],
-    at: [i64; 3],
+    at: &[i64; 3],
     method: Normalize,
     lighting: &Lighting<N>,
 ) -> Rgb888 {
@@ -405,7 +408,7 @@ mod tests {
             let v = [next(), next(), next()];
             let raw = v.map(|c| (c * (1 << 20) as f64) as i64);
             let Some(n) = normalize(raw) else { continue };
-            let got = lambert(base, Some(n), [0; 3], &lighting);
+            let got = lambert(base, Some(n), &[0; 3], &lighting);
             let nf = to_f(n);
             let d = ((nf[0] * l[0] + nf[1] * l[1] + nf[2] * l[2]) / ll).max(0.0);
             let s = 0.2 + 0.8 * d;
@@ -420,7 +423,7 @@ mod tests {
         }
         // No normal: ambient only.
         assert_eq!(
-            lambert(base, None, [0; 3], &lighting),
+            lambert(base, None, &[0; 3], &lighting),
             Rgb888::new(50, 31, 12)
         );
         // Overbright lights clamp at full intensity.
@@ -430,7 +433,7 @@ mod tests {
             LightColor::gray(Scalar::from_num(100)),
         ))
         .unwrap();
-        assert_eq!(lambert(base, Some([0, 1 << 30, 0]), [0; 3], &hot), base);
+        assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &[0; 3], &hot), base);
     }
 
     /// The grey shortcuts (one sum for three channels, in a word for lights in [0, 1]) give
@@ -462,8 +465,8 @@ mod tests {
                     *c = cosine(n, &light.direction);
                 }
                 assert_eq!(
-                    lambert(base, n, [0; 3], &lighting),
-                    lambert_colored(base, &lighting, &cosines, &[0; 3]),
+                    lambert(base, n, &[0; 3], &lighting),
+                    lambert_colored(base, &lighting, &cosines),
                     "{v:?}"
                 );
             }
@@ -473,7 +476,7 @@ mod tests {
         tinted.push(DirectionalLight::new(Vec3::Y, warm)).unwrap();
         assert!(!tinted.is_grey());
         assert_eq!(
-            lambert(base, Some([0, 1 << 30, 0]), [0; 3], &tinted),
+            lambert(base, Some([0, 1 << 30, 0]), &[0; 3], &tinted),
             Rgb888::new(255, 160, 44)
         );
         let blue = LightColor::new(Scalar::ZERO, Scalar::ZERO, Scalar::ONE);
@@ -493,7 +496,7 @@ mod tests {
         let unit_lambert = |base, n, lighting: &Lighting<4>| {
             let faces = lighting.lights().any(|l| dot_wide(n, l.direction) > 0);
             let unit = faces.then(|| Normalize::Newton.unit32(n)).flatten();
-            lambert(base, unit, [0; 3], lighting)
+            lambert(base, unit, &[0; 3], lighting)
         };
         let scene = lighting_of(&[((-1, 1, 1), 0.8)]);
         let mut three = lighting_of(&[((-1, 1, 1), 0.6), ((2, -1, 3), 0.5), ((0, 0, -1), 2.5)]);
@@ -528,10 +531,10 @@ mod tests {
                 for tri in mesh.triangles() {
                     let q = tri.map(|i| mesh.positions()[i as usize].to_bits());
                     let n = face_direction(q, Some(&nm), mesh.extent(), mesh.edge_extent());
-                    let got = face_lambert(base, n, [0; 3], Normalize::Newton, lighting);
+                    let got = face_lambert(base, n, &[0; 3], Normalize::Newton, lighting);
                     assert_eq!(got, unit_lambert(base, n, lighting), "{q:?}");
                     faces += 1;
-                    lit += (got != lambert(base, None, [0; 3], lighting)) as usize;
+                    lit += (got != lambert(base, None, &[0; 3], lighting)) as usize;
                 }
             }
         }
@@ -583,7 +586,7 @@ mod tests {
                 / len;
             worst_exact = worst_exact.max((got as f64 - exact.max(0.0)).abs() / UNIT_ONE as f64);
             let (a, b) = (
-                face_lambert(base, n, [0; 3], Normalize::Newton, &light),
+                face_lambert(base, n, &[0; 3], Normalize::Newton, &light),
                 unit_lambert(base, n, &light),
             );
             for (a, b) in [(a.r(), b.r()), (a.g(), b.g()), (a.b(), b.b())] {
@@ -660,8 +663,15 @@ mod tests {
             }
             match kept_face_color(base, &d, &lighting) {
                 Some(color) => {
-                    let from_positions =
-                        flat_color(base, p, [0; 3], None, Normalize::Newton, extents, &lighting);
+                    let from_positions = flat_color(
+                        base,
+                        p,
+                        &[0; 3],
+                        None,
+                        Normalize::Newton,
+                        extents,
+                        &lighting,
+                    );
                     assert_eq!(color, from_positions, "{p:?} {lighting:?}");
                     decided += 1;
                 }
@@ -715,7 +725,7 @@ mod tests {
             }
             lighting.push_point(light).unwrap();
             let at_bits = at.map(|c| i64::from(c.to_bits()));
-            let got = lambert(base, Some(n), at_bits, &lighting);
+            let got = lambert(base, Some(n), &at_bits, &lighting);
             // The f64 value.
             let nf = n.map(|c| c as f64 / (1u64 << 30) as f64);
             let v: [f64; 3] = core::array::from_fn(|j| f(position[j]) - f(at[j]));
@@ -764,8 +774,8 @@ mod tests {
         lighting.push_point(PointLight::new([1, 2, 3], 1)).unwrap();
         let at = [1i64 << 16, 2 << 16, 3 << 16];
         assert_eq!(
-            lambert(base, Some([0, 1 << 30, 0]), at, &lighting),
-            lambert(base, None, at, &lighting)
+            lambert(base, Some([0, 1 << 30, 0]), &at, &lighting),
+            lambert(base, None, &at, &lighting)
         );
     }
 
@@ -824,7 +834,7 @@ mod tests {
                 let world = flat_color(
                     base,
                     p,
-                    [0; 3],
+                    &[0; 3],
                     Some(&nm),
                     Normalize::Newton,
                     (1 << 17, 1 << 18),
@@ -833,7 +843,7 @@ mod tests {
                 let local = flat_color(
                     base,
                     p,
-                    [0; 3],
+                    &[0; 3],
                     None,
                     Normalize::Newton,
                     (1 << 17, 1 << 18),

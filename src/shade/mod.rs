@@ -294,7 +294,7 @@ impl Shading for Flat {
         SolidPaint(flat_color(
             face.base,
             face.model(),
-            face.centre(lighting),
+            &face.centre(lighting),
             face.normal_matrix,
             face.normalize,
             face.extents,
