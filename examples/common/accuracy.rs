@@ -33,7 +33,7 @@ use fixed3d::mesh::{Mesh, Object, Transform};
 use fixed3d::pipeline::{Frame, MatrixFormat, Precision, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::raster::{triangle_spans, PixelRect};
-use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
+use fixed3d::scene::{Attenuation, DirectionalLight, LightColor, Lighting, PointLight, Scene};
 use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Shading};
 
 /// How a configuration shades.
@@ -163,9 +163,36 @@ pub fn configs() -> Vec<Config> {
     ]
 }
 
-/// A scene: one model placed as `translate · Ry · Rx · scale`, seen by a look-at camera.
+/// A point light of a scene, beside the ambient and directional light every scene has.
+#[derive(Clone, Copy, Debug)]
+pub struct Lamp {
+    pub position: Vec3,
+    pub intensity: Scalar,
+    pub attenuation: Attenuation,
+}
+
+impl Lamp {
+    /// Its term of Lambert's sum at world point `at` for a unit normal `n`, in f64.
+    fn term(&self, n: V3, at: V3) -> f64 {
+        let l = sub(f3(self.position), at);
+        let d = dot(l, l).sqrt();
+        if d == 0.0 {
+            return 0.0;
+        }
+        let fall = match self.attenuation {
+            Attenuation::Linear => 1.0 / (1.0 + d),
+            Attenuation::InverseSquare => 1.0 / (1.0 + d * d),
+            _ => 1.0,
+        };
+        f(self.intensity) * fall * (dot(n, l) / d).max(0.0)
+    }
+}
+
+/// A scene: one model placed as `translate · Ry · Rx · scale`, seen by a look-at camera, lit by
+/// [`AMBIENT`], [`LIGHT`] and, in some, a point light.
 #[derive(Clone, Debug)]
 pub struct SceneDef {
+    pub lamp: Option<Lamp>,
     pub name: &'static str,
     pub what: &'static str,
     pub model: Model,
@@ -238,6 +265,7 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
     let s = |v: f64| Scalar::from_num(v);
     let torus = Model::shape("torus").unwrap_or_else(|| sliver_fan(3));
     let base = SceneDef {
+        lamp: None,
         name: "torus",
         what: "the reference scene of docs/reference-scene.md (48x24 torus turned 20° about x, 30° about y)",
         model: torus.clone(),
@@ -352,6 +380,28 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
         ..base.clone()
     });
     out.push(SceneDef {
+        name: "lamp-near",
+        what: "the torus beside a point light falling off with the square of the distance, \
+               0.3 from its nearest point: strong fall-off across each face",
+        lamp: Some(Lamp {
+            position: Vec3::new(s(-0.6), s(0.5), s(0.9)),
+            intensity: s(1.5),
+            attenuation: Attenuation::InverseSquare,
+        }),
+        ..base.clone()
+    });
+    out.push(SceneDef {
+        name: "lamp-far",
+        what: "the torus under a point light 60 away, falling off with the square of the \
+               distance at an intensity of 3,000: large distances in Q16.16",
+        lamp: Some(Lamp {
+            position: Vec3::new(s(-30.0), s(40.0), s(30.0)),
+            intensity: s(3000.0),
+            attenuation: Attenuation::InverseSquare,
+        }),
+        ..base.clone()
+    });
+    out.push(SceneDef {
         name: "slivers",
         what: "a disc of 1024 needle triangles (under a pixel wide at the rim), tilted 60°",
         model: sliver_fan(1024),
@@ -436,14 +486,16 @@ impl SceneDef {
     }
 }
 
-/// Lambert's intensity for a normal of any length (ambient only for a zero normal).
-fn lambert(n: V3) -> f64 {
+/// Lambert's intensity for a normal of any length (ambient only for a zero normal) at world
+/// point `at` (read by the scene's point light).
+fn lambert(n: V3, at: V3, lamp: Option<&Lamp>) -> f64 {
     let len = dot(n, n).sqrt();
     if len == 0.0 {
         return AMBIENT;
     }
     let n = n.map(|c| c / len);
-    (AMBIENT + LIGHT.1 * dot(n, norm(LIGHT.0)).max(0.0)).clamp(0.0, 1.0)
+    let point = lamp.map_or(0.0, |l| l.term(n, at));
+    (AMBIENT + LIGHT.1 * dot(n, norm(LIGHT.0)).max(0.0) + point).clamp(0.0, 1.0)
 }
 
 /// What the ideal renderer knows about one pixel centre.
@@ -544,7 +596,11 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
         w * h
     ];
     let m = scene.ideal_clip_from_model();
-    let (rot, _) = scene.ideal_model();
+    let (rot, model) = scene.ideal_model();
+    let world = |p: V3| {
+        let c = apply4(&model, p);
+        [c[0], c[1], c[2]]
+    };
     let err = matrix_error(scene);
     let cell = (1u32 << (4 - subpixel_bits.min(4))) as f64 / 16.0;
     let snap = cell / 2.0 * std::f64::consts::SQRT_2;
@@ -553,10 +609,11 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
         .model
         .normals
         .iter()
-        .map(|n| {
+        .zip(&positions)
+        .map(|(n, p)| {
             let n = f3(*n);
             let wn = [0, 1, 2].map(|i| (0..3).map(|k| rot[i][k] * n[k]).sum::<f64>());
-            BASE.map(|b| b as f64 * lambert(wn))
+            BASE.map(|b| b as f64 * lambert(wn, world(*p), scene.lamp.as_ref()))
         })
         .collect();
     let clip: Vec<[f64; 4]> = positions.iter().map(|p| apply4(&m, *p)).collect();
@@ -576,7 +633,6 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
             })
         })
         .collect();
-    let (_, model) = scene.ideal_model();
     for tri in &scene.model.triangles {
         let idx = tri.map(|i| i as usize);
         let (Some(_), Some(_), Some(_)) = (clip.get(idx[0]), clip.get(idx[1]), clip.get(idx[2]))
@@ -584,11 +640,10 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
             continue;
         };
         let flat = {
-            let p = idx.map(|i| {
-                let c = apply4(&model, positions[i]);
-                [c[0], c[1], c[2]]
-            });
-            let s = lambert(cross(sub(p[1], p[0]), sub(p[2], p[0])));
+            let p = idx.map(|i| world(positions[i]));
+            let centre = [0, 1, 2].map(|k| (p[0][k] + p[1][k] + p[2][k]) / 3.0);
+            let n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+            let s = lambert(n, centre, scene.lamp.as_ref());
             BASE.map(|b| (b as f64 * s).floor())
         };
         // Clip-space vertices carrying their colours, clipped, projected.
@@ -763,7 +818,7 @@ pub struct Rendered {
 #[inline(never)]
 pub fn measured_frame<'a, S: Shading, D: DepthFormat>(
     frame: &Frame,
-    scene: &Scene<'_, 1>,
+    scene: &Scene<'_, 2>,
     shading: S,
     cache: &mut [ScreenVertex],
     color: &mut FrameBuffer<'a, Rgb888>,
@@ -793,13 +848,17 @@ fn draw_with<D: DepthFormat + Into<f64>>(
         scene.model_matrix(config.trig),
         Rgb888::new(BASE[0], BASE[1], BASE[2]),
     )];
-    let mut lighting = Lighting::<1>::new(LightColor::gray(Scalar::from_num(AMBIENT)));
+    let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(AMBIENT)));
     lighting
         .push(DirectionalLight::new(
             Vec3::from_f32(LIGHT.0[0] as f32, LIGHT.0[1] as f32, LIGHT.0[2] as f32)?,
             LightColor::gray(Scalar::from_num(LIGHT.1)),
         ))
         .ok()?;
+    if let Some(lamp) = &scene.lamp {
+        let light = PointLight::new(lamp.position, lamp.intensity).attenuated(lamp.attenuation);
+        lighting.push_point(light).ok()?;
+    }
     let world = Scene::new(&objects, lighting);
     let (w, h) = (scene.width, scene.height);
     let mut cache = vec![ScreenVertex::DEFAULT; world.vertex_count()];
