@@ -37,11 +37,11 @@ use embedded_graphics::Drawable;
 use crate::buffer::{fill, BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
 use crate::camera::{Camera, CameraError};
 use crate::math::{Angle, Mat4, Number, Scalar, Vec3};
-use crate::mesh::{Mesh, Object};
+use crate::mesh::{Mesh, Object, Specular};
 use crate::pipeline::{Bin, Cull, Frame, PrepareError, Prepared, ScreenVertex, Stats};
 use crate::projection::{ProjectionError, Viewport};
 use crate::scene::{Light, LightColor, LightError, Lighting, Scene};
-use crate::shade::{Flat, Gouraud, PerspectiveGouraud, Shading, Textured, Unlit};
+use crate::shade::{Flat, Gouraud, PerspectiveGouraud, Shading, Textured, Unlit, SPECULAR};
 use crate::texture::Texture;
 
 /// The most directional and point lights a frame of the [`Renderer`] takes (ambient lights
@@ -101,6 +101,7 @@ pub struct Model<'a> {
     shade: Shade,
     style: Style,
     texture: Option<&'a Texture<'a>>,
+    specular: Option<&'a Specular>,
 }
 
 impl<'a> Model<'a> {
@@ -115,6 +116,7 @@ impl<'a> Model<'a> {
             shade: Shade::Flat,
             style: Style::Solid,
             texture: None,
+            specular: None,
         }
     }
 
@@ -206,6 +208,41 @@ impl<'a> Model<'a> {
         }
     }
 
+    /// Glossy: with the highlights `specular` (Blinn-Phong: a colour and a shininess), found at
+    /// the vertices of a model shaded [`Shade::Gouraud`] or [`Shade::PerspectiveGouraud`]
+    /// (flat, unlit and textured models leave them out).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+    /// use fixed3d::mesh::{torus, Specular};
+    /// use fixed3d::prelude::*;
+    /// static GLOSS: Specular = Specular::new(Rgb888::new(255, 255, 255), 32);
+    /// let (mut p, mut n, mut t) = ([Vec3::ZERO; 200], [Vec3::ZERO; 200], [[0; 3]; 400]);
+    /// let ring = torus(Scalar::ONE, Scalar::from_num(0.4), 16, 8, &mut p, &mut n, &mut t).unwrap();
+    /// let shiny = Model::new(&ring, Rgb888::new(200, 30, 30))
+    ///     .shaded(Shade::Gouraud)
+    ///     .glossy(&GLOSS);
+    /// let lights = [Light::ambient(0.1), Light::directional([0, 0, 1], 0.9)];
+    /// let camera = Camera::perspective(60, 1, 10).looking_at([0, 0, 3], [0, 0, 0]);
+    /// let mut storage = Storage::<200, 400>::new();
+    /// let (mut color, mut depth) = ([Rgb888::new(0, 0, 0); 64 * 64], [0u16; 64 * 64]);
+    /// let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
+    /// let mut display = embedded_graphics::mock_display::MockDisplay::<Rgb888>::new();
+    /// display.set_allow_overdraw(true);
+    /// renderer.render(&[shiny], &lights, &camera, &mut display).unwrap();
+    /// // Where the surface faces the light and the viewer, the highlight whitens it.
+    /// let pixels = (0..64).flat_map(|y| (0..64).map(move |x| (x, y)));
+    /// let drawn: Vec<_> = pixels.filter_map(|(x, y)| display.get_pixel((x, y).into())).collect();
+    /// assert!(drawn.iter().any(|c| c.g() > 200 && c.b() > 200));
+    /// ```
+    #[must_use]
+    pub fn glossy(self, specular: &'a Specular) -> Self {
+        Model {
+            specular: Some(specular),
+            ..self
+        }
+    }
+
     /// Drawn as edges.
     #[must_use]
     pub fn wireframe(self) -> Self {
@@ -239,15 +276,25 @@ impl<'a> Model<'a> {
         self.texture
     }
 
-    /// The model as the pipeline's [`Object`]: its mesh, model matrix and colour (white for
-    /// a textured solid: lighting then gives the light that scales its texels).
+    /// Its highlights, if it is glossy.
+    #[must_use]
+    pub fn specular(&self) -> Option<&'a Specular> {
+        self.specular
+    }
+
+    /// The model as the pipeline's [`Object`]: its mesh, model matrix, colour (white for a
+    /// textured solid: lighting then gives the light that scales its texels) and highlights
+    /// (none for a textured solid).
     #[must_use]
     pub fn object(&self) -> Object<'a> {
-        let color = match (self.texture, self.style) {
-            (Some(_), Style::Solid) => Rgb888::new(255, 255, 255),
-            _ => self.color,
+        let textured = self.texture.is_some() && self.style == Style::Solid;
+        let color = if textured {
+            Rgb888::new(255, 255, 255)
+        } else {
+            self.color
         };
-        Object::new(self.mesh, self.model, color)
+        let specular = self.specular.filter(|_| SPECULAR && !textured);
+        Object::new(self.mesh, self.model, color).with_specular(specular)
     }
 }
 
@@ -281,7 +328,7 @@ pub enum RenderError<E> {
     /// More models than 65,535.
     TooManyModels,
     /// A model or light needs a cargo feature this build lacks (`gouraud`, `point-light`,
-    /// `texture` or `wireframe`).
+    /// `specular`, `texture` or `wireframe`).
     Disabled {
         /// The feature.
         feature: &'static str,
@@ -817,6 +864,8 @@ fn missing_feature(model: &Model<'_>) -> Option<&'static str> {
         Some("gouraud")
     } else if model.texture.is_some() && solid && !TEXTURE {
         Some("texture")
+    } else if model.specular.is_some() && smooth && solid && !SPECULAR {
+        Some("specular")
     } else {
         None
     }

@@ -1,13 +1,14 @@
-//! Point lights through the renderer: a flat face lit at its centre and Gouraud vertices lit
-//! at their world positions, against f64, wherever the model is placed; golden images of the
-//! torus under a point light, flat and Gouraud.
+//! Point lights and highlights through the renderer: a flat face lit at its centre and Gouraud
+//! vertices lit at their world positions, and highlights seen along the camera's axis, against
+//! f64, wherever the model and camera are placed; golden images of the torus under a point
+//! light, flat and Gouraud, and glossy.
 
 mod common;
 
 use common::golden;
 use common::screen::Screen;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
-use fixed3d::mesh::{torus, torus_counts, Mesh};
+use fixed3d::mesh::{torus, torus_counts, Mesh, Specular};
 use fixed3d::prelude::*;
 use fixed3d::scene::LightColor;
 
@@ -210,4 +211,128 @@ fn golden_point_light_torus() {
         .collect();
     assert!(lit.len() > 20_000);
     assert!(lit.iter().max() > Some(&600) && lit.iter().min() < Some(&150));
+}
+
+/// Highlights are seen along the camera's view axis: the triangle facing +y, glossy, every
+/// vertex normal +y, under one directional light, seen from random eyes: every vertex gets the
+/// same colour, which is the f64 Blinn-Phong value for the half vector between the light and
+/// the direction from the target to the eye.
+#[test]
+fn highlights_follow_the_camera() {
+    let positions = triangle_positions();
+    let normals = [Vec3::Y; 3];
+    let triangles = [[0u16, 1, 2]];
+    let mesh = Mesh::new(&positions, &triangles)
+        .and_then(|m| m.with_normals(&normals))
+        .unwrap();
+    let mut rng = common::Rng(0x6A09_E667_F3BC_C909);
+    let norm = |a: [f64; 3]| {
+        let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+        a.map(|c| c / l)
+    };
+    let (mut checked, mut bright) = (0, 0);
+    for k in 0..80 {
+        let q = |v: f64| Scalar::from_num(v).to_num::<f64>();
+        let eye = [
+            q(rng.range(-3.0, 3.0)),
+            q(rng.range(2.0, 6.0)),
+            q(rng.range(-3.0, 3.0)),
+        ];
+        let towards = [q(rng.range(-1.0, 1.0)), 1.0, q(rng.range(-1.0, 1.0))];
+        let shininess = [1u16, 8, 32, 128][k % 4];
+        let lights = [Light::ambient(0.1), Light::directional(towards, 0.5)];
+        let camera = Camera::perspective(60, 0.5, 100).looking_at(eye, [0, 0, 0]);
+        let gloss = Specular::new(Rgb888::new(200, 220, 255), shininess);
+        let model = Model::new(&mesh, BASE)
+            .shaded(Shade::Gouraud)
+            .glossy(&gloss);
+        let mut screen = Screen::new(64, 64, BLANK);
+        let mut storage = Storage::<3, 1>::new();
+        let (mut c, mut d) = ([Rgb888::BLACK; 64 * 64], [0u16; 64 * 64]);
+        let mut renderer = Renderer::new(&mut storage, &mut c, &mut d);
+        renderer
+            .render(&[model], &lights, &camera, &mut screen)
+            .unwrap();
+        let l = norm(towards);
+        let v = norm(eye);
+        let h = norm([l[0] + v[0], l[1] + v[1], l[2] + v[2]]);
+        let spec = (h[1].max(0.0).powi(shininess as i32) * 0.5).min(1.0);
+        let diffuse = (0.1 + 0.5 * l[1]).min(1.0);
+        let want = [(BASE.r(), 200u8), (BASE.g(), 220), (BASE.b(), 255)].map(|(b, s)| {
+            let d = (b as f64 * diffuse).floor() as i32;
+            (d + (s as f64 * spec).floor() as i32).min(255)
+        });
+        let drawn: Vec<_> = screen
+            .pixels
+            .iter()
+            .filter(|&&p| p != Rgb888::BLACK)
+            .collect();
+        assert!(drawn.len() > 20, "{k}: {} pixels", drawn.len());
+        for p in drawn {
+            let got = [p.r(), p.g(), p.b()].map(i32::from);
+            let close = got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1);
+            assert!(close, "{k} eye {eye:?}: {got:?} vs {want:?}");
+        }
+        bright += (want[2] > 100) as u32;
+        checked += 1;
+    }
+    assert!(checked == 80 && bright > 10, "{checked} {bright}");
+}
+
+/// The torus of the reference scene, glossy under a white directional light and a warm point
+/// light: Gouraud and perspective-correct Gouraud; flat leaves the highlights out.
+#[test]
+fn golden_specular_torus() {
+    let (nv, nt) = torus_counts(48, 24);
+    let (mut p, mut n, mut t) = (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0; 3]; nt]);
+    let mesh = torus(
+        Scalar::ONE,
+        Scalar::from_num(0.4),
+        48,
+        24,
+        &mut p,
+        &mut n,
+        &mut t,
+    )
+    .unwrap();
+    let lights = [
+        Light::ambient(0.1),
+        Light::directional([-1, 1, 1], 0.6),
+        PointLight::new([1.2, -0.4, 1.0], Rgb888::new(255, 190, 120))
+            .attenuated(Attenuation::Linear)
+            .into(),
+    ];
+    let camera = Camera::perspective(60, 1, 10).looking_at([0.0, 0.0, 2.6], [0, 0, 0]);
+    let gloss = Specular::new(Rgb888::new(255, 255, 255), 24);
+    let draw = |shade: Shade| {
+        let model = Model::new(&mesh, Rgb888::new(40, 90, 200))
+            .rotated_x(20)
+            .rotated_y(30)
+            .shaded(shade)
+            .glossy(&gloss);
+        let mut screen = Screen::new(320, 240, BLANK);
+        let (mut v, mut b) = (
+            vec![fixed3d::pipeline::ScreenVertex::DEFAULT; nv],
+            vec![fixed3d::pipeline::Bin::EMPTY; nt],
+        );
+        let (mut c, mut d) = (vec![Rgb888::BLACK; 320 * 240], vec![0u16; 320 * 240]);
+        let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
+        renderer
+            .render(&[model], &lights, &camera, &mut screen)
+            .unwrap();
+        screen.pixels
+    };
+    let gouraud = draw(Shade::Gouraud);
+    golden::check("specular_torus_gouraud", 320, 240, &gouraud);
+    golden::check(
+        "specular_torus_perspective",
+        320,
+        240,
+        &draw(Shade::PerspectiveGouraud),
+    );
+    // Highlights: pixels far redder than a blue surface can be lit (its red is 40 at most),
+    // which flat shading does not have.
+    let white = |p: &[Rgb888]| p.iter().filter(|c| c.r() > 150 && c.g() > 150).count();
+    assert!(white(&gouraud) > 100, "{}", white(&gouraud));
+    assert_eq!(white(&draw(Shade::Flat)), 0);
 }

@@ -305,12 +305,13 @@ fn unlit_models_keep_their_colour() {
     assert!(c.iter().filter(|&&p| p == Rgb565::from(BASE)).count() > 28_000);
 }
 
-/// Without the `gouraud`, `point-light`, `texture` and `wireframe` features a model or light
-/// that needs one is an error naming it (and the build links none of their code).
+/// Without the `gouraud`, `point-light`, `specular`, `texture` and `wireframe` features a model
+/// or light that needs one is an error naming it (and the build links none of their code).
 #[test]
 #[cfg(not(all(
     feature = "gouraud",
     feature = "point-light",
+    feature = "specular",
     feature = "texture",
     feature = "wireframe"
 )))]
@@ -323,6 +324,7 @@ fn models_needing_a_missing_feature_are_errors() {
     let cube = Model::new(&CUBE, Rgb888::RED);
     let texels = [Rgb888::RED];
     let texture = Texture::new(Texels::from(&texels), 1, 1).unwrap();
+    static GLOSS: fixed3d::mesh::Specular = fixed3d::mesh::Specular::new(Rgb888::WHITE, 8);
     for (model, feature, on) in [
         (
             cube.shaded(Shade::Gouraud),
@@ -330,6 +332,16 @@ fn models_needing_a_missing_feature_are_errors() {
             cfg!(feature = "gouraud"),
         ),
         (cube.wireframe(), "wireframe", cfg!(feature = "wireframe")),
+        (
+            cube.shaded(Shade::Gouraud).glossy(&GLOSS),
+            // A glossy Gouraud model needs both; without `gouraud` that one is named.
+            if cfg!(feature = "gouraud") {
+                "specular"
+            } else {
+                "gouraud"
+            },
+            cfg!(all(feature = "gouraud", feature = "specular")),
+        ),
         (
             cube.textured(&texture),
             "texture",

@@ -448,13 +448,57 @@ pub struct Object<'a> {
     pub model: Mat4,
     /// Base colour (lit by the scene's lights, or drawn as is when unlit).
     pub color: Rgb888,
+    /// Its highlights, if it is glossy (per-vertex shading only).
+    pub specular: Option<&'a Specular>,
 }
 
 impl<'a> Object<'a> {
-    /// An object.
+    /// An object, not glossy.
     #[must_use]
     pub const fn new(mesh: &'a Mesh<'a>, model: Mat4, color: Rgb888) -> Self {
-        Object { mesh, model, color }
+        Object {
+            mesh,
+            model,
+            color,
+            specular: None,
+        }
+    }
+
+    /// With highlights `specular` (or none).
+    #[must_use]
+    pub const fn with_specular(self, specular: Option<&'a Specular>) -> Self {
+        Object { specular, ..self }
+    }
+}
+
+/// A glossy surface's highlights (Blinn-Phong): their colour and how tight they are.
+///
+/// Each light adds `light · attenuation · max(0, N·H)^shininess` to the highlight's intensity,
+/// where `H` is the unit half vector between the directions towards the light and towards the
+/// viewer (taken along the camera's view axis, as if the viewer were far away), for a surface
+/// that faces the light; the sum, clamped to [0, 1], scales `color`, which is added to the
+/// surface's diffuse colour (each channel saturating at 255). Lit per vertex: models shaded
+/// [`Gouraud`](crate::render::Shade::Gouraud) or perspective-correct Gouraud show it.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb888;
+/// use fixed3d::mesh::Specular;
+/// static GLOSS: Specular = Specular::new(Rgb888::new(255, 255, 255), 32);
+/// assert_eq!(GLOSS.shininess, 32);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Specular {
+    /// The highlight's colour at full intensity.
+    pub color: Rgb888,
+    /// The exponent of `N·H`: larger is smaller and sharper (1 to 65,535; 0 counts as 1).
+    pub shininess: u16,
+}
+
+impl Specular {
+    /// Highlights of `color` and `shininess` (a `const fn`: they can be a `static`).
+    #[must_use]
+    pub const fn new(color: Rgb888, shininess: u16) -> Self {
+        Specular { color, shininess }
     }
 }
 

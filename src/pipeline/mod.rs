@@ -28,10 +28,12 @@ pub use vertex::ScreenVertex;
 
 use core::fmt;
 
+use embedded_graphics::pixelcolor::RgbColor;
+
 use crate::math::{Mat4, NARROW_CORE};
 use crate::projection::{Projection, Viewport};
 use crate::scene::Scene;
-use crate::shade::{vertex_normal, Shading};
+use crate::shade::{add_highlight, lambert, vertex_normal, Highlights, Shading, SPECULAR};
 
 use vertex::{outcode_and_project, project_words, Known, ScreenMap};
 
@@ -211,6 +213,16 @@ impl Frame {
             };
             let extent = object.mesh.extent();
             let points = S::PER_VERTEX && scene.lighting.points().next().is_some();
+            // A glossy object's highlights, for a viewer along the camera's view axis (the
+            // view matrix's third row, world space).
+            let highlights = match object.specular {
+                Some(specular) if S::PER_VERTEX && SPECULAR => {
+                    let [x, y, z, _] = self.view.to_bits()[2];
+                    let towards_viewer = [x, y, z].map(i64::from);
+                    Highlights::new(specular, towards_viewer, &scene.lighting)
+                }
+                _ => None,
+            };
             // Clip coordinates known to need no reduction (every unit-scale scene).
             let fits = clip_from_model.fits_32_bits(extent);
             // Every vertex known inside every plane (an object on screen and beyond the near
@@ -258,13 +270,12 @@ impl Frame {
                         } else {
                             [0; 3]
                         };
-                        let lit = crate::shade::lambert(
-                            object.color,
-                            vertex_normal(n.to_bits(), &normal_matrix, self.precision.normalize()),
-                            &at,
-                            &scene.lighting,
-                        );
-                        use embedded_graphics::pixelcolor::RgbColor;
+                        let unit =
+                            vertex_normal(n.to_bits(), &normal_matrix, self.precision.normalize());
+                        let mut lit = lambert(object.color, unit, &at, &scene.lighting);
+                        if let (Some(h), Some(n)) = (&highlights, &unit) {
+                            lit = add_highlight(lit, h.at(n, &at, &scene.lighting));
+                        }
                         [lit.r(), lit.g(), lit.b()]
                     }
                     None => [0; 3],

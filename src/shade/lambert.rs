@@ -103,7 +103,7 @@ fn cosine(n: Option<[i32; 3]>, l: &[i32; 3]) -> i32 {
 
 /// A cosine (Q2.30, below 2³¹) scaled by an attenuation factor (Q2.30, in [0, 1]).
 #[inline(always)]
-fn attenuate(d: i32, factor: i32) -> i32 {
+pub(super) fn attenuate(d: i32, factor: i32) -> i32 {
     (mul_wide(d, factor) >> 30) as i32
 }
 
@@ -111,7 +111,7 @@ fn attenuate(d: i32, factor: i32) -> i32 {
 /// is a Scalar's bits: it fits i32), within ±2³¹: no count of lights a memory can hold
 /// overflows a sum of them.
 #[inline(always)]
-fn term(channel: i64, d: i32) -> i64 {
+pub(super) fn term(channel: i64, d: i32) -> i64 {
     mul_wide(channel as i32, d) >> 30
 }
 

@@ -2,9 +2,10 @@
 //!
 //! Four shading types, chosen as a type parameter so that a program links only what it uses:
 //! [`Unlit`] (the object's colour as is), [`Flat`] (Lambert once per triangle, from its face
-//! normal, kept in the mesh where it has them), [`Gouraud`] (Lambert
-//! once per vertex, from the mesh's normals, then colours interpolated across the triangle:
-//! affine in screen space, every pixel a convex combination of the vertex colours) and
+//! normal, kept in the mesh where it has them), [`Gouraud`] (Lambert, and a glossy object's
+//! Blinn-Phong highlights, once per vertex from the mesh's normals, then colours interpolated
+//! across the triangle: affine in screen space, every pixel a convex combination of the vertex
+//! colours) and
 //! [`PerspectiveGouraud`] (the same, interpolated perspective-correctly at three divisions per
 //! pixel; `docs/accuracy.md` measures the difference). [`Textured`] maps a
 //! [`Texture`] across each triangle and scales its texels by one of
@@ -12,12 +13,14 @@
 
 mod lambert;
 mod paint;
+mod specular;
 mod texture;
 
 pub(crate) use lambert::{flat_color, kept_face_color, lambert, vertex_normal};
 pub use paint::{
     Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
 };
+pub(crate) use specular::{add as add_highlight, Highlights, SPECULAR};
 pub use texture::{TextureCursor, TexturePaint};
 
 use embedded_graphics::pixelcolor::Rgb888;
