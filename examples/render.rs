@@ -7,11 +7,13 @@
 //!   --out PATH                       PNG to write (default target/render/frame.png in the
 //!                                    checkout)
 //!   --size WxH                       default 320x240
-//!   --mode wire|flat|gouraud         default flat
+//!   --mode wire|flat|gouraud|perspective-gouraud
+//!                                    default flat
 //!   --eye X,Y,Z --target X,Y,Z --up X,Y,Z
 //!                                    look-at camera (up defaults to 0,1,0); without --eye the
 //!                                    model's bounding box is framed
 //!   --fov DEG                        vertical field of view, default 60
+//!   --ortho                          orthographic: no perspective, the model filling the height
 //!   --near N --far F                 clip planes (defaults derived from the framing)
 //!   --color R,G,B                    object colour 0-255 (default 255,160,64)
 //!   --ambient A                      ambient intensity 0-1 (default 0.2)
@@ -24,6 +26,9 @@
 //!                                    how point lights fall off with distance d: 1, 1/(1+d) or
 //!                                    1/(1+d²) (default none)
 //!   --range R                        point lights light nothing from distance R on
+//!   --specular S,SHININESS           white highlights of strength S (0-1) and exponent
+//!                                    SHININESS (1-65535) on untextured models, in the Gouraud
+//!                                    modes
 //!   --bg R,G,B                       background (default 0,0,0)
 //!   --no-cull  --no-depth
 //!   --bands ROWS                     render in horizontal bands of ROWS rows (same image)
@@ -45,14 +50,15 @@ use desktop::{framed, render, save_png, Mode, Model, Placed, View};
 use embedded_graphics::pixelcolor::Rgb888;
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
+use fixed3d::mesh::Specular;
 use fixed3d::projection::{Projection, ProjectionError, Viewport};
 use fixed3d::scene::{Attenuation, Light, LightColor};
 use fixed3d::texture::{Filter, Mapping, Texels, Texture, Wrap};
 
 const USAGE: &str = "usage: render [--obj PATH | --shape cube|tetrahedron|octahedron|sphere|torus] [--out PATH] \
-[--size WxH] [--mode wire|flat|gouraud] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z] [--fov DEG] [--near N] [--far F] \
+[--size WxH] [--mode wire|flat|gouraud|perspective-gouraud] [--ortho] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z] [--fov DEG] [--near N] [--far F] \
 [--color R,G,B] [--ambient A] [--light X,Y,Z[,I|,R,G,B]]... [--point-light X,Y,Z[,I|,R,G,B]]... \
-[--attenuation none|linear|inverse-square] [--range R] [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS] \
+[--attenuation none|linear|inverse-square] [--range R] [--specular S,SHININESS] [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS] \
 [--texture PATH] [--filter nearest|bilinear] [--wrap repeat|clamp] [--affine]";
 
 /// Where the PNG goes without `--out`: under the checkout's `target/`, never beside the sources.
@@ -84,6 +90,9 @@ struct Options {
     /// How every point light falls off, and where it stops.
     attenuation: Attenuation,
     range: Option<Scalar>,
+    ortho: bool,
+    /// White highlights on every untextured model (Gouraud modes).
+    specular: Option<Specular>,
     background: Rgb888,
     cull: bool,
     depth: bool,
@@ -169,6 +178,8 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
         ambient_given: false,
         attenuation: Attenuation::None,
         range: None,
+        ortho: false,
+        specular: None,
         texture: None,
         filter: Filter::Nearest,
         wrap: Wrap::Repeat,
@@ -209,7 +220,9 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
             "--mode" => {
                 let v = value()?;
                 o.mode = Mode::parse(&v).ok_or_else(|| {
-                    Failure::Usage(format!("--mode is wire, flat or gouraud, got {v:?}"))
+                    Failure::Usage(format!(
+                        "--mode is wire, flat, gouraud or perspective-gouraud, got {v:?}"
+                    ))
                 })?;
             }
             "--eye" => o.eye = Some(vec3(&value()?, "--eye")?),
@@ -280,6 +293,25 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
                 o.wrap = choice(&value()?, "--wrap", &choices)?;
             }
             "--affine" => o.mapping = Mapping::Affine,
+            "--ortho" => o.ortho = true,
+            "--specular" => {
+                let n = numbers(&value()?, "--specular", 2, 2)?;
+                let (strength, shininess) = (n[0], n[1]);
+                if !(0.0..=1.0).contains(&strength) {
+                    return Err(Failure::Usage(format!(
+                        "--specular: the strength is between 0 and 1, got {strength}"
+                    )));
+                }
+                if !(1.0..=65_535.0).contains(&shininess) || shininess.fract() != 0.0 {
+                    return Err(Failure::Usage(format!(
+                        "--specular: the shininess is a whole number from 1 to 65535, got \
+                         {shininess}"
+                    )));
+                }
+                let grey = (strength * 255.0).round() as u8;
+                let white = Rgb888::new(grey, grey, grey);
+                o.specular = Some(Specular::new(white, shininess as u16));
+            }
             "--no-cull" => o.cull = false,
             "--no-depth" => o.depth = false,
             "--bands" => {
@@ -475,6 +507,18 @@ fn run(args: &[String]) -> Result<String, Failure> {
             })?
         }
     };
+    // --ortho: the same camera, without perspective, the model's sphere filling the height.
+    let projection = if o.ortho {
+        let (radius, distance) = (Scalar::from_num(radius_f), (look.eye - centre).length());
+        let reach = radius.saturating_mul(Scalar::from_num(1.1));
+        let near = o.near.unwrap_or(distance.saturating_sub(reach));
+        let far = o.far.unwrap_or(distance.saturating_add(reach));
+        let height = radius.saturating_mul(Scalar::from_num(2.2));
+        Projection::orthographic(height, viewport.aspect(), near, far)
+            .map_err(|e| Failure::Usage(format!("--ortho: {e}")))?
+    } else {
+        projection
+    };
     // The texture: --texture, else the one the OBJ's material names (for a model with UVs;
     // one that cannot be read is then left out, with a warning).
     let texels = match (&o.texture, &o.source) {
@@ -520,6 +564,7 @@ fn run(args: &[String]) -> Result<String, Failure> {
         depth: o.depth,
         bands: o.bands,
         texture,
+        specular: o.specular,
     };
     let r = render(&objects, &frame_view).map_err(Failure::Input)?;
     if o.out == DEFAULT_OUT {

@@ -15,13 +15,14 @@
 //! | Q / E, Ctrl / Space | down / up |
 //! | arrow keys | turn (yaw and pitch) |
 //! | + / - | field of view |
-//! | M (or 1, 2, 3) | wireframe / flat / Gouraud |
+//! | M (or 1, 2, 3, 4) | wireframe / flat / Gouraud / perspective-correct Gouraud |
 //! | Z | depth buffer on / off |
 //! | C | back-face culling on / off |
 //! | O | orthographic / perspective |
 //! | Tab | spinning on / off |
 //! | L | put a point light where the camera is (fly, then L again, to move it) |
 //! | K | remove the point light |
+//! | G | highlights on / off (Gouraud modes) |
 //! | R | add an object: path, colour and position asked on the terminal |
 //! | Backspace | remove the last object |
 //! | P | save the frame as `target/screenshots/viewer-NNN.png`, never over an earlier file |
@@ -53,7 +54,7 @@ use embedded_graphics_simulator::{
 };
 use fixed3d::camera::FlyCamera;
 use fixed3d::math::{Angle, Scalar, Vec3};
-use fixed3d::mesh::Transform;
+use fixed3d::mesh::{Specular, Transform};
 use fixed3d::projection::Projection;
 use fixed3d::scene::{Attenuation, Light, LightColor, PointLight};
 
@@ -64,9 +65,9 @@ const TITLE: &str = "fixed3d viewer";
 const HELP: &[&str] = &[
     "W/S forward/back   A/D strafe   Q/E Ctrl/Space down/up",
     "arrows turn        +/- field of view",
-    "M or 1/2/3 wire/flat/gouraud   Z depth   C culling",
+    "M or 1/2/3/4 wire/flat/gouraud/perspective   Z depth   C culling",
     "O ortho/perspective   Tab spin   P save PNG",
-    "L point light at the camera   K remove it",
+    "L point light at the camera   K remove it   G highlights",
     "R add object (terminal)   Backspace remove last",
     "H help   Esc quit",
 ];
@@ -135,6 +136,8 @@ struct App {
     help: bool,
     /// Where the point light is, if there is one.
     lamp: Option<Vec3>,
+    /// White highlights on every model (Gouraud modes).
+    glossy: bool,
     held: HashSet<Keycode>,
     prompt: Option<Prompt>,
     message: String,
@@ -219,6 +222,9 @@ impl App {
             depth: self.depth,
             bands: 0,
             texture: None,
+            specular: self
+                .glossy
+                .then(|| Specular::new(Rgb888::new(255, 255, 255), 32)),
         })
     }
 
@@ -262,6 +268,7 @@ impl App {
             Keycode::Num1 => self.mode = Mode::Wire,
             Keycode::Num2 => self.mode = Mode::Flat,
             Keycode::Num3 => self.mode = Mode::Gouraud,
+            Keycode::Num4 => self.mode = Mode::Perspective,
             Keycode::Z => self.depth = !self.depth,
             Keycode::C => self.cull = !self.cull,
             Keycode::O => self.ortho = !self.ortho,
@@ -276,6 +283,11 @@ impl App {
                     at.y.to_num::<f32>(),
                     at.z.to_num::<f32>()
                 );
+                println!("{}", self.message);
+            }
+            Keycode::G => {
+                self.glossy = !self.glossy;
+                self.message = format!("highlights {}", if self.glossy { "on" } else { "off" });
                 println!("{}", self.message);
             }
             Keycode::K => {
@@ -555,6 +567,7 @@ fn main() {
         spin: Angle::ZERO,
         help: false,
         lamp: None,
+        glossy: false,
         held: HashSet::new(),
         prompt: None,
         message: "H for help".into(),
@@ -622,7 +635,7 @@ fn main() {
             Text::with_baseline(&status, Point::new(4, 2), text, Baseline::Top).draw(&mut display);
         if app.help {
             let h = HELP.len() as u32 * 12 + 8;
-            let _ = Rectangle::new(Point::new(8, 20), Size::new(340, h))
+            let _ = Rectangle::new(Point::new(8, 20), Size::new(420, h))
                 .into_styled(PrimitiveStyle::with_fill(Rgb888::new(0, 0, 60)))
                 .draw(&mut display);
             for (k, line) in HELP.iter().enumerate() {

@@ -118,4 +118,21 @@ fn every_knob_is_real_and_measured() {
     // Exact normalisation and the default agree within a level; micromath's invsqrt does not.
     let exact = run(torus, &by_name("normalize-exact"));
     assert!(exact.color_max <= 1.0);
+    // Highlights and point lights, per vertex, follow the f64 values as the plain torus does
+    // (within 3 levels, perspective-correct); a crate frame without them is far off.
+    let perspective = by_name("gouraud-perspective");
+    for name in ["glossy", "lamp-near", "lamp-far"] {
+        let m = run(scene(name), &perspective);
+        assert!(m.color_max <= 3.0, "{name}: {m:?}");
+    }
+    let glossy = scene("glossy");
+    let matte = SceneDef {
+        gloss: None,
+        lamp: None,
+        ..glossy.clone()
+    };
+    let reference = ideal(glossy, Shade::Perspective, 4);
+    let (image, _) = render(&matte, &perspective, 1).expect("the scene renders");
+    let m = measure(glossy, &perspective, &reference, &image);
+    assert!(m.color_max > 100.0, "{m:?}");
 }

@@ -125,6 +125,10 @@ fn bad_arguments_exit_2() {
         vec!["--shape", "cube", "--point-light", "0,0"],
         vec!["--shape", "cube", "--attenuation", "cubic"],
         vec!["--shape", "cube", "--range", "0"],
+        vec!["--shape", "cube", "--specular", "2,8"],
+        vec!["--shape", "cube", "--specular", "0.5,0"],
+        vec!["--shape", "cube", "--specular", "0.5,2.5"],
+        vec!["--shape", "cube", "--specular", "0.5"],
         vec!["--shape", "cube", "--near", "-1", "--far", "5"],
         vec!["--shape", "cube", "--bands", "0"],
         vec!["--shape", "cube", "--what"],
@@ -483,4 +487,67 @@ fn render_tool_point_lights() {
     use embedded_graphics::pixelcolor::RgbColor;
     let red = draw("cli_lamp_red.png", &["--point-light", "0,0,3,1,0,0"]);
     assert!(red.iter().any(|c| c.r() > 200) && red.iter().all(|c| c.g() < 30));
+}
+
+/// `--specular` whitens a Gouraud sphere where it faces the light and the viewer, and leaves
+/// a flat one as it was; `--mode perspective-gouraud` shows the highlights too; `--ortho`
+/// draws the sphere, not as the perspective camera does.
+#[test]
+fn render_tool_specular_ortho_and_perspective_gouraud() {
+    use embedded_graphics::pixelcolor::RgbColor;
+    let draw = |name: &str, extra: &[&str]| {
+        let out = out_png(name);
+        let mut args = vec!["--shape", "sphere", "--size", "80x80", "--out", &out];
+        args.extend([
+            "--color",
+            "200,40,40",
+            "--eye",
+            "0,0,4",
+            "--target",
+            "0,0,0",
+        ]);
+        args.extend(["--light", "0,0,1,0.8"]);
+        args.extend(extra);
+        let o = run(&args);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        common::golden::read_png(std::path::Path::new(&out))
+            .unwrap()
+            .2
+    };
+    let white = |p: &[embedded_graphics::pixelcolor::Rgb888]| {
+        p.iter().filter(|c| c.g() > 180 && c.b() > 180).count()
+    };
+    let gouraud = draw("cli_matte.png", &["--mode", "gouraud"]);
+    let glossy = draw(
+        "cli_glossy.png",
+        &["--mode", "gouraud", "--specular", "1,16"],
+    );
+    assert_eq!(white(&gouraud), 0);
+    assert!(white(&glossy) > 20, "{}", white(&glossy));
+    let perspective = ["--mode", "perspective-gouraud", "--specular", "1,16"];
+    assert!(white(&draw("cli_glossy_p.png", &perspective)) > 20);
+    let flat = draw("cli_flat.png", &["--mode", "flat"]);
+    assert_eq!(
+        draw(
+            "cli_flat_glossy.png",
+            &["--mode", "flat", "--specular", "1,16"]
+        ),
+        flat
+    );
+    let ortho = draw("cli_ortho.png", &["--ortho"]);
+    let covered = |p: &[embedded_graphics::pixelcolor::Rgb888]| {
+        p.iter()
+            .filter(|c| **c != embedded_graphics::pixelcolor::Rgb888::BLACK)
+            .count()
+    };
+    assert!(
+        covered(&ortho) > 1000 && ortho != flat,
+        "{}",
+        covered(&ortho)
+    );
 }

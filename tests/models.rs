@@ -25,6 +25,7 @@ fn view(mode: Mode, look: LookAt, projection: Projection, w: u32, h: u32) -> Vie
         depth: true,
         bands: 0,
         texture: None,
+        specular: None,
     }
 }
 

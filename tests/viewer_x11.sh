@@ -3,9 +3,9 @@
 # screenshots with ImageMagick, and checks that the picture changes the right way.
 #   W makes the model larger; Left turns the view (the scene moves right); + widens the field of
 #   view and moves nothing (whatever keys the layout needs for it); M changes the image; P saves
-#   screenshots under new names; L adds a point light and K removes it; the frame-time lines pause while R asks on the terminal, and a
-#   file without triangles is asked again; Escape quits cleanly; without a display the viewer
-#   exits 1 with one line.
+#   screenshots under new names; L adds a point light and K removes it; G toggles highlights;
+#   the frame-time lines pause while R asks on the terminal, and a file without triangles is
+#   asked again; Escape quits cleanly; without a display the viewer exits 1 with one line.
 # Needs: xvfb xdotool imagemagick x11-utils libsdl2 (installed by .ci/run), and the viewer built
 # with `cargo build --release --features window --example viewer`.
 set -euo pipefail
@@ -103,6 +103,16 @@ n=$(changed unlit-scene unlit2-scene)
 echo "K: $n pixels differ from before L"
 [ "$n" -lt 20 ] || fail "K did not take the point light away ($n pixels)"
 grep -q "point light removed" "$out/viewer.log" || fail "K did not report the removal"
+# G turns highlights on (the scene changes) and off again (as it was).
+xdotool key g; sleep 0.6
+shot glossy; scene glossy
+n=$(changed unlit-scene glossy-scene)
+echo "G: $n pixels changed"
+[ "$n" -gt 500 ] || fail "G did not add highlights ($n pixels)"
+xdotool key g; sleep 0.6
+shot matte; scene matte
+n=$(changed unlit-scene matte-scene)
+[ "$n" -lt 20 ] || fail "G again did not take the highlights away ($n pixels)"
 
 # P saves under the next free name, never over an earlier file.
 xdotool key p; sleep 0.5; xdotool key p; sleep 0.5

@@ -29,7 +29,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use fixed3d::buffer::{ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Mat4, Normalize, Scalar, Trig, Vec3};
-use fixed3d::mesh::{Mesh, Object, Transform};
+use fixed3d::mesh::{Mesh, Object, Specular, Transform};
 use fixed3d::pipeline::{Frame, MatrixFormat, Precision, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::raster::{triangle_spans, PixelRect};
@@ -172,19 +172,50 @@ pub struct Lamp {
 }
 
 impl Lamp {
-    /// Its term of Lambert's sum at world point `at` for a unit normal `n`, in f64.
-    fn term(&self, n: V3, at: V3) -> f64 {
+    /// The unit direction from world point `at` towards the lamp, and its intensity there
+    /// (attenuated); `None` at the lamp.
+    fn towards(&self, at: V3) -> Option<(V3, f64)> {
         let l = sub(f3(self.position), at);
         let d = dot(l, l).sqrt();
         if d == 0.0 {
-            return 0.0;
+            return None;
         }
         let fall = match self.attenuation {
             Attenuation::Linear => 1.0 / (1.0 + d),
             Attenuation::InverseSquare => 1.0 / (1.0 + d * d),
             _ => 1.0,
         };
-        f(self.intensity) * fall * (dot(n, l) / d).max(0.0)
+        Some((l.map(|c| c / d), f(self.intensity) * fall))
+    }
+
+    /// Its term of Lambert's sum at world point `at` for a unit normal `n`, in f64.
+    fn term(&self, n: V3, at: V3) -> f64 {
+        self.towards(at)
+            .map_or(0.0, |(l, i)| i * dot(n, l).max(0.0))
+    }
+}
+
+/// A glossy scene's highlights: colour and shininess (see `fixed3d::mesh::Specular`).
+#[derive(Clone, Copy, Debug)]
+pub struct Gloss {
+    pub color: [u8; 3],
+    pub shininess: u16,
+}
+
+impl Gloss {
+    /// The highlight (per channel, 8-bit units) at a vertex of unit normal `n` at world point
+    /// `at`, for a viewer far along `towards_viewer` (unit), in f64.
+    fn at(&self, n: V3, at: V3, towards_viewer: V3, lamp: Option<&Lamp>) -> [f64; 3] {
+        let sun = (norm(LIGHT.0), LIGHT.1);
+        let lights = std::iter::once(sun).chain(lamp.and_then(|l| l.towards(at)));
+        let s: f64 = lights
+            .filter(|(l, _)| dot(n, *l) > 0.0)
+            .map(|(l, i)| {
+                let h = norm([0, 1, 2].map(|k| l[k] + towards_viewer[k]));
+                i * dot(n, h).max(0.0).powi(self.shininess as i32)
+            })
+            .sum();
+        self.color.map(|c| c as f64 * s.clamp(0.0, 1.0))
     }
 }
 
@@ -193,6 +224,7 @@ impl Lamp {
 #[derive(Clone, Debug)]
 pub struct SceneDef {
     pub lamp: Option<Lamp>,
+    pub gloss: Option<Gloss>,
     pub name: &'static str,
     pub what: &'static str,
     pub model: Model,
@@ -266,6 +298,7 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
     let torus = Model::shape("torus").unwrap_or_else(|| sliver_fan(3));
     let base = SceneDef {
         lamp: None,
+        gloss: None,
         name: "torus",
         what: "the reference scene of docs/reference-scene.md (48x24 torus turned 20° about x, 30° about y)",
         model: torus.clone(),
@@ -398,6 +431,21 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
             position: Vec3::new(s(-30.0), s(40.0), s(30.0)),
             intensity: s(3000.0),
             attenuation: Attenuation::InverseSquare,
+        }),
+        ..base.clone()
+    });
+    out.push(SceneDef {
+        name: "glossy",
+        what: "the torus with white highlights of shininess 32 (Gouraud shading shows them) \
+               under the scene's light and a point light falling off linearly",
+        lamp: Some(Lamp {
+            position: Vec3::new(s(1.2), s(-0.4), s(1.0)),
+            intensity: s(1.0),
+            attenuation: Attenuation::Linear,
+        }),
+        gloss: Some(Gloss {
+            color: [255, 255, 255],
+            shininess: 32,
         }),
         ..base.clone()
     });
@@ -597,6 +645,7 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
     ];
     let m = scene.ideal_clip_from_model();
     let (rot, model) = scene.ideal_model();
+    let towards_viewer = norm(sub(f3(scene.eye), f3(scene.target)));
     let world = |p: V3| {
         let c = apply4(&model, p);
         [c[0], c[1], c[2]]
@@ -613,7 +662,14 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
         .map(|(n, p)| {
             let n = f3(*n);
             let wn = [0, 1, 2].map(|i| (0..3).map(|k| rot[i][k] * n[k]).sum::<f64>());
-            BASE.map(|b| b as f64 * lambert(wn, world(*p), scene.lamp.as_ref()))
+            let (at, lamp) = (world(*p), scene.lamp.as_ref());
+            let diffuse = BASE.map(|b| b as f64 * lambert(wn, at, lamp));
+            let len = dot(wn, wn).sqrt();
+            let highlight = match scene.gloss {
+                Some(g) if len > 0.0 => g.at(wn.map(|c| c / len), at, towards_viewer, lamp),
+                _ => [0.0; 3],
+            };
+            [0, 1, 2].map(|k| (diffuse[k] + highlight[k]).min(255.0))
         })
         .collect();
     let clip: Vec<[f64; 4]> = positions.iter().map(|p| apply4(&m, *p)).collect();
@@ -843,11 +899,16 @@ fn draw_with<D: DepthFormat + Into<f64>>(
     let mesh = Mesh::new(&scene.model.positions, &scene.model.triangles)
         .and_then(|m| m.with_normals(&scene.model.normals))
         .ok()?;
+    let specular = scene.gloss.map(|g| {
+        let [r, g_, b] = g.color;
+        Specular::new(Rgb888::new(r, g_, b), g.shininess)
+    });
     let objects = [Object::new(
         &mesh,
         scene.model_matrix(config.trig),
         Rgb888::new(BASE[0], BASE[1], BASE[2]),
-    )];
+    )
+    .with_specular(specular.as_ref())];
     let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(AMBIENT)));
     lighting
         .push(DirectionalLight::new(

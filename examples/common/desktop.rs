@@ -11,7 +11,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use fixed3d::buffer::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use fixed3d::camera::{Framing, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
-use fixed3d::mesh::{self, vertex_normals, Mesh, Object, Triangle, Uv};
+use fixed3d::mesh::{self, vertex_normals, Mesh, Object, Specular, Triangle, Uv};
 use fixed3d::obj::{
     self, Aabb, ObjBuffers, ObjCounts, ObjError, ObjErrorKind, ObjStream, Placement, SplitBuffers,
     WideBounds, NO_INDEX,
@@ -19,7 +19,7 @@ use fixed3d::obj::{
 use fixed3d::pipeline::{Cull, Frame, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{Light, Lighting, Scene};
-use fixed3d::shade::{Flat, Gouraud, Textured, Unlit};
+use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Textured, Unlit};
 use fixed3d::texture::Texture;
 
 /// Lights a desktop scene holds at most.
@@ -422,6 +422,8 @@ pub enum Mode {
     Wire,
     Flat,
     Gouraud,
+    /// Gouraud interpolated perspective-correctly.
+    Perspective,
 }
 
 impl Mode {
@@ -430,6 +432,7 @@ impl Mode {
             "wire" => Some(Mode::Wire),
             "flat" => Some(Mode::Flat),
             "gouraud" => Some(Mode::Gouraud),
+            "perspective-gouraud" => Some(Mode::Perspective),
             _ => None,
         }
     }
@@ -439,6 +442,7 @@ impl Mode {
             Mode::Wire => "wire",
             Mode::Flat => "flat",
             Mode::Gouraud => "gouraud",
+            Mode::Perspective => "perspective-gouraud",
         }
     }
 
@@ -446,7 +450,8 @@ impl Mode {
         match self {
             Mode::Wire => Mode::Flat,
             Mode::Flat => Mode::Gouraud,
-            Mode::Gouraud => Mode::Wire,
+            Mode::Gouraud => Mode::Perspective,
+            Mode::Perspective => Mode::Wire,
         }
     }
 }
@@ -477,6 +482,8 @@ pub struct View<'t> {
     pub bands: u32,
     /// The texture of every model, lit by the mode (flat or Gouraud; wireframes ignore it).
     pub texture: Option<Texture<'t>>,
+    /// The highlights of every untextured model (Gouraud modes show them).
+    pub specular: Option<Specular>,
 }
 
 /// What rendering a frame produced.
@@ -543,7 +550,8 @@ pub fn render(objects: &[Placed<'_>], view: &View<'_>) -> Result<Rendered, Strin
         .map(|(o, m)| {
             // A textured surface is lit white: the light then scales its texels.
             let textured = view.texture.is_some() && view.mode != Mode::Wire;
-            Object::new(m, o.matrix, if textured { Rgb888::WHITE } else { o.color })
+            let object = Object::new(m, o.matrix, if textured { Rgb888::WHITE } else { o.color });
+            object.with_specular(view.specular.as_ref().filter(|_| !textured))
         })
         .collect();
     let ambient = [Light::ambient(view.ambient)];
@@ -570,7 +578,7 @@ pub fn render(objects: &[Placed<'_>], view: &View<'_>) -> Result<Rendered, Strin
                 .draw_wireframe(&mut color)
                 .map_err(|e| format!("{e:?}"))?
         }
-        Mode::Flat | Mode::Gouraud if view.texture.is_some() => {
+        Mode::Flat | Mode::Gouraud | Mode::Perspective if view.texture.is_some() => {
             let texture = view.texture.as_ref().ok_or("no texture")?;
             let (flat, gouraud) = (
                 Textured {
@@ -600,6 +608,13 @@ pub fn render(objects: &[Placed<'_>], view: &View<'_>) -> Result<Rendered, Strin
         Mode::Gouraud => draw(
             &frame
                 .prepare(&scene, &mut cache, Gouraud)
+                .map_err(|e| e.to_string())?,
+            &mut pixels,
+            view,
+        )?,
+        Mode::Perspective => draw(
+            &frame
+                .prepare(&scene, &mut cache, PerspectiveGouraud)
                 .map_err(|e| e.to_string())?,
             &mut pixels,
             view,
