@@ -72,6 +72,9 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     let gouraud_hash = framed(&mut |f, c, fb, d| {
         gouraud(&mesh, f, c, fb, d);
     });
+    let phong_hash = framed(&mut |f, c, fb, d| {
+        phong(&mesh, f, c, fb, d);
+    });
     let (mut tp, mut tn, mut tuv, mut tt) = (
         vec![Vec3::ZERO; TEXTURED_VERTICES],
         vec![Vec3::ZERO; TEXTURED_VERTICES],
@@ -212,6 +215,7 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
         ("flat", flat_hash),
         ("full", full_hash),
         ("gouraud", gouraud_hash),
+        ("phong", phong_hash),
         ("textured", textured_hash),
         ("bands", bands_hash),
         ("obj", obj_hash),

@@ -7,6 +7,7 @@
 #   PRESETS="full wire" TARGETS=thumbv6m-none-eabi bench/mcu/run.sh
 #   BOARD=microbit bench/mcu/run.sh   # `wire` on the micro:bit model: a real Cortex-M0, 16 KiB RAM
 #   PRESETS=knobs bench/mcu/run.sh    # the torus in every configuration of docs/accuracy.md
+#   PRESETS=phong bench/mcu/run.sh    # Gouraud, highlights and a point light (their features)
 #   NORMALS=per-frame bench/mcu/run.sh  # `full` and `bands` without their kept face normals
 #   CHECK=1 bench/mcu/run.sh     # fail if a hash differs from bench/mcu/hashes.txt (the host's)
 #                                # or a library's flash exceeds its budget in docs/footprint.md
@@ -44,9 +45,11 @@ else
     # keeping them.
     [[ ${NORMALS:-kept} == per-frame ]] && features+=(--features per-frame-normals)
 fi
-# `knobs` (every configuration of docs/accuracy.md) needs micromath; ask for it alone, as the
-# other presets would then be built with it too.
+# `knobs` (every configuration of docs/accuracy.md) needs micromath, and `phong` the library's
+# point lights and highlights; ask for each alone, as the other presets would then be built
+# with them too.
 [[ " $PRESETS " == *" knobs "* ]] && features+=(--features micromath)
+[[ " $PRESETS " == *" phong "* ]] && features+=(--features phong)
 OPT=${OPT:-s}
 CHECK=${CHECK:-0}
 QEMU_TIMEOUT=${QEMU_TIMEOUT:-600}

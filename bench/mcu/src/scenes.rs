@@ -10,11 +10,13 @@ use embedded_graphics::Pixel;
 use fixed3d::buffer::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
 use fixed3d::camera::{Camera, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
-use fixed3d::mesh::{textured_torus, torus, Mesh, Object, Triangle, Uv, CUBE};
+use fixed3d::mesh::{textured_torus, torus, Mesh, Object, Specular, Triangle, Uv, CUBE};
 use fixed3d::pipeline::{Bin, Cull, Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::render::{Model, Renderer};
-use fixed3d::scene::{DirectionalLight, Light, LightColor, Lighting, Scene};
+use fixed3d::scene::{
+    Attenuation, DirectionalLight, Light, LightColor, Lighting, PointLight, Scene,
+};
 use fixed3d::shade::{Flat, Gouraud, Textured, Unlit};
 use fixed3d::texture::{Texels, Texture};
 
@@ -505,6 +507,35 @@ pub fn gouraud(
 ) -> Option<()> {
     let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
     let scene = Scene::new(&objects, three_lights());
+    depth_frame(frame(W, H)?, &scene, Gouraud, cache, color, depth)
+}
+
+/// The `phong` preset's highlights: white, shininess 32.
+pub static GLOSS: Specular = Specular::new(Rgb888::WHITE, 32);
+
+/// Ambient and one warm point light beside the torus, falling off linearly.
+pub fn lamp() -> Lighting<1> {
+    let mut l = Lighting::new(LightColor::gray(s(3, 20)));
+    let light = PointLight::new(
+        Vec3::new(s(-3, 2), s(1, 1), s(3, 2)),
+        Rgb888::new(255, 230, 200),
+    );
+    let _ = l.push_point(light.attenuated(Attenuation::Linear));
+    l
+}
+
+/// `phong`: `gouraud`'s torus, glossy, under one point light (the `point-light` and
+/// `specular` features).
+pub fn phong(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let torus = Object::new(mesh, torus_model(f), Rgb888::new(60, 120, 220));
+    let objects = [torus.with_specular(Some(&GLOSS))];
+    let scene = Scene::new(&objects, lamp());
     depth_frame(frame(W, H)?, &scene, Gouraud, cache, color, depth)
 }
 
