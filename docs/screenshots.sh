@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the pictures in docs/images: the three render modes from the render tool, and a
-# screenshot of the viewer in a real window under Xvfb (needs xvfb, xdotool, imagemagick and
+# Regenerates the pictures in docs/images: the three render modes and the showcase scene file
+# from the render tool, and a screenshot of the viewer in a real window under Xvfb (needs xvfb, xdotool, imagemagick and
 # libsdl2, as .ci/run installs them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,6 +11,8 @@ for mode in wire flat gouraud; do
         --eye -1.5,0.6,-1.7 --target 0,0.05,0 --light -1,1,-1,0.75 --light 1,0.3,-0.2,0.3 \
         --out "docs/images/render-$mode.png"
 done
+target/release/examples/render --scene examples/scenes/showcase.toml --size 480x300 \
+    --out docs/images/render-scene.png
 display=:98
 Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
 xvfb=$!
@@ -30,4 +32,4 @@ sleep 0.5
 import -window "$wid" docs/images/viewer-help.png
 xdotool key Escape
 wait $viewer || true
-echo "wrote docs/images/{render-wire,render-flat,render-gouraud,viewer,viewer-help}.png"
+echo "wrote docs/images/{render-wire,render-flat,render-gouraud,render-scene,viewer,viewer-help}.png"

@@ -4,6 +4,9 @@
 //! ```text
 //! cargo run --release --example render -- [OPTIONS]
 //!   --obj PATH | --shape NAME        mesh; NAME is cube, tetrahedron, octahedron, sphere or torus
+//!   --scene FILE                     objects, lights and camera from a TOML scene file (see
+//!                                    docs/tools.md); only --out, --size, --bg and --bands go
+//!                                    with it
 //!   --out PATH                       PNG to write (default target/render/frame.png in the
 //!                                    checkout)
 //!   --size WxH                       default 320x240
@@ -45,6 +48,8 @@
 
 #[path = "common/desktop.rs"]
 mod desktop;
+#[path = "common/scene_file.rs"]
+mod scene_file;
 
 use desktop::{framed, render, save_png, Mode, Model, Placed, View};
 use embedded_graphics::pixelcolor::Rgb888;
@@ -55,7 +60,7 @@ use fixed3d::projection::{Projection, ProjectionError, Viewport};
 use fixed3d::scene::{Attenuation, Light, LightColor};
 use fixed3d::texture::{Filter, Mapping, Texels, Texture, Wrap};
 
-const USAGE: &str = "usage: render [--obj PATH | --shape cube|tetrahedron|octahedron|sphere|torus] [--out PATH] \
+const USAGE: &str = "usage: render [--obj PATH | --shape cube|tetrahedron|octahedron|sphere|torus | --scene FILE] [--out PATH] \
 [--size WxH] [--mode wire|flat|gouraud|perspective-gouraud] [--ortho] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z] [--fov DEG] [--near N] [--far F] \
 [--color R,G,B] [--ambient A] [--light X,Y,Z[,I|,R,G,B]]... [--point-light X,Y,Z[,I|,R,G,B]]... \
 [--attenuation none|linear|inverse-square] [--range R] [--specular S,SHININESS] [--bg R,G,B] [--no-cull] [--no-depth] [--bands ROWS] \
@@ -75,6 +80,10 @@ enum Failure {
 
 struct Options {
     source: Option<Source>,
+    /// `--scene FILE`: objects, lights and camera from a scene file.
+    scene: Option<String>,
+    /// The flags given that a scene file replaces.
+    scene_flags: Vec<String>,
     out: String,
     size: (u32, u32),
     mode: Mode,
@@ -159,6 +168,8 @@ fn rgb(s: &str, what: &str) -> Result<Rgb888, Failure> {
 fn parse_args(args: &[String]) -> Result<Options, Failure> {
     let mut o = Options {
         source: None,
+        scene: None,
+        scene_flags: Vec::new(),
         out: DEFAULT_OUT.into(),
         size: (320, 240),
         mode: Mode::Flat,
@@ -192,7 +203,15 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
                 .cloned()
                 .ok_or_else(|| Failure::Usage(format!("{flag} needs a value")))
         };
+        if ![
+            "--scene", "--out", "--size", "--bg", "--bands", "-h", "--help",
+        ]
+        .contains(&flag.as_str())
+        {
+            o.scene_flags.push(flag.clone());
+        }
         match flag.as_str() {
+            "--scene" => o.scene = Some(value()?),
             "--obj" => o.source = Some(Source::Obj(value()?)),
             "--shape" => o.source = Some(Source::Shape(value()?)),
             "--out" => o.out = value()?,
@@ -326,9 +345,18 @@ fn parse_args(args: &[String]) -> Result<Options, Failure> {
             other => return Err(Failure::Usage(format!("unknown option {other:?}"))),
         }
     }
+    if o.scene.is_some() {
+        if let Some(flag) = o.scene_flags.first() {
+            return Err(Failure::Usage(format!(
+                "{flag}: with --scene, the scene file gives the objects, lights and camera \
+                 (only --out, --size, --bg and --bands go with it)"
+            )));
+        }
+        return Ok(o);
+    }
     if o.source.is_none() {
         return Err(Failure::Usage(
-            "give a mesh with --obj PATH or --shape NAME".into(),
+            "give a mesh with --obj PATH or --shape NAME, or a scene with --scene FILE".into(),
         ));
     }
     // The default light joins the default ambient light only: `--ambient A` alone lights by
@@ -400,6 +428,9 @@ fn choice<T: Copy>(v: &str, flag: &str, choices: &[(&str, T)]) -> Result<T, Fail
 
 fn run(args: &[String]) -> Result<String, Failure> {
     let o = parse_args(args)?;
+    if let Some(path) = &o.scene {
+        return run_scene(path, &o);
+    }
     let model = match &o.source {
         Some(Source::Obj(path)) => {
             Model::load_obj(path).map_err(|e| Failure::Input(e.to_string()))?
@@ -567,12 +598,7 @@ fn run(args: &[String]) -> Result<String, Failure> {
         specular: o.specular,
     };
     let r = render(&objects, &frame_view).map_err(Failure::Input)?;
-    if o.out == DEFAULT_OUT {
-        if let Some(dir) = std::path::Path::new(DEFAULT_OUT).parent() {
-            std::fs::create_dir_all(dir).map_err(|e| Failure::Input(format!("{e}")))?;
-        }
-    }
-    save_png(&o.out, w, h, &r.pixels).map_err(Failure::Input)?;
+    write_png(&o.out, w, h, &r.pixels)?;
     let drawn = if o.mode == Mode::Wire {
         r.stats.primitives - r.stats.invalid - r.stats.outside - r.stats.culled - r.stats.degenerate
     } else {
@@ -585,6 +611,33 @@ fn run(args: &[String]) -> Result<String, Failure> {
         drawn,
         r.stats.primitives
     ))
+}
+
+/// `--scene FILE`: the file's objects, lights and camera through the `Renderer`.
+fn run_scene(path: &str, o: &Options) -> Result<String, Failure> {
+    let scene = scene_file::LoadedScene::load(path).map_err(Failure::Input)?;
+    let (w, h) = o.size;
+    let frame = scene
+        .render(w, h, o.background, o.bands)
+        .map_err(|e| Failure::Input(format!("{path}: {e}")))?;
+    write_png(&o.out, w, h, &frame.pixels)?;
+    let covered = frame.pixels.iter().filter(|&&p| p != o.background).count();
+    Ok(format!(
+        "rendered {w}x{h} in {} us: covered {covered} pixels, drew {} of {} triangles",
+        frame.time.as_micros(),
+        frame.stats.drawn,
+        frame.stats.primitives
+    ))
+}
+
+/// Writes the PNG, making the default output's folder when it is the one written.
+fn write_png(out: &str, w: u32, h: u32, pixels: &[Rgb888]) -> Result<(), Failure> {
+    if out == DEFAULT_OUT {
+        if let Some(dir) = std::path::Path::new(DEFAULT_OUT).parent() {
+            std::fs::create_dir_all(dir).map_err(|e| Failure::Input(format!("{e}")))?;
+        }
+    }
+    save_png(out, w, h, pixels).map_err(Failure::Input)
 }
 
 fn main() {

@@ -2,6 +2,8 @@
 //! panic whatever it is given.
 
 mod common;
+#[path = "../examples/common/desktop.rs"]
+mod desktop;
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -549,5 +551,232 @@ fn render_tool_specular_ortho_and_perspective_gouraud() {
         covered(&ortho) > 1000 && ortho != flat,
         "{}",
         covered(&ortho)
+    );
+}
+
+/// A scene file of four objects (a glossy Gouraud torus, a textured OBJ floor with `vt`, a
+/// wire cube depth-tested against them, an unlit octahedron), a directional and a point light
+/// and a camera: the tool's image is, pixel for pixel, the one fixed3d's `Renderer` draws of the
+/// same scene built here through the library's own API, in one pass and in bands.
+#[test]
+fn render_tool_draws_a_scene_file_as_the_renderer_does() {
+    use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+    use fixed3d::mesh::Specular;
+    use fixed3d::pipeline::{Bin, ScreenVertex};
+    use fixed3d::prelude::*;
+    use fixed3d::texture::{Texels, Texture};
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("scene_file");
+    std::fs::create_dir_all(&dir).unwrap();
+    let texels = floor::texels();
+    common::golden::write_png(&dir.join("tiles.png"), 64, 64, &texels);
+    let obj = "v -3 0 2\nv 3 0 2\nv 3 0 -4\nv -3 0 -4\nvt 0 0\nvt 3 0\nvt 3 3\nvt 0 3\n\
+               f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+    std::fs::write(dir.join("floor.obj"), obj).unwrap();
+    let scene = r#"
+        ambient = 0.1
+        [camera]
+        eye = [0.5, 2.0, 4.5]
+        target = [0.0, 0.3, 0.0]
+        fov = 55
+        near = 0.5
+        far = 40.0
+        [[lights]]
+        direction = [-1, 1, 1]
+        intensity = 0.6
+        [[lights]]
+        position = [1.0, 1.5, 1.0]
+        color = [1.0, 0.8, 0.5]
+        attenuation = "inverse-square"
+        range = 6
+        [[objects]]
+        shape = "torus"
+        position = [0.0, 0.7, 0.0]
+        rotation = [50, 20, 10]
+        scale = 0.9
+        color = [60, 130, 230]
+        shade = "gouraud"
+        specular = [1.0, 24]
+        [[objects]]
+        obj = "floor.obj"
+        texture = "tiles.png"
+        [[objects]]
+        shape = "cube"
+        position = [0.0, 0.7, 0.0]
+        scale = 1.2
+        rotation = [0, 30, 0]
+        color = [255, 255, 255]
+        style = "wire"
+        [[objects]]
+        shape = "octahedron"
+        position = [-1.8, 0.5, -0.5]
+        scale = 0.5
+        color = [250, 200, 40]
+        shade = "unlit"
+    "#;
+    let path = dir.join("scene.toml");
+    std::fs::write(&path, scene).unwrap();
+    let tool = |name: &str, extra: &[&str]| {
+        let out = dir.join(name).to_string_lossy().into_owned();
+        let mut args = vec!["--scene", path.to_str().unwrap(), "--size", "160x120"];
+        args.extend(["--out", &out]);
+        args.extend(extra);
+        let o = run(&args);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        common::golden::read_png(std::path::Path::new(&out))
+            .unwrap()
+            .2
+    };
+    // The same scene through the library.
+    let torus = desktop::Model::shape("torus").unwrap();
+    let cube = desktop::Model::shape("cube").unwrap();
+    let gem = desktop::Model::shape("octahedron").unwrap();
+    let floor = desktop::Model::load_obj(dir.join("floor.obj").to_str().unwrap()).unwrap();
+    let meshes = [torus.mesh(), floor.mesh(), cube.mesh(), gem.mesh()];
+    let (texels, w, h) = desktop::load_texels(dir.join("tiles.png").to_str().unwrap()).unwrap();
+    let texture = Texture::new(Texels::Rgb888(&texels), w, h).unwrap();
+    let gloss = Specular::new(Rgb888::new(255, 255, 255), 24);
+    let models = [
+        Model::new(&meshes[0], Rgb888::new(60, 130, 230))
+            .scaled(0.9)
+            .rotated_x(50)
+            .rotated_y(20)
+            .rotated_z(10)
+            .translated([0.0, 0.7, 0.0])
+            .shaded(Shade::Gouraud)
+            .glossy(&gloss),
+        Model::new(&meshes[1], Rgb888::new(255, 160, 64)).textured(&texture),
+        Model::new(&meshes[2], Rgb888::new(255, 255, 255))
+            .scaled(1.2)
+            .rotated_y(30)
+            .translated([0.0, 0.7, 0.0])
+            .wireframe(),
+        Model::new(&meshes[3], Rgb888::new(250, 200, 40))
+            .scaled(0.5)
+            .translated([-1.8, 0.5, -0.5])
+            .shaded(Shade::Unlit),
+    ];
+    let lights = [
+        Light::ambient(0.1),
+        Light::directional([-1, 1, 1], 0.6),
+        PointLight::new(
+            [1.0, 1.5, 1.0],
+            fixed3d::scene::LightColor::new(
+                Scalar::ONE,
+                Scalar::from_num(0.8),
+                Scalar::from_num(0.5),
+            ),
+        )
+        .attenuated(Attenuation::InverseSquare)
+        .within(6)
+        .into(),
+    ];
+    let camera = Camera::perspective(55, 0.5, 40).looking_at([0.5, 2.0, 4.5], [0.0, 0.3, 0.0]);
+    let vertices: usize = meshes.iter().map(|m| m.positions().len()).sum();
+    let triangles: usize = meshes.iter().map(|m| m.triangles().len()).sum();
+    let (mut v, mut b) = (
+        vec![ScreenVertex::DEFAULT; vertices],
+        vec![Bin::EMPTY; triangles],
+    );
+    let (mut c, mut d) = (vec![Rgb888::BLACK; 160 * 120], vec![0u16; 160 * 120]);
+    let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
+    let mut screen = common::screen::Screen::new(160, 120, Rgb888::BLACK);
+    renderer
+        .render(&models, &lights, &camera, &mut screen)
+        .unwrap();
+    let expected = screen.pixels;
+    let textured = expected.iter().filter(|p| texels.contains(p)).count();
+    let lit = expected.iter().filter(|p| **p != Rgb888::BLACK).count();
+    assert!(lit > 4000 && textured < lit, "{lit} {textured}");
+    assert!(tool("scene.png", &[]) == expected);
+    assert!(tool("scene_bands.png", &["--bands", "7"]) == expected);
+}
+
+/// Scene files that cannot be drawn are errors naming the file and the problem (exit 1);
+/// flags a scene file replaces are usage errors (exit 2).
+#[test]
+fn bad_scene_files_exit_1() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("bad_scenes");
+    std::fs::create_dir_all(&dir).unwrap();
+    let camera = "[camera]\neye = [0, 0, 4]\n";
+    let cube = "[[objects]]\nshape = \"cube\"\n";
+    for (name, text, says) in [
+        ("no_objects", camera.to_string(), "objects"),
+        ("empty", format!("objects = []\n{camera}"), "no objects"),
+        ("unknown_key", format!("{camera}{cube}glow = 1\n"), "glow"),
+        (
+            "bad_shape",
+            format!("{camera}[[objects]]\nshape = \"blob\"\n"),
+            "blob",
+        ),
+        (
+            "two_meshes",
+            format!("{camera}{cube}obj = \"x.obj\"\n"),
+            "one of",
+        ),
+        (
+            "bad_shade",
+            format!("{camera}{cube}shade = \"shiny\"\n"),
+            "shiny",
+        ),
+        (
+            "bad_style",
+            format!("{camera}{cube}style = \"dots\"\n"),
+            "dots",
+        ),
+        (
+            "missing_obj",
+            format!("{camera}[[objects]]\nobj = \"gone.obj\"\n"),
+            "gone.obj",
+        ),
+        (
+            "missing_png",
+            format!("{camera}{cube}texture = \"gone.png\"\n"),
+            "gone.png",
+        ),
+        (
+            "light_kind",
+            format!("{camera}{cube}[[lights]]\nintensity = 1\n"),
+            "direction",
+        ),
+        (
+            "too_many",
+            format!(
+                "{camera}{cube}{}",
+                "[[lights]]\nposition = [0, 1, 0]\n".repeat(5)
+            ),
+            "lights",
+        ),
+        ("not_toml", "camera = \n".to_string(), "not_toml.toml"),
+    ] {
+        let path = dir.join(format!("{name}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let out = dir
+            .join(format!("{name}.png"))
+            .to_string_lossy()
+            .into_owned();
+        let o = run(&["--scene", path.to_str().unwrap(), "--out", &out]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{name}: {err}");
+        assert!(
+            err.contains(says) && !err.contains("panicked"),
+            "{name}: {err}"
+        );
+    }
+    let path = dir.join("ok.toml");
+    std::fs::write(&path, format!("{camera}{cube}")).unwrap();
+    let o = run(&["--scene", path.to_str().unwrap(), "--eye", "1,1,1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--eye: with --scene"));
+    let out = dir.join("ok.png").to_string_lossy().into_owned();
+    assert_eq!(
+        run(&["--scene", path.to_str().unwrap(), "--out", &out])
+            .status
+            .code(),
+        Some(0)
     );
 }

@@ -1,6 +1,6 @@
 //! Desktop helpers shared by the render tool, the viewer and the model golden tests: owned
 //! models (loaded from OBJ files or generated), and rendering a scene into an RGB888 image in
-//! one of three modes. Desktop code: it allocates, the library does not.
+//! one of four modes. Desktop code: it allocates, the library does not.
 #![allow(dead_code)]
 
 use std::fmt;
