@@ -19,8 +19,9 @@ use crate::math::{isqrt_ceil, Angle, Mat4, Scalar, Trig, Vec3};
 
 pub use normals::{vertex_normals, FaceNormal};
 pub use shapes::{
-    textured_torus, textured_torus_counts, torus, torus_counts, uv_sphere, uv_sphere_counts,
-    ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON, TEXTURED_CUBE,
+    textured_torus, textured_torus_counts, textured_uv_sphere, textured_uv_sphere_counts, torus,
+    torus_counts, uv_sphere, uv_sphere_counts, ShapeError, CUBE, OCTAHEDRON, TETRAHEDRON,
+    TEXTURED_CUBE,
 };
 
 /// A triangle: three indices into a mesh's positions, counter-clockwise seen from its front.

@@ -459,36 +459,108 @@ pub fn uv_sphere<'a>(
     normals: &'a mut [Vec3],
     triangles: &'a mut [Triangle],
 ) -> Result<Mesh<'a>, ShapeError> {
-    if segments < 3 || rings < 2 {
-        return Err(ShapeError::Resolution);
-    }
-    let (nv, _) = uv_sphere_counts(segments, rings);
-    let store = Storage::new(
-        uv_sphere_counts(segments, rings),
+    sphere_into(
+        (radius, segments, rings),
         positions,
         normals,
         None,
         triangles,
-    )?;
+    )
+}
+
+/// Vertices and triangles of a [`textured_uv_sphere`]: a grid with the poles and the seam
+/// repeated.
+#[must_use]
+pub const fn textured_uv_sphere_counts(segments: u16, rings: u16) -> (usize, usize) {
+    let (_, triangles) = uv_sphere_counts(segments, rings);
+    ((segments as usize + 1) * (rings as usize + 1), triangles)
+}
+
+/// [`uv_sphere`] with UVs: `u` from 0 to 1 around the Y axis, `v` from 1 at the north pole to
+/// 0 at the south pole (an equirectangular image maps onto it as a globe): vertex
+/// `k·(segments + 1) + s` for ring `k` in `0..=rings` (0 the north pole) and `s` in
+/// `0..=segments`, the last column at the first's positions.
+///
+/// ```
+/// use fixed3d::math::{Scalar, Vec3};
+/// use fixed3d::mesh::{textured_uv_sphere, textured_uv_sphere_counts};
+/// assert_eq!(textured_uv_sphere_counts(8, 4), (45, 48));
+/// let (mut p, mut n, mut uv, mut t) =
+///     ([Vec3::ZERO; 45], [Vec3::ZERO; 45], [[Scalar::ZERO; 2]; 45], [[0u16; 3]; 48]);
+/// let one = Scalar::ONE;
+/// let mesh = textured_uv_sphere(one, 8, 4, &mut p, &mut n, &mut uv, &mut t).unwrap();
+/// assert_eq!(mesh.uvs().unwrap()[0], [Scalar::ZERO, one]);
+/// assert_eq!(mesh.positions()[8], mesh.positions()[0]);
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn textured_uv_sphere<'a>(
+    radius: Scalar,
+    segments: u16,
+    rings: u16,
+    positions: &'a mut [Vec3],
+    normals: &'a mut [Vec3],
+    uvs: &'a mut [Uv],
+    triangles: &'a mut [Triangle],
+) -> Result<Mesh<'a>, ShapeError> {
+    sphere_into(
+        (radius, segments, rings),
+        positions,
+        normals,
+        Some(uvs),
+        triangles,
+    )
+}
+
+/// A UV sphere into the caller's storage: without `uvs` one vertex per pole and `segments`
+/// per ring ([`uv_sphere`]), with them a grid of `(rings + 1) × (segments + 1)`
+/// ([`textured_uv_sphere`]). The triangles are the same, in the same order.
+fn sphere_into<'a>(
+    (radius, segments, rings): (Scalar, u16, u16),
+    positions: &'a mut [Vec3],
+    normals: &'a mut [Vec3],
+    uvs: Option<&'a mut [Uv]>,
+    triangles: &'a mut [Triangle],
+) -> Result<Mesh<'a>, ShapeError> {
+    if segments < 3 || rings < 2 {
+        return Err(ShapeError::Resolution);
+    }
+    let grid = uvs.is_some();
+    let counts = if grid {
+        textured_uv_sphere_counts(segments, rings)
+    } else {
+        uv_sphere_counts(segments, rings)
+    };
+    let mut store = Storage::new(counts, positions, normals, uvs, triangles)?;
     let (pos, nor, tri) = (
         &mut *store.positions,
         &mut *store.normals,
         &mut *store.triangles,
     );
+    let uvs = store.uvs.as_deref_mut().unwrap_or(&mut []);
     let r = radius.to_bits() as i64;
-    let seg = segments as usize;
-    let south = nv - 1;
-    // Vertex 0: north pole; 1 + (k−1)·seg + s: ring k (1..rings), segment s; last: south pole.
-    for (idx, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
-        let unit = if idx == 0 {
-            [0, 1 << 30, 0]
+    let (seg, last_ring) = (segments as usize, rings as usize);
+    let south = counts.0 - 1;
+    // Ring k (0 the north pole, `rings` the south one) and segment s of each vertex.
+    let place = |idx: usize| {
+        if grid {
+            (idx / (seg + 1), idx % (seg + 1))
+        } else if idx == 0 {
+            (0, 0)
         } else if idx == south {
+            (last_ring, 0)
+        } else {
+            ((idx - 1) / seg + 1, (idx - 1) % seg)
+        }
+    };
+    for (idx, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
+        let (k, s) = place(idx);
+        let unit = if k == 0 {
+            [0, 1 << 30, 0]
+        } else if k == last_ring {
             [0, -(1 << 30), 0]
         } else {
-            let k = ((idx - 1) / seg + 1) as u32;
-            let s = ((idx - 1) % seg) as u32;
-            let theta = Angle::turn_fraction(k, 2 * rings as u32);
-            let phi = Angle::turn_fraction(s, segments as u32);
+            let theta = Angle::turn_fraction(k as u32, 2 * rings as u32);
+            let phi = Angle::turn_fraction(s as u32 % seg as u32, segments as u32);
             let rho = theta.sin_bits() as i64;
             [
                 shr_round(rho * phi.sin_bits() as i64, 30) as i32,
@@ -503,8 +575,22 @@ pub fn uv_sphere<'a>(
         );
         let q = unit.map(|c| sat(shr_round(c as i64, 14)));
         *n = Vec3::from_bits(q[0], q[1], q[2]);
+        if let Some(uv) = uvs.get_mut(idx) {
+            let fraction = |a: usize, b: usize| Scalar::from_bits(((a << 16) / b) as i32);
+            *uv = [fraction(s, seg), fraction(last_ring - k, last_ring)];
+        }
     }
-    let ring_vertex = |k: usize, s: usize| (1 + (k - 1) * seg + s % seg) as u16;
+    let vertex = |k: usize, s: usize| {
+        (if grid {
+            k * (seg + 1) + s
+        } else if k == 0 {
+            0
+        } else if k == last_ring {
+            south
+        } else {
+            1 + (k - 1) * seg + s % seg
+        }) as u16
+    };
     let mut out = tri.iter_mut();
     let mut put = |t: Triangle| {
         if let Some(slot) = out.next() {
@@ -512,19 +598,19 @@ pub fn uv_sphere<'a>(
         }
     };
     for s in 0..seg {
-        put([0, ring_vertex(1, s), ring_vertex(1, s + 1)]);
+        put([vertex(0, s), vertex(1, s), vertex(1, s + 1)]);
     }
-    for k in 1..rings as usize - 1 {
+    for k in 1..last_ring - 1 {
         for s in 0..seg {
-            let (a0, a1) = (ring_vertex(k, s), ring_vertex(k, s + 1));
-            let (b0, b1) = (ring_vertex(k + 1, s), ring_vertex(k + 1, s + 1));
+            let (a0, a1) = (vertex(k, s), vertex(k, s + 1));
+            let (b0, b1) = (vertex(k + 1, s), vertex(k + 1, s + 1));
             put([a0, b0, b1]);
             put([a0, b1, a1]);
         }
     }
-    let last = rings as usize - 1;
+    let last = last_ring - 1;
     for s in 0..seg {
-        put([ring_vertex(last, s), south as u16, ring_vertex(last, s + 1)]);
+        put([vertex(last, s), vertex(last_ring, s), vertex(last, s + 1)]);
     }
     store.into_mesh()
 }
@@ -571,6 +657,39 @@ mod tests {
             let l = n.length().to_num::<f64>();
             assert!((l - 1.0).abs() < 1e-3);
         }
+    }
+
+    /// The textured sphere is the plain one with its poles and seam repeated: the same
+    /// triangles at the same positions and normals, facing outwards, with UVs running round
+    /// the axis and from pole to pole.
+    #[test]
+    fn textured_sphere_is_the_sphere_with_uvs() {
+        let (nv, nt) = textured_uv_sphere_counts(16, 8);
+        let (mut p, mut n, mut t) = ([Vec3::ZERO; 114], [Vec3::ZERO; 114], [[0u16; 3]; 224]);
+        let plain = uv_sphere(Scalar::from_num(3), 16, 8, &mut p, &mut n, &mut t).unwrap();
+        let (mut tp, mut tn, mut tt) = ([Vec3::ZERO; 153], [Vec3::ZERO; 153], [[0u16; 3]; 224]);
+        let mut uv = [[Scalar::ZERO; 2]; 153];
+        assert_eq!((nv, nt), (153, 224));
+        let one = Scalar::from_num(3);
+        let textured = textured_uv_sphere(one, 16, 8, &mut tp, &mut tn, &mut uv, &mut tt).unwrap();
+        outward(&textured);
+        for (a, b) in plain.triangles().iter().zip(textured.triangles()) {
+            for (i, j) in a.iter().zip(b) {
+                let (i, j) = (*i as usize, *j as usize);
+                assert_eq!(plain.positions()[i], textured.positions()[j]);
+                assert_eq!(plain.normals().unwrap()[i], textured.normals().unwrap()[j]);
+            }
+        }
+        let uvs = textured.uvs().unwrap();
+        assert_eq!(uvs[0], [Scalar::ZERO, Scalar::ONE]);
+        assert_eq!(uvs[nv - 1], [Scalar::ONE, Scalar::ZERO]);
+        assert_eq!(
+            uvs[4 * 17 + 8],
+            [Scalar::from_num(0.5), Scalar::from_num(0.5)]
+        );
+        let mut small = [[Scalar::ZERO; 2]; 152];
+        let err = textured_uv_sphere(one, 16, 8, &mut tp, &mut tn, &mut small, &mut tt);
+        assert!(matches!(err, Err(ShapeError::StorageTooSmall { .. })));
     }
 
     #[test]
