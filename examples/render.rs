@@ -435,7 +435,12 @@ fn run(args: &[String]) -> Result<String, Failure> {
         Some(Source::Obj(path)) => {
             Model::load_obj(path).map_err(|e| Failure::Input(e.to_string()))?
         }
-        Some(Source::Shape(name)) => Model::shape(name).ok_or_else(|| {
+        Some(Source::Shape(name)) => match o.texture {
+            // A texture needs the shape's UVs.
+            Some(_) => Model::shape_with_uvs(name),
+            None => Model::shape(name),
+        }
+        .ok_or_else(|| {
             Failure::Usage(format!(
                 "unknown shape {name:?}: cube, tetrahedron, octahedron, sphere or torus"
             ))
@@ -449,6 +454,7 @@ fn run(args: &[String]) -> Result<String, Failure> {
         model: &model,
         matrix: Mat4::IDENTITY,
         color: o.color,
+        texture: None,
     }];
     let bounds = desktop::scene_bounds(&objects);
     let centre = Vec3::new(
@@ -594,10 +600,13 @@ fn run(args: &[String]) -> Result<String, Failure> {
         cull: o.cull,
         depth: o.depth,
         bands: o.bands,
-        texture,
         specular: o.specular,
     };
-    let r = render(&objects, &frame_view).map_err(Failure::Input)?;
+    let textured = [Placed {
+        texture: texture.as_ref(),
+        ..objects[0]
+    }];
+    let r = render(&textured, &frame_view).map_err(Failure::Input)?;
     write_png(&o.out, w, h, &r.pixels)?;
     let drawn = if o.mode == Mode::Wire {
         r.stats.primitives - r.stats.invalid - r.stats.outside - r.stats.culled - r.stats.degenerate

@@ -4,9 +4,10 @@
 //! cargo run --release --features window --example viewer -- [MODEL.obj ...]
 //! ```
 //!
-//! Opens on the given OBJ files (or a bundled teapot among a few shapes), framed by their
-//! bounding box, lit by an ambient colour and three coloured lights (and a point light that L
-//! drops where the camera is). Keys (also shown by H):
+//! Opens on the given OBJ files (or a bundled teapot among a few shapes, the sphere a textured
+//! globe), framed by their bounding box, lit by an ambient colour and three coloured lights
+//! (and a point light that L drops where the camera is). An OBJ file with `vt` whose material
+//! names a PNG is drawn textured. Keys (also shown by H):
 //!
 //! | key | does |
 //! |---|---|
@@ -57,6 +58,7 @@ use fixed3d::math::{Angle, Scalar, Vec3};
 use fixed3d::mesh::{Specular, Transform};
 use fixed3d::projection::Projection;
 use fixed3d::scene::{Attenuation, Light, LightColor, PointLight};
+use fixed3d::texture::{Texels as TexelFormat, Texture};
 
 const WIDTH: u32 = 640;
 const HEIGHT: u32 = 480;
@@ -105,8 +107,8 @@ struct Item {
 /// The terminal dialogue of R.
 enum Prompt {
     Path,
-    Color(Model),
-    Position(Model, Rgb888),
+    Color((Model, Option<Texels>)),
+    Position((Model, Option<Texels>), Rgb888),
 }
 
 impl Prompt {
@@ -121,8 +123,13 @@ impl Prompt {
     }
 }
 
+/// A texture's texels, width and height.
+type Texels = (Vec<Rgb888>, u16, u16);
+
 struct App {
     models: Vec<Model>,
+    /// Per model: the texture it is drawn with (an OBJ's `map_Kd`, or the globe's), if any.
+    textures: Vec<Option<Texels>>,
     items: Vec<Item>,
     camera: FlyCamera,
     radius: f32,
@@ -175,7 +182,7 @@ impl App {
             * recentre
     }
 
-    fn view(&self) -> Result<View<'static>, String> {
+    fn view(&self) -> Result<View, String> {
         let aspect = Scalar::from_num(WIDTH as f32 / HEIGHT as f32);
         let r = self.radius;
         let projection = if self.ortho {
@@ -221,7 +228,6 @@ impl App {
             cull: self.cull,
             depth: self.depth,
             bands: 0,
-            texture: None,
             specular: self
                 .glossy
                 .then(|| Specular::new(Rgb888::new(255, 255, 255), 32)),
@@ -334,8 +340,8 @@ impl App {
         }
         let next = match prompt {
             Prompt::Path => match Model::shape(line)
-                .map(Ok)
-                .unwrap_or_else(|| Model::load_obj(line))
+                .map(|m| Ok((m, None)))
+                .unwrap_or_else(|| load_textured(line))
             {
                 Ok(model) => Prompt::Color(model),
                 Err(e) => {
@@ -357,7 +363,8 @@ impl App {
             Prompt::Position(model, color) => {
                 match parse_numbers(line).and_then(|[x, y, z]| Vec3::from_f32(x, y, z)) {
                     Some(position) => {
-                        self.models.push(model);
+                        self.models.push(model.0);
+                        self.textures.push(model.1);
                         self.items.push(Item {
                             model: self.models.len() - 1,
                             position,
@@ -465,13 +472,48 @@ fn open_window(display: &SimulatorDisplay<Rgb888>) -> Result<Window, String> {
     }
 }
 
-fn initial_scene(args: &[String]) -> Result<(Vec<Model>, Vec<Item>), String> {
-    let mut models = Vec::new();
+/// An OBJ file and the texture its material names (`mtllib`, `map_Kd`), for a model with UVs;
+/// one that cannot be read is left out with a warning.
+fn load_textured(path: &str) -> Result<(Model, Option<Texels>), desktop::LoadError> {
+    let model = Model::load_obj(path)?;
+    let texture = desktop::obj_texture_path(path).filter(|_| !model.uvs.is_empty());
+    let texels = texture.and_then(|t| match desktop::load_texels(&t.to_string_lossy()) {
+        Ok(texels) => Some(texels),
+        Err(e) => {
+            println!("warning: the material's texture is left out: {e}");
+            None
+        }
+    });
+    Ok((model, texels))
+}
+
+/// The globe's texture: an equirectangular map of meridians and parallels over bands of
+/// colour from pole to pole.
+fn globe_texels() -> Texels {
+    let (w, h) = (128u16, 64u16);
+    let texels = (0..u32::from(w) * u32::from(h))
+        .map(|i| {
+            let (x, y) = (i % u32::from(w), i / u32::from(w));
+            if x % 16 == 0 || y % 16 == 0 {
+                Rgb888::new(250, 250, 240)
+            } else {
+                let t = y * 255 / u32::from(h);
+                Rgb888::new((40 + t / 3) as u8, (90 + t / 2) as u8, (230 - t / 2) as u8)
+            }
+        })
+        .collect();
+    (texels, w, h)
+}
+
+#[allow(clippy::type_complexity)]
+fn initial_scene(args: &[String]) -> Result<(Vec<Model>, Vec<Option<Texels>>, Vec<Item>), String> {
+    let (mut models, mut textures) = (Vec::new(), Vec::new());
     let mut items = Vec::new();
     if args.is_empty() {
         let teapot = Model::from_obj_bytes("teapot", include_bytes!("../models/teapot.obj"))
             .map_err(|e| e.to_string())?;
         models.push(teapot);
+        textures.push(None);
         items.push(Item {
             model: 0,
             position: Vec3::ZERO,
@@ -500,10 +542,17 @@ fn initial_scene(args: &[String]) -> Result<(Vec<Model>, Vec<Item>), String> {
                 Rgb888::new(255, 120, 200),
             ),
         ] {
-            let Some(m) = Model::shape(name) else {
+            // The sphere is a textured globe.
+            let (m, texture) = if name == "sphere" {
+                (Model::shape_with_uvs(name), Some(globe_texels()))
+            } else {
+                (Model::shape(name), None)
+            };
+            let Some(m) = m else {
                 continue;
             };
             models.push(m);
+            textures.push(texture);
             items.push(Item {
                 model: models.len() - 1,
                 position: pos.unwrap_or_default(),
@@ -513,11 +562,12 @@ fn initial_scene(args: &[String]) -> Result<(Vec<Model>, Vec<Item>), String> {
         }
     } else {
         for (k, path) in args.iter().enumerate() {
-            let m = Model::load_obj(path).map_err(|e| e.to_string())?;
+            let (m, texture) = load_textured(path).map_err(|e| e.to_string())?;
             if let Some(p) = &m.rescaled {
                 println!("{path}: outside the fixed-point range, rescaled (one step = {:.3e} file units)", p.resolution());
             }
             models.push(m);
+            textures.push(texture);
             let x = (k as f32 - (args.len() as f32 - 1.0) / 2.0) * 2.5;
             items.push(Item {
                 model: k,
@@ -527,12 +577,12 @@ fn initial_scene(args: &[String]) -> Result<(Vec<Model>, Vec<Item>), String> {
             });
         }
     }
-    Ok((models, items))
+    Ok((models, textures, items))
 }
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let (models, items) = match initial_scene(&args) {
+    let (models, textures, items) = match initial_scene(&args) {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
@@ -555,6 +605,7 @@ fn main() {
     );
     let mut app = App {
         models,
+        textures,
         items,
         camera,
         radius: extent,
@@ -593,6 +644,14 @@ fn main() {
         if app.spinning {
             app.spin += Angle::from_degrees_f32(45.0 * dt);
         }
+        let textures: Vec<Option<Texture<'_>>> = app
+            .textures
+            .iter()
+            .map(|t| {
+                let (texels, w, h) = t.as_ref()?;
+                Texture::new(TexelFormat::Rgb888(texels), *w, *h).ok()
+            })
+            .collect();
         let placed: Vec<Placed<'_>> = app
             .items
             .iter()
@@ -600,6 +659,7 @@ fn main() {
                 model: &app.models[i.model],
                 matrix: app.model_transform(i),
                 color: i.color,
+                texture: textures.get(i.model).and_then(Option::as_ref),
             })
             .collect();
         let time = match app.view().and_then(|v| render(&placed, &v)) {

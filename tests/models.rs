@@ -11,7 +11,7 @@ use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Scalar, Vec3};
 use fixed3d::projection::{Projection, Viewport};
 
-fn view(mode: Mode, look: LookAt, projection: Projection, w: u32, h: u32) -> View<'static> {
+fn view(mode: Mode, look: LookAt, projection: Projection, w: u32, h: u32) -> View {
     View {
         width: w,
         height: h,
@@ -24,7 +24,6 @@ fn view(mode: Mode, look: LookAt, projection: Projection, w: u32, h: u32) -> Vie
         cull: true,
         depth: true,
         bands: 0,
-        texture: None,
         specular: None,
     }
 }
@@ -36,6 +35,7 @@ fn reference_torus_in_each_mode() {
         model: &torus,
         matrix,
         color: Rgb888::new(255, 160, 64),
+        texture: None,
     }];
     let viewport = Viewport::new(320, 240).unwrap();
     let look = LookAt::new(Vec3::from_f32(0.0, 0.0, 2.6).unwrap(), Vec3::ZERO, Vec3::Y);
@@ -71,6 +71,7 @@ fn shared_models_in_each_mode() {
             model: &model,
             matrix: fixed3d::math::Mat4::IDENTITY,
             color: Rgb888::new(220, 200, 140),
+            texture: None,
         }];
         let viewport = Viewport::new(200, 150).unwrap();
         let (look, p) = framed(
@@ -96,6 +97,7 @@ fn bands_and_direct_filling_match_the_full_frame() {
         model: &model,
         matrix: fixed3d::math::Mat4::IDENTITY,
         color: Rgb888::new(220, 200, 140),
+        texture: None,
     }];
     let viewport = Viewport::new(160, 120).unwrap();
     let (look, p) = framed(
@@ -114,4 +116,68 @@ fn bands_and_direct_filling_match_the_full_frame() {
         (full.stats.drawn, full.stats.culled),
         (b.stats.drawn, b.stats.culled)
     );
+}
+
+/// Per-object textures: under a white ambient light of 1 alone, a textured sphere in front of
+/// an untextured cube shows its texels and the cube its colour, wherever each is in front,
+/// in every solid mode, in one pass and in bands (one pass per texture, sharing the depth
+/// buffer), and the sphere alone draws the same pixels as in the scene where it is in front.
+#[test]
+fn each_object_has_its_own_texture() {
+    use fixed3d::math::Mat4;
+    use fixed3d::texture::{Texels, Texture};
+    let sphere = Model::shape_with_uvs("sphere").unwrap();
+    let cube = Model::shape("cube").unwrap();
+    let texels: Vec<Rgb888> = (0..32 * 16)
+        .map(|i| Rgb888::new((i % 32 * 8) as u8, (i / 32 * 16) as u8, 200))
+        .collect();
+    let texture = Texture::new(Texels::Rgb888(&texels), 32, 16).unwrap();
+    let grey = Rgb888::new(90, 90, 90);
+    let near = Mat4::translation(Vec3::from_f32(0.0, 0.0, 2.5).unwrap());
+    let objects = [
+        Placed {
+            model: &cube,
+            matrix: Mat4::scaling(Vec3::from_int(2, 2, 2)),
+            color: grey,
+            texture: None,
+        },
+        Placed {
+            model: &sphere,
+            matrix: near,
+            color: Rgb888::new(255, 0, 0),
+            texture: Some(&texture),
+        },
+    ];
+    let viewport = Viewport::new(160, 120).unwrap();
+    let look = LookAt::new(Vec3::from_int(0, 0, 6), Vec3::ZERO, Vec3::Y);
+    let p = Projection::perspective(
+        Angle::from_degrees(60),
+        viewport.aspect(),
+        Scalar::from_num(1),
+        Scalar::from_num(20),
+    )
+    .unwrap();
+    for mode in [Mode::Flat, Mode::Gouraud, Mode::Perspective] {
+        let mut v = view(mode, look, p, 160, 120);
+        v.ambient = Scalar::ONE;
+        v.lights.clear();
+        let r = render(&objects, &v).unwrap();
+        let (shown, greys) = (
+            r.pixels.iter().filter(|c| texels.contains(c)).count(),
+            r.pixels.iter().filter(|&&c| c == grey).count(),
+        );
+        let background = r
+            .pixels
+            .iter()
+            .filter(|&&c| c == Rgb888::new(0, 0, 0))
+            .count();
+        assert_eq!(shown + greys + background, 160 * 120, "{mode:?}");
+        assert!(shown > 1500 && greys > 1500, "{mode:?}: {shown} {greys}");
+        v.bands = 9;
+        assert!(render(&objects, &v).unwrap().pixels == r.pixels, "{mode:?}");
+        let alone = render(&objects[1..], &v).unwrap();
+        for (a, b) in alone.pixels.iter().zip(&r.pixels) {
+            assert!(*a == Rgb888::new(0, 0, 0) || a == b, "{mode:?}");
+        }
+    }
 }

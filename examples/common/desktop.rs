@@ -359,6 +359,46 @@ impl Model {
         }
     }
 
+    /// A built-in shape with UVs, for a texture: the textured cube (a face's normal at each of
+    /// its corners), or the sphere or torus with their seams' vertices doubled; the shapes
+    /// without UVs otherwise.
+    pub fn shape_with_uvs(name: &str) -> Option<Model> {
+        let with = |positions: Vec<Vec3>, normals: Vec<Vec3>, uvs: Vec<Uv>, t| {
+            let mut m = Model::owned(name, positions, normals, t);
+            m.uvs = uvs;
+            m
+        };
+        match name {
+            "cube" => {
+                let c = &mesh::TEXTURED_CUBE;
+                let (n, uv) = (c.normals()?.to_vec(), c.uvs()?.to_vec());
+                Some(with(c.positions().to_vec(), n, uv, c.triangles().to_vec()))
+            }
+            "sphere" | "torus" => {
+                let (nv, nt) = if name == "sphere" {
+                    mesh::textured_uv_sphere_counts(32, 16)
+                } else {
+                    mesh::textured_torus_counts(48, 24)
+                };
+                let (mut p, mut n, mut t) = (
+                    vec![Vec3::ZERO; nv],
+                    vec![Vec3::ZERO; nv],
+                    vec![[0u16; 3]; nt],
+                );
+                let mut uv = vec![[Scalar::ZERO; 2]; nv];
+                let (one, minor) = (Scalar::ONE, Scalar::from_num(0.4));
+                if name == "sphere" {
+                    mesh::textured_uv_sphere(one, 32, 16, &mut p, &mut n, &mut uv, &mut t).ok()?;
+                } else {
+                    mesh::textured_torus(one, minor, 48, 24, &mut p, &mut n, &mut uv, &mut t)
+                        .ok()?;
+                }
+                Some(with(p, n, uv, t))
+            }
+            _ => Model::shape(name),
+        }
+    }
+
     /// The reference torus of the benchmarks: the torus above turned 20 degrees about x, then
     /// 30 about y (returned as its model matrix).
     pub fn reference_torus() -> (Model, Mat4) {
@@ -462,11 +502,13 @@ pub struct Placed<'m> {
     pub model: &'m Model,
     pub matrix: Mat4,
     pub color: Rgb888,
+    /// Mapped through the model's UVs (lit by the mode; wireframes leave it out).
+    pub texture: Option<&'m Texture<'m>>,
 }
 
 /// Everything about a frame but the models.
 #[derive(Clone, Debug)]
-pub struct View<'t> {
+pub struct View {
     pub width: u32,
     pub height: u32,
     pub mode: Mode,
@@ -480,8 +522,6 @@ pub struct View<'t> {
     pub depth: bool,
     /// Render in horizontal bands of this many rows (0: the whole frame at once).
     pub bands: u32,
-    /// The texture of every model, lit by the mode (flat or Gouraud; wireframes ignore it).
-    pub texture: Option<Texture<'t>>,
     /// The highlights of every untextured model (Gouraud modes show them).
     pub specular: Option<Specular>,
 }
@@ -540,86 +580,100 @@ pub fn scene_bounds(objects: &[Placed<'_>]) -> Aabb {
     out.unwrap_or_default()
 }
 
-/// Renders the objects as seen through `view` into an RGB888 image.
-pub fn render(objects: &[Placed<'_>], view: &View<'_>) -> Result<Rendered, String> {
+/// Renders the objects as seen through `view` into an RGB888 image: the untextured objects in
+/// one pass of the mode's shading, the textured ones in a pass per texture, sharing the depth
+/// buffer band by band.
+pub fn render(objects: &[Placed<'_>], view: &View) -> Result<Rendered, String> {
     let viewport = Viewport::new(view.width, view.height).map_err(|e| e.to_string())?;
     let meshes: Vec<Mesh<'_>> = objects.iter().map(|o| o.model.mesh()).collect();
-    let scene_objects: Vec<Object<'_>> = objects
-        .iter()
-        .zip(&meshes)
-        .map(|(o, m)| {
+    let wire = view.mode == Mode::Wire;
+    // The passes: the untextured objects, then each texture's (wireframes ignore textures).
+    let mut passes: Vec<(Option<&Texture<'_>>, Vec<Object<'_>>)> = vec![(None, Vec::new())];
+    for (o, m) in objects.iter().zip(&meshes) {
+        let texture = o.texture.filter(|_| !wire);
+        let object = match texture {
             // A textured surface is lit white: the light then scales its texels.
-            let textured = view.texture.is_some() && view.mode != Mode::Wire;
-            let object = Object::new(m, o.matrix, if textured { Rgb888::WHITE } else { o.color });
-            object.with_specular(view.specular.as_ref().filter(|_| !textured))
-        })
-        .collect();
+            Some(_) => Object::new(m, o.matrix, Rgb888::WHITE),
+            None => Object::new(m, o.matrix, o.color).with_specular(view.specular.as_ref()),
+        };
+        let same = |p: &&mut (Option<&Texture<'_>>, Vec<Object<'_>>)| match (p.0, texture) {
+            (Some(a), Some(b)) => std::ptr::eq(a, b),
+            (a, b) => a.is_none() && b.is_none(),
+        };
+        match passes.iter_mut().find(same) {
+            Some(pass) => pass.1.push(object),
+            None => passes.push((texture, vec![object])),
+        }
+    }
     let ambient = [Light::ambient(view.ambient)];
     let lights: Vec<Light> = ambient.iter().chain(&view.lights).copied().collect();
     let lighting =
         Lighting::<MAX_LIGHTS>::from_lights(&lights).map_err(|e| format!("light: {e}"))?;
-    let scene = Scene::new(&scene_objects, lighting);
+    let scenes: Vec<(Option<&Texture<'_>>, Scene<'_, MAX_LIGHTS>)> = passes
+        .iter()
+        .filter(|(_, objects)| !objects.is_empty())
+        .map(|(t, objects)| (*t, Scene::new(objects, lighting.clone())))
+        .collect();
     let frame = Frame::new(&view.view, &view.projection, viewport).with_cull(if view.cull {
         Cull::Back
     } else {
         Cull::None
     });
-    let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
+    let mut caches: Vec<Vec<ScreenVertex>> = scenes
+        .iter()
+        .map(|(_, s)| vec![ScreenVertex::DEFAULT; s.vertex_count()])
+        .collect();
     let (w, h) = (view.width, view.height);
     let mut pixels = vec![view.background; (w * h) as usize];
     let started = Instant::now();
-    let stats = match view.mode {
-        Mode::Wire => {
+    if wire {
+        let mut stats = Stats::default();
+        for ((_, scene), cache) in scenes.iter().zip(&mut caches) {
             let prepared = frame
-                .prepare(&scene, &mut cache, Unlit)
+                .prepare(scene, cache, Unlit)
                 .map_err(|e| e.to_string())?;
             let mut color = FrameBuffer::new(&mut pixels, w, h).map_err(|e| e.to_string())?;
-            prepared
-                .draw_wireframe(&mut color)
-                .map_err(|e| format!("{e:?}"))?
+            stats = stats
+                + prepared
+                    .draw_wireframe(&mut color)
+                    .map_err(|e| format!("{e:?}"))?;
         }
-        Mode::Flat | Mode::Gouraud | Mode::Perspective if view.texture.is_some() => {
-            let texture = view.texture.as_ref().ok_or("no texture")?;
-            let (flat, gouraud) = (
-                Textured {
-                    texture,
-                    light: Flat,
-                },
-                Textured {
-                    texture,
-                    light: Gouraud,
-                },
-            );
-            if view.mode == Mode::Flat {
-                let p = frame.prepare(&scene, &mut cache, flat);
-                draw(&p.map_err(|e| e.to_string())?, &mut pixels, view)?
-            } else {
-                let p = frame.prepare(&scene, &mut cache, gouraud);
-                draw(&p.map_err(|e| e.to_string())?, &mut pixels, view)?
+        return Ok(Rendered {
+            pixels,
+            stats,
+            time: started.elapsed(),
+        });
+    }
+    let mut prepared: Vec<Box<dyn Pass + '_>> = Vec::new();
+    for ((texture, scene), cache) in scenes.iter().zip(&mut caches) {
+        let err = |e: fixed3d::pipeline::PrepareError| e.to_string();
+        prepared.push(match (texture, view.mode) {
+            (Some(texture), Mode::Flat) => {
+                let light = Flat;
+                Box::new(
+                    frame
+                        .prepare(scene, cache, Textured { texture, light })
+                        .map_err(err)?,
+                )
             }
-        }
-        Mode::Flat => draw(
-            &frame
-                .prepare(&scene, &mut cache, Flat)
-                .map_err(|e| e.to_string())?,
-            &mut pixels,
-            view,
-        )?,
-        Mode::Gouraud => draw(
-            &frame
-                .prepare(&scene, &mut cache, Gouraud)
-                .map_err(|e| e.to_string())?,
-            &mut pixels,
-            view,
-        )?,
-        Mode::Perspective => draw(
-            &frame
-                .prepare(&scene, &mut cache, PerspectiveGouraud)
-                .map_err(|e| e.to_string())?,
-            &mut pixels,
-            view,
-        )?,
-    };
+            (Some(texture), _) => {
+                let light = Gouraud;
+                Box::new(
+                    frame
+                        .prepare(scene, cache, Textured { texture, light })
+                        .map_err(err)?,
+                )
+            }
+            (None, Mode::Gouraud) => Box::new(frame.prepare(scene, cache, Gouraud).map_err(err)?),
+            (None, Mode::Perspective) => Box::new(
+                frame
+                    .prepare(scene, cache, PerspectiveGouraud)
+                    .map_err(err)?,
+            ),
+            (None, _) => Box::new(frame.prepare(scene, cache, Flat).map_err(err)?),
+        });
+    }
+    let stats = draw(&prepared, &mut pixels, view)?;
     Ok(Rendered {
         pixels,
         stats,
@@ -627,17 +681,46 @@ pub fn render(objects: &[Placed<'_>], view: &View<'_>) -> Result<Rendered, Strin
     })
 }
 
-fn draw<const N: usize, S: fixed3d::shade::Shading>(
-    prepared: &fixed3d::pipeline::Prepared<'_, '_, N, S>,
+/// A prepared pass of `render`, whatever its shading: drawn through a band's depth buffer, or
+/// straight into the frame.
+trait Pass {
+    fn draw_band(&self, target: &mut ColorDepth<'_, '_, Rgb888, u16>) -> Result<Stats, String>;
+    fn draw_direct(
+        &self,
+        target: &mut Direct<'_, FrameBuffer<'_, Rgb888>>,
+    ) -> Result<Stats, String>;
+}
+
+impl<const N: usize, S: fixed3d::shade::Shading> Pass
+    for fixed3d::pipeline::Prepared<'_, '_, N, S>
+{
+    fn draw_band(&self, target: &mut ColorDepth<'_, '_, Rgb888, u16>) -> Result<Stats, String> {
+        self.draw(target).map_err(|e| format!("{e:?}"))
+    }
+
+    fn draw_direct(
+        &self,
+        target: &mut Direct<'_, FrameBuffer<'_, Rgb888>>,
+    ) -> Result<Stats, String> {
+        self.draw(target).map_err(|e| format!("{e:?}"))
+    }
+}
+
+/// Draws the passes into `pixels`: straight, without depth, or band by band (one pass when
+/// `view.bands` is 0) through a depth buffer they share.
+fn draw(
+    passes: &[Box<dyn Pass + '_>],
     pixels: &mut [Rgb888],
-    view: &View<'_>,
+    view: &View,
 ) -> Result<Stats, String> {
     let (w, h) = (view.width, view.height);
+    let mut total = Stats::default();
     if !view.depth {
         let mut color = FrameBuffer::new(pixels, w, h).map_err(|e| e.to_string())?;
-        return prepared
-            .draw(&mut Direct::new(&mut color))
-            .map_err(|e| format!("{e:?}"));
+        for pass in passes {
+            total = total + pass.draw_direct(&mut Direct::new(&mut color))?;
+        }
+        return Ok(total);
     }
     let rows = if view.bands == 0 {
         h
@@ -645,7 +728,6 @@ fn draw<const N: usize, S: fixed3d::shade::Shading>(
         view.bands.min(h)
     };
     let mut depth = vec![0u16; (w * rows) as usize];
-    let mut total = Stats::default();
     let mut y0 = 0;
     while y0 < h {
         let n = rows.min(h - y0);
@@ -654,9 +736,11 @@ fn draw<const N: usize, S: fixed3d::shade::Shading>(
         let mut color = FrameBuffer::new(band, w, n).map_err(|e| e.to_string())?;
         let mut z = DepthBuffer::new(&mut depth, w, n).map_err(|e| e.to_string())?;
         z.clear();
-        let s = prepared
-            .draw(&mut ColorDepth::band(&mut color, &mut z, y0).map_err(|e| e.to_string())?)
-            .map_err(|e| format!("{e:?}"))?;
+        let mut target = ColorDepth::band(&mut color, &mut z, y0).map_err(|e| e.to_string())?;
+        let mut s = Stats::default();
+        for pass in passes {
+            s = s + pass.draw_band(&mut target)?;
+        }
         // The same in every band.
         total.primitives = s.primitives;
         total.culled = s.culled;

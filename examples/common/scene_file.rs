@@ -83,7 +83,8 @@ pub struct ObjectDef {
     pub shade: Option<String>,
     /// solid (default) or wire.
     pub style: Option<String>,
-    /// A PNG mapped through the model's UVs.
+    /// A PNG mapped through the model's UVs (a shape's: the cube's faces, the sphere as a
+    /// globe, round the torus and its tube).
     pub texture: Option<String>,
     /// White highlights: strength (0 to 1) and shininess (Gouraud shades).
     pub specular: Option<(f32, u16)>,
@@ -139,8 +140,12 @@ impl LoadedScene {
         let (mut models, mut textures, mut texels) = (Vec::new(), Vec::new(), Vec::new());
         for (k, o) in file.objects.iter().enumerate() {
             let what = format!("{path}: object {}", k + 1);
+            let shape = |name: &str| match o.texture {
+                Some(_) => Model::shape_with_uvs(name),
+                None => Model::shape(name),
+            };
             let model = match (&o.shape, &o.obj) {
-                (Some(name), None) => Model::shape(name).ok_or_else(|| {
+                (Some(name), None) => shape(name).ok_or_else(|| {
                     format!(
                         "{what}: unknown shape {name:?}: cube, tetrahedron, octahedron, sphere \
                          or torus"
