@@ -136,7 +136,8 @@ pub enum Filter {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Mapping {
     /// As the f64 reference does, through `1/w`: exact at the ends of every run of
-    /// [`RUN`] pixels along a span, linear between them. A triangle whose `1/w` varies so
+    /// [`RUN`] pixels along a span (or as many as [`Texture::with_run`] says), linear between
+    /// them. A triangle whose `1/w` varies so
     /// little that a linear map errs by under 1/8 texel anywhere in it is mapped linearly
     /// (no division per span), as are all under an orthographic projection.
     #[default]
@@ -145,8 +146,9 @@ pub enum Mapping {
     Affine,
 }
 
-/// Pixels between exact divisions along a span, for [`Mapping::Perspective`].
-pub const RUN: u32 = 16;
+/// Pixels between exact divisions along a span, for [`Mapping::Perspective`], unless
+/// [`Texture::with_run`] gives another number (`docs/accuracy.md` weighs them).
+pub const RUN: u8 = 16;
 
 /// Why a texture was refused.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -197,6 +199,8 @@ pub struct Texture<'a> {
     wrap: Wrap,
     filter: Filter,
     mapping: Mapping,
+    /// Pixels between exact divisions along a span (at least 1).
+    run: u8,
 }
 
 impl<'a> Texture<'a> {
@@ -220,6 +224,7 @@ impl<'a> Texture<'a> {
             wrap: Wrap::Repeat,
             filter: Filter::Nearest,
             mapping: Mapping::Perspective,
+            run: RUN,
         })
     }
 
@@ -239,6 +244,15 @@ impl<'a> Texture<'a> {
     #[must_use]
     pub const fn with_mapping(self, mapping: Mapping) -> Self {
         Texture { mapping, ..self }
+    }
+
+    /// Perspective-correct with an exact division every `pixels` pixels along a span (1: at
+    /// every pixel; 0 counts as 1), linear between them: fewer divisions for longer runs, a
+    /// texel error that grows with them on surfaces seen at a slant.
+    #[must_use]
+    pub const fn with_run(self, pixels: u8) -> Self {
+        let run = if pixels == 0 { 1 } else { pixels };
+        Texture { run, ..self }
     }
 
     /// Width in texels.
@@ -277,6 +291,12 @@ impl<'a> Texture<'a> {
         self.mapping
     }
 
+    /// Pixels between exact divisions along a span ([`with_run`](Self::with_run)).
+    #[must_use]
+    pub const fn run(&self) -> u8 {
+        self.run
+    }
+
     /// The colour at texel coordinates `(s, t)` (Q16.16 texel units: `s = u·width`,
     /// `t = (1 − v)·height`), wrapped or clamped and filtered as the texture says: what a
     /// textured pixel whose centre maps to `(s, t)` shows under a white light.
@@ -302,6 +322,8 @@ pub(crate) struct Sampler<'a> {
     height: i32,
     repeat: bool,
     bilinear: bool,
+    /// Pixels between exact divisions along a span (perspective, at least 1).
+    pub(crate) run: u8,
 }
 
 impl<'a> Sampler<'a> {
@@ -313,6 +335,7 @@ impl<'a> Sampler<'a> {
             height: i32::from(texture.height).max(1),
             repeat: texture.wrap == Wrap::Repeat,
             bilinear: texture.filter == Filter::Bilinear,
+            run: texture.run,
         }
     }
 

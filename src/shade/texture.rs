@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{magnitude_bits, DivideBy};
 use crate::raster::{Plane, ScreenPoint, Span};
-use crate::texture::{Mapping, Sampler, Texture, RUN};
+use crate::texture::{Mapping, Sampler, Texture};
 
 use super::Paint;
 
@@ -187,10 +187,11 @@ impl<C> TextureCursor<'_, C> {
         [at(u, self.base[0]), at(v, self.base[1])]
     }
 
-    /// Starts the next run of at most [`RUN`] pixels: exact at both its ends, linear between.
+    /// Starts the next run of at most the texture's run of pixels (see
+    /// [`Texture::with_run`]): exact at both its ends, linear between.
     #[inline(never)]
     fn next_run(&mut self) {
-        let n = self.rest.clamp(1, RUN);
+        let n = self.rest.clamp(1, u32::from(self.sampler.run).max(1));
         self.rest = self.rest.saturating_sub(n);
         let [a0, a1, a2] = self.acc;
         let [s0, s1, s2] = self.acc_step;
