@@ -36,7 +36,8 @@ fn run(scene: &SceneDef, config: &Config) -> Metrics {
 /// Issue #5's limits for the default configuration, on every report scene: M1 = 0; no missing
 /// and no unexpected pixel outside the partial band (M2); no occlusion error (M5); depth within
 /// 1 LSB of the plane through the snapped vertices (M4); flat Lambert within 1 LSB per channel
-/// (M6); every vertex within half a sub-pixel per axis plus its transform bound (M7).
+/// (M6), and in the textured scenes every pixel whose texel is plain showing it; every vertex
+/// within half a sub-pixel per axis plus its transform bound (M7).
 #[test]
 fn m1_m2_m4_m5_m6_m7_default_configuration_on_every_scene() {
     let scenes = reduced_scenes();
@@ -49,7 +50,13 @@ fn m1_m2_m4_m5_m6_m7_default_configuration_on_every_scene() {
         assert_eq!((m.missing, m.unexpected), (0, 0), "{name}: M2 {m:?}");
         assert_eq!(m.occlusion, 0, "{name}: M5");
         assert!(m.depth_plane_max <= 1.0, "{name}: M4 {}", m.depth_plane_max);
-        assert!(m.color_max <= 1.0, "{name}: M6 {}", m.color_max);
+        if scene.textured {
+            // Every pixel whose texel is plain shows it.
+            assert!(m.texel_compared > 1000, "{name}: {m:?}");
+            assert_eq!(m.texel_over, 0, "{name}: {m:?}");
+        } else {
+            assert!(m.color_max <= 1.0, "{name}: M6 {}", m.color_max);
+        }
         assert_eq!(
             m.vertex_over_bound, 0,
             "{name}: M7, vertex max {}",
@@ -125,6 +132,16 @@ fn every_knob_is_real_and_measured() {
         let m = run(scene(name), &perspective);
         assert!(m.color_max <= 3.0, "{name}: {m:?}");
     }
+    // Affine texture mapping shows other texels on the receding floor; exact divisions at
+    // every pixel show the same as the default's runs.
+    let floor = scene("floor-textured");
+    let affine = run(floor, &by_name("texture-affine"));
+    let exact = run(floor, &by_name("texture-run-1"));
+    assert!(
+        affine.texel_over > 1000 && affine.texel_max > 4.0,
+        "{affine:?}"
+    );
+    assert_eq!(exact.texel_over, 0, "{exact:?}");
     let glossy = scene("glossy");
     let matte = SceneDef {
         gloss: None,

@@ -34,7 +34,8 @@ use fixed3d::pipeline::{Frame, MatrixFormat, Precision, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::raster::{triangle_spans, PixelRect};
 use fixed3d::scene::{Attenuation, DirectionalLight, LightColor, Lighting, PointLight, Scene};
-use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Shading};
+use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Shading, Textured};
+use fixed3d::texture::{Mapping, Texels, Texture};
 
 /// How a configuration shades.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,6 +55,10 @@ pub struct Config {
     pub trig: Trig,
     pub depth32: bool,
     pub shade: Shade,
+    /// How the textured scenes are mapped: affine, or perspective-correct with an exact
+    /// division every `run` pixels along a span.
+    pub affine: bool,
+    pub run: u8,
 }
 
 impl Config {
@@ -64,6 +69,8 @@ impl Config {
         trig: Trig::Polynomial,
         depth32: false,
         shade: Shade::Flat,
+        affine: false,
+        run: fixed3d::texture::RUN,
     };
 
     pub fn describe(&self) -> String {
@@ -82,7 +89,11 @@ impl Config {
                 Shade::Gouraud => "Gouraud (affine)",
                 Shade::Perspective => "Gouraud (perspective-correct)",
             }
-        )
+        ) + &if self.affine {
+            ", textures affine".to_string()
+        } else {
+            format!(", textures perspective-correct every {} pixels", self.run)
+        }
     }
 }
 
@@ -160,7 +171,63 @@ pub fn configs() -> Vec<Config> {
             shade: Shade::Perspective,
             ..d
         },
+        Config {
+            name: "texture-affine",
+            knob: "texture mapping",
+            affine: true,
+            ..d
+        },
+        Config {
+            name: "texture-run-1",
+            knob: "texture run",
+            run: 1,
+            ..d
+        },
+        Config {
+            name: "texture-run-4",
+            knob: "texture run",
+            run: 4,
+            ..d
+        },
+        Config {
+            name: "texture-run-16",
+            knob: "texture run",
+            run: 16,
+            ..d
+        },
+        Config {
+            name: "texture-run-64",
+            knob: "texture run",
+            run: 64,
+            ..d
+        },
     ]
+}
+
+/// The texture of the textured scenes: 64x64 texels, each a colour no other has, so that a
+/// pixel tells which texel it shows (red and green are its column and row, four steps each).
+pub fn texels() -> Vec<Rgb888> {
+    (0..64 * 64)
+        .map(|i| texel((i % 64) as u8, (i / 64) as u8))
+        .collect()
+}
+
+/// Texel (x, y) of [`texels`], each coordinate below 64.
+fn texel(x: u8, y: u8) -> Rgb888 {
+    Rgb888::new(x * 4, y * 4, (x ^ y) * 4 + 1)
+}
+
+/// The colour of [`texels`] at texel coordinates `st` (nearest, repeating).
+fn texel_color(st: [f64; 2]) -> [f64; 3] {
+    let [x, y] = st.map(|c| c.floor().rem_euclid(64.0) as u8);
+    let c = texel(x, y);
+    [c.r(), c.g(), c.b()].map(f64::from)
+}
+
+/// The texel a colour of [`texels`] is, if it is one.
+fn texel_of(c: Rgb888) -> Option<[f64; 2]> {
+    let (x, y) = (c.r() / 4, c.g() / 4);
+    (texel(x, y) == c).then_some([x as f64, y as f64])
 }
 
 /// A point light of a scene, beside the ambient and directional light every scene has.
@@ -225,6 +292,9 @@ impl Gloss {
 pub struct SceneDef {
     pub lamp: Option<Lamp>,
     pub gloss: Option<Gloss>,
+    /// Covered by [`texels`] through the model's UVs, under a white ambient light of 1 alone
+    /// (each pixel its texel).
+    pub textured: bool,
     pub name: &'static str,
     pub what: &'static str,
     pub model: Model,
@@ -299,6 +369,7 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
     let base = SceneDef {
         lamp: None,
         gloss: None,
+        textured: false,
         name: "torus",
         what: "the reference scene of docs/reference-scene.md (48x24 torus turned 20° about x, 30° about y)",
         model: torus.clone(),
@@ -402,6 +473,10 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
         ],
         vec![[0, 1, 2], [0, 2, 3]],
     );
+    let mut tiled = floor.clone();
+    // Two repeats across, sixteen away.
+    let uv = |u: f32, v: f32| [Scalar::from_num(u), Scalar::from_num(v)];
+    tiled.uvs = vec![uv(0.0, 0.0), uv(2.0, 0.0), uv(2.0, 16.0), uv(0.0, 16.0)];
     out.push(SceneDef {
         name: "floor",
         what: "two triangles receding from 1.1 to 32.6 away, lit bright near and dark far: \
@@ -412,6 +487,27 @@ pub fn scenes(models: Option<&str>, reduced: bool) -> Vec<SceneDef> {
         far: s(40.0),
         ..base.clone()
     });
+    out.push(SceneDef {
+        name: "floor-textured",
+        what: "the floor textured (two repeats across and sixteen away of a 64x64 texture \
+               whose texels all differ) and turned 70° about y, so that depth changes steeply \
+               along each row: where perspective-correct mapping and its run length matter",
+        textured: true,
+        model: tiled,
+        rot_x: Angle::ZERO,
+        rot_y: Angle::from_degrees(70),
+        far: s(40.0),
+        ..base.clone()
+    });
+    if let Some(torus) = Model::shape_with_uvs("torus") {
+        out.push(SceneDef {
+            name: "torus-textured",
+            what: "the reference torus with UVs (its seams doubled), textured",
+            textured: true,
+            model: torus,
+            ..base.clone()
+        });
+    }
     out.push(SceneDef {
         name: "lamp-near",
         what: "the torus beside a point light falling off with the square of the distance, \
@@ -562,6 +658,10 @@ pub struct IdealPixel {
     /// The nearest polygon covering the centre: its depth z/w, colour, and whether the centre
     /// is inside it by more than the tolerance.
     pub nearest: Option<(f64, [f64; 3], bool)>,
+    /// In a textured scene, the exact texel coordinates (s, t) of the nearest polygon there,
+    /// and how far each moves from one pixel to the next (texels per pixel, the larger of x
+    /// and y).
+    pub texel: Option<([f64; 2], [f64; 2])>,
     /// How far the nearest polygon's depth may move at this pixel when its edges move by the
     /// tolerance (depth gradient times tolerance).
     pub slack: f64,
@@ -707,7 +807,10 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
             .iter()
             .map(|&i| {
                 let c = clip[i];
+                // A textured scene carries the UVs instead of a colour.
+                let uv = |i: usize| scene.model.uvs.get(i).map_or([0.0; 2], |uv| uv.map(f));
                 let rgb = match shade {
+                    _ if scene.textured => [uv(i)[0], uv(i)[1], 0.0],
                     Shade::Flat => flat,
                     _ => colors.get(i).copied().unwrap_or(flat),
                 };
@@ -818,13 +921,26 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
                 if dist < 0.0 {
                     continue;
                 }
-                let rgb = match shade {
-                    Shade::Flat => flat,
-                    _ => {
-                        let iw = at(3);
-                        [at(4) / iw, at(5) / iw, at(6) / iw]
-                    }
+                let iw = at(3);
+                // Texel coordinates s = u·64, t = (1 − v)·64, perspective-correct, here and a
+                // pixel to the right and below.
+                let st_at = |x: f64, y: f64| {
+                    let l1 = ((x - pa[0]) * (pc[1] - pa[1]) - (pc[0] - pa[0]) * (y - pa[1])) / det;
+                    let l2 = ((pb[0] - pa[0]) * (y - pa[1]) - (x - pa[0]) * (pb[1] - pa[1])) / det;
+                    let at = |k: usize| pa[k] + l1 * (pb[k] - pa[k]) + l2 * (pc[k] - pa[k]);
+                    [at(4) / at(3) * 64.0, (1.0 - at(5) / at(3)) * 64.0]
                 };
+                let st = st_at(x, y);
+                let rgb = match shade {
+                    _ if scene.textured => texel_color(st),
+                    Shade::Flat => flat,
+                    _ => [at(4) / iw, at(5) / iw, at(6) / iw],
+                };
+                let texel = scene.textured.then(|| {
+                    let (dx, dy) = (st_at(x + 1.0, y), st_at(x, y + 1.0));
+                    let grad = [0, 1].map(|k| (dx[k] - st[k]).abs().max((dy[k] - st[k]).abs()));
+                    (st, grad)
+                });
                 match pix.nearest {
                     Some((nz, _, _)) if nz <= z => {
                         if pix.second.is_none_or(|s| z < s.0) {
@@ -834,10 +950,12 @@ pub fn ideal(scene: &SceneDef, shade: Shade, subpixel_bits: u32) -> Ideal {
                     Some((nz, _, _)) => {
                         pix.second = Some((nz, pix.slack));
                         pix.nearest = Some((z, rgb, dist > tol));
+                        pix.texel = texel;
                         pix.slack = slack;
                     }
                     None => {
                         pix.nearest = Some((z, rgb, dist > tol));
+                        pix.texel = texel;
                         pix.slack = slack;
                     }
                 }
@@ -899,23 +1017,42 @@ fn draw_with<D: DepthFormat + Into<f64>>(
     let mesh = Mesh::new(&scene.model.positions, &scene.model.triangles)
         .and_then(|m| m.with_normals(&scene.model.normals))
         .ok()?;
+    let mesh = if scene.textured {
+        mesh.with_uvs(&scene.model.uvs).ok()?
+    } else {
+        mesh
+    };
+    let texels = texels();
+    let texture = Texture::new(Texels::Rgb888(&texels), 64, 64).ok()?;
+    let texture = if config.affine {
+        texture.with_mapping(Mapping::Affine)
+    } else {
+        texture.with_run(config.run)
+    };
     let specular = scene.gloss.map(|g| {
         let [r, g_, b] = g.color;
         Specular::new(Rgb888::new(r, g_, b), g.shininess)
     });
-    let objects = [Object::new(
-        &mesh,
-        scene.model_matrix(config.trig),
-        Rgb888::new(BASE[0], BASE[1], BASE[2]),
-    )
-    .with_specular(specular.as_ref())];
-    let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(AMBIENT)));
-    lighting
-        .push(DirectionalLight::new(
-            Vec3::from_f32(LIGHT.0[0] as f32, LIGHT.0[1] as f32, LIGHT.0[2] as f32)?,
-            LightColor::gray(Scalar::from_num(LIGHT.1)),
-        ))
-        .ok()?;
+    // A textured surface is white under a white ambient light of 1 alone: its texels as they
+    // are.
+    let base = if scene.textured {
+        Rgb888::new(255, 255, 255)
+    } else {
+        Rgb888::new(BASE[0], BASE[1], BASE[2])
+    };
+    let objects =
+        [Object::new(&mesh, scene.model_matrix(config.trig), base)
+            .with_specular(specular.as_ref())];
+    let mut lighting = Lighting::<2>::new(LightColor::WHITE);
+    if !scene.textured {
+        lighting = Lighting::new(LightColor::gray(Scalar::from_num(AMBIENT)));
+        lighting
+            .push(DirectionalLight::new(
+                Vec3::from_f32(LIGHT.0[0] as f32, LIGHT.0[1] as f32, LIGHT.0[2] as f32)?,
+                LightColor::gray(Scalar::from_num(LIGHT.1)),
+            ))
+            .ok()?;
+    }
     if let Some(lamp) = &scene.lamp {
         let light = PointLight::new(lamp.position, lamp.intensity).attenuated(lamp.attenuation);
         lighting.push_point(light).ok()?;
@@ -932,7 +1069,23 @@ fn draw_with<D: DepthFormat + Into<f64>>(
         color.fill(Rgb888::BLACK);
         z.clear();
         let started = Instant::now();
+        let (flat, smooth) = (
+            Textured {
+                texture: &texture,
+                light: Flat,
+            },
+            Textured {
+                texture: &texture,
+                light: Gouraud,
+            },
+        );
         match config.shade {
+            _ if scene.textured && config.shade == Shade::Flat => {
+                measured_frame(&frame, &world, flat, &mut cache, &mut color, &mut z)
+            }
+            _ if scene.textured => {
+                measured_frame(&frame, &world, smooth, &mut cache, &mut color, &mut z)
+            }
             Shade::Flat => measured_frame(&frame, &world, Flat, &mut cache, &mut color, &mut z),
             Shade::Gouraud => {
                 measured_frame(&frame, &world, Gouraud, &mut cache, &mut color, &mut z)
@@ -1002,6 +1155,12 @@ pub struct Metrics {
     /// documented bound (half a snapping cell per axis plus the transform bound).
     pub vertex_max: f64,
     pub vertex_over_bound: usize,
+    /// Textured scenes, over the pixels compared for colour whose texel is plain (see
+    /// `measure`): how far (in texels) the exact texel coordinates lie outside the texel
+    /// shown, at most, and how many of them show another texel.
+    pub texel_max: f64,
+    pub texel_over: usize,
+    pub texel_compared: usize,
 }
 
 /// Compares one configuration's image with the references.
@@ -1087,6 +1246,29 @@ pub fn measure(scene: &SceneDef, config: &Config, ideal: &Ideal, r: &Rendered) -
             if (zi - z2).abs() < (zi - z1).abs() {
                 m.occlusion += 1;
                 continue;
+            }
+        }
+        // Pixels whose texel is plain: the exact point stays in one texel when the pixel's
+        // sample moves by 1/8 pixel (its snapped vertices' reach) and the texel coordinates by
+        // 1/16 texel. Where texels are smaller than that, which one nearest sampling shows is
+        // aliasing, not error.
+        if let Some((st, grad)) = ip.texel {
+            let plain = (0..2).all(|k| {
+                let f = st[k] - st[k].floor();
+                f.min(1.0 - f) > grad[k] / 8.0 + 1.0 / 16.0
+            });
+            if plain {
+                // Another colour than a texel's counts as the farthest texel.
+                let e = texel_of(c).map_or(32.0, |shown| {
+                    let off = |k: usize| {
+                        let d = (shown[k] + 0.5 - st[k] + 32.0).rem_euclid(64.0) - 32.0;
+                        (d.abs() - 0.5).max(0.0)
+                    };
+                    off(0).max(off(1))
+                });
+                m.texel_max = m.texel_max.max(e);
+                m.texel_over += (e > 0.0) as usize;
+                m.texel_compared += 1;
             }
         }
         let e = (zi - z1).abs() / r.lsb;

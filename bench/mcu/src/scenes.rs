@@ -579,7 +579,20 @@ pub fn textured(
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> Option<()> {
-    let texture = Texture::new(Texels::Rgb565(&TEXELS), 64, 64).ok()?;
+    textured_by(mesh, f, cache, color, depth, |t| t)
+}
+
+/// [`textured`] with its texture's mapping changed by `configure` (the `knobs` preset's
+/// texture knobs).
+pub fn textured_by(
+    mesh: &Mesh<'_>,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+    configure: impl FnOnce(Texture<'static>) -> Texture<'static>,
+) -> Option<()> {
+    let texture = configure(Texture::new(Texels::Rgb565(&TEXELS), 64, 64).ok()?);
     let objects = [Object::new(mesh, torus_model(f), Rgb888::WHITE)];
     let scene = Scene::new(&objects, sun());
     let shading = Textured {

@@ -1,21 +1,23 @@
 //! Preset `knobs`: the reference torus of `full` once per configuration of the accuracy report
-//! (`docs/accuracy.md`), one line each, so that every precision knob has its Cortex-M cost.
+//! (`docs/accuracy.md`), one line each, so that every precision knob has its Cortex-M cost; the
+//! texture knobs draw the `textured` preset's torus instead.
 //! The names are the report's; `examples/accuracy.rs --mcu` runs this preset and reads them.
 #![no_std]
 #![no_main]
 
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-use fixed3d::math::{Angle, Normalize, Trig};
-use fixed3d::mesh::{Mesh, Object, Transform};
+use fixed3d::math::{Angle, Normalize, Scalar, Trig, Vec3};
+use fixed3d::mesh::{Mesh, Object, Transform, Triangle, Uv};
 use fixed3d::pipeline::{MatrixFormat, Precision, ScreenVertex};
 use fixed3d::scene::Scene;
 use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud};
+use fixed3d::texture::{Mapping, Texture};
 use mcu_bench::scenes::*;
 use mcu_bench::{storage, torus_storage, Op};
 use panic_semihosting as _;
 
-const KNOBS: [&str; 12] = [
+const KNOBS: [&str; 17] = [
     "default",
     "subpixel-2",
     "subpixel-0",
@@ -28,6 +30,11 @@ const KNOBS: [&str; 12] = [
     "normalize-micromath",
     "gouraud-affine",
     "gouraud-perspective",
+    "texture-affine",
+    "texture-run-1",
+    "texture-run-4",
+    "texture-run-16",
+    "texture-run-64",
 ];
 
 const N: usize = (W * H) as usize;
@@ -41,6 +48,14 @@ fn main() -> ! {
         D32: [u32; N] = [0; N],
     );
     let mesh = torus_mesh(pos, nor, tri);
+    let (tcache, tp, tn, tuv, tt) = storage!(
+        TCACHE: [ScreenVertex; TEXTURED_VERTICES] = [ScreenVertex::DEFAULT; TEXTURED_VERTICES],
+        TP: [Vec3; TEXTURED_VERTICES] = [Vec3::ZERO; TEXTURED_VERTICES],
+        TN: [Vec3; TEXTURED_VERTICES] = [Vec3::ZERO; TEXTURED_VERTICES],
+        TUV: [Uv; TEXTURED_VERTICES] = [[Scalar::ZERO; 2]; TEXTURED_VERTICES],
+        TT: [Triangle; TORUS_TRIANGLES] = [[0; 3]; TORUS_TRIANGLES],
+    );
+    let textured_torus = textured_torus_mesh(tp, tn, tuv, tt);
     mcu_bench::run_each(&KNOBS, |knob, op| match op {
         Op::Clear => {
             fb.fill(Rgb565::BLACK);
@@ -48,7 +63,18 @@ fn main() -> ! {
             d32.fill(u32::MAX);
             0
         }
-        Op::Draw(f) => draw(knob, &mesh, f, cache, fb, d16, d32).is_some() as u32,
+        Op::Draw(f) => match knob.strip_prefix("texture-") {
+            Some(mapping) => {
+                // "affine", or "run-N": an exact division every N pixels.
+                let run = mapping.strip_prefix("run-").and_then(|n| n.parse().ok());
+                let configure = |t: Texture<'static>| match run {
+                    Some(n) => t.with_run(n),
+                    None => t.with_mapping(Mapping::Affine),
+                };
+                textured_by(&textured_torus, f, tcache, fb, d16, configure).is_some() as u32
+            }
+            None => draw(knob, &mesh, f, cache, fb, d16, d32).is_some() as u32,
+        },
         Op::Hash => frame_hash(fb),
     })
 }
