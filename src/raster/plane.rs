@@ -4,19 +4,21 @@
 use super::ScreenPoint;
 use crate::math::{mul_wide, DivideBy, SUBPIXEL_SCALE};
 
-/// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels.
+/// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels, through the first
+/// vertex `(x0, y0, v0)`, kept as its value at the centre of pixel (0, 0): the value at pixel
+/// `(px, py)` is then that plus `px` and `py` pixel steps, with no vertex offsets to form.
 ///
 /// Vertex values are scaled so that they stay below 2⁴⁵ in magnitude and vertex coordinates
 /// within ±2¹⁵ (the guard band): the gradient numerators then stay below 2⁶², and the gradients
 /// are rounded to the values' own unit. Evaluating at any pixel centre inside the triangle
 /// errs by at most 2¹⁷ units (distance below 2¹⁷ sub-pixels times half a unit each way); the
-/// products may wrap in between, but the sum is exact modulo 2⁶⁴ and the true result fits, so
-/// wrapping arithmetic returns it exactly.
+/// products may wrap in between (the value at pixel (0, 0) may lie far outside the triangle),
+/// but the sum is exact modulo 2⁶⁴ and the true result fits, so wrapping arithmetic returns it
+/// exactly.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Plane {
-    x0: i32,
-    y0: i32,
-    v0: i64,
+    /// The value at the centre of pixel (0, 0), modulo 2⁶⁴.
+    origin: i64,
     gx: i64,
     gy: i64,
 }
@@ -123,22 +125,14 @@ impl Plane {
         }
     }
 
-    /// The centre of pixel `(px, py)` in sub-pixels from the first vertex.
-    #[inline(always)]
-    fn offsets(&self, px: i32, py: i32) -> (i64, i64) {
-        let half = SUBPIXEL_SCALE as i64 / 2;
-        let dx = (px as i64 * SUBPIXEL_SCALE as i64 + half).wrapping_sub(self.x0 as i64);
-        let dy = (py as i64 * SUBPIXEL_SCALE as i64 + half).wrapping_sub(self.y0 as i64);
-        (dx, dy)
-    }
-
-    /// The value at the centre of pixel `(px, py)`.
+    /// The value at the centre of pixel `(px, py)`: the value at pixel (0, 0) and `px`, `py`
+    /// pixel steps, modulo 2⁶⁴.
     #[inline]
     pub(crate) fn at(&self, px: i32, py: i32) -> i64 {
-        let (dx, dy) = self.offsets(px, py);
-        self.v0
-            .wrapping_add(self.gx.wrapping_mul(dx))
-            .wrapping_add(self.gy.wrapping_mul(dy))
+        let (along, down) = self.pixel_steps();
+        self.origin
+            .wrapping_add(along.wrapping_mul(px as i64))
+            .wrapping_add(down.wrapping_mul(py as i64))
     }
 
     /// The exact changes of [`at`](Self::at) from one pixel to the next along a row and down a
@@ -195,12 +189,19 @@ impl AreaDivisor {
         } else {
             (nx, ny)
         };
+        let (gx, gy) = (
+            self.by_area.round_shifted(nx, shift),
+            self.by_area.round_shifted(ny, shift),
+        );
+        // The centre of pixel (0, 0) in sub-pixels from the vertex.
+        let half = SUBPIXEL_SCALE as i64 / 2;
+        let (dx, dy) = (half - a.x as i64, half - a.y as i64);
         Plane {
-            x0: a.x,
-            y0: a.y,
-            v0,
-            gx: self.by_area.round_shifted(nx, shift),
-            gy: self.by_area.round_shifted(ny, shift),
+            origin: v0
+                .wrapping_add(gx.wrapping_mul(dx))
+                .wrapping_add(gy.wrapping_mul(dy)),
+            gx,
+            gy,
         }
     }
 }
@@ -292,8 +293,8 @@ mod tests {
                 let wide = Plane::new(&p, v.map(|v| (v as i64) << shift), area);
                 let short = Plane::scaled(&p, v, shift, area);
                 assert_eq!(
-                    (short.v0, short.gx, short.gy),
-                    (wide.v0, wide.gx, wide.gy),
+                    (short.origin, short.gx, short.gy),
+                    (wide.origin, wide.gx, wide.gy),
                     "{p:?} {v:?} {shift}"
                 );
             }
