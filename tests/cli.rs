@@ -43,6 +43,16 @@ fn run(args: &[&str]) -> Output {
     Command::new(tool()).args(args).output().unwrap()
 }
 
+/// Runs the tool with `args` writing `out`, which must succeed, and reads the image back.
+fn rendered(args: &[&str], out: &str) -> Vec<embedded_graphics::pixelcolor::Rgb888> {
+    let o = run(args);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{args:?}: {err}");
+    common::golden::read_png(std::path::Path::new(out))
+        .unwrap()
+        .2
+}
+
 fn out_png(name: &str) -> String {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
         .join(name)
@@ -402,11 +412,7 @@ fn render_tool_draws_the_textured_floor_texel_for_texel() {
             &out,
         ];
         args.extend_from_slice(extra);
-        let o = run(&args);
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        common::golden::read_png(std::path::Path::new(&out))
-            .unwrap()
-            .2
+        rendered(&args, &out)
     };
     let pixels = render("mtl.png", &[]);
     let (compared, differ) = floor::compare_with_reference(&pixels, &texels);
@@ -447,16 +453,7 @@ fn render_tool_point_lights() {
         let mut args = vec!["--shape", "sphere", "--size", "80x60", "--out", &out];
         args.extend(["--ambient", "0.1", "--eye", "0,0,4", "--target", "0,0,0"]);
         args.extend(extra);
-        let o = run(&args);
-        assert_eq!(
-            o.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&o.stderr)
-        );
-        common::golden::read_png(std::path::Path::new(&out))
-            .unwrap()
-            .2
+        rendered(&args, &out)
     };
     let halves = |p: &[embedded_graphics::pixelcolor::Rgb888]| {
         use embedded_graphics::pixelcolor::RgbColor;
@@ -510,16 +507,7 @@ fn render_tool_specular_ortho_and_perspective_gouraud() {
         ]);
         args.extend(["--light", "0,0,1,0.8"]);
         args.extend(extra);
-        let o = run(&args);
-        assert_eq!(
-            o.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&o.stderr)
-        );
-        common::golden::read_png(std::path::Path::new(&out))
-            .unwrap()
-            .2
+        rendered(&args, &out)
     };
     let white = |p: &[embedded_graphics::pixelcolor::Rgb888]| {
         p.iter().filter(|c| c.g() > 180 && c.b() > 180).count()
@@ -620,16 +608,7 @@ fn render_tool_draws_a_scene_file_as_the_renderer_does() {
         let mut args = vec!["--scene", path.to_str().unwrap(), "--size", "160x120"];
         args.extend(["--out", &out]);
         args.extend(extra);
-        let o = run(&args);
-        assert_eq!(
-            o.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&o.stderr)
-        );
-        common::golden::read_png(std::path::Path::new(&out))
-            .unwrap()
-            .2
+        rendered(&args, &out)
     };
     // The same scene through the library.
     let torus = desktop::Model::shape("torus").unwrap();

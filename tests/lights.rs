@@ -15,6 +15,46 @@ use fixed3d::scene::LightColor;
 const BLANK: Rgb888 = Rgb888::new(1, 2, 3);
 const BASE: Rgb888 = Rgb888::new(255, 160, 64);
 
+/// The reference torus (48 x 24) in storage of its own.
+struct Torus {
+    p: Vec<Vec3>,
+    n: Vec<Vec3>,
+    t: Vec<[u16; 3]>,
+}
+
+impl Torus {
+    fn new() -> Self {
+        let (nv, nt) = torus_counts(48, 24);
+        Torus {
+            p: vec![Vec3::ZERO; nv],
+            n: vec![Vec3::ZERO; nv],
+            t: vec![[0; 3]; nt],
+        }
+    }
+
+    fn mesh(&mut self) -> Mesh<'_> {
+        let (one, minor) = (Scalar::ONE, Scalar::from_num(0.4));
+        torus(one, minor, 48, 24, &mut self.p, &mut self.n, &mut self.t).unwrap()
+    }
+}
+
+/// One 320x240 frame of `models` through the renderer, in bands of `rows` rows.
+fn frame(models: &[Model<'_>], lights: &[Light], camera: &Camera, rows: usize) -> Vec<Rgb888> {
+    let vertices = models.iter().map(|m| m.mesh().positions().len()).sum();
+    let triangles = models.iter().map(|m| m.mesh().triangles().len()).sum();
+    let mut screen = Screen::new(320, 240, BLANK);
+    let (mut v, mut b) = (
+        vec![fixed3d::pipeline::ScreenVertex::DEFAULT; vertices],
+        vec![fixed3d::pipeline::Bin::EMPTY; triangles],
+    );
+    let (mut c, mut d) = (vec![Rgb888::BLACK; 320 * rows], vec![0u16; 320 * rows]);
+    let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
+    renderer
+        .render(models, lights, camera, &mut screen)
+        .unwrap();
+    screen.pixels
+}
+
 /// An equilateral triangle about the origin in the plane y = 0, facing +y, its corners one
 /// unit from the centre, every vertex normal +y. A light on the y axis is as far from each
 /// corner as from the others and at the same angle: Gouraud then gives one colour.
@@ -157,18 +197,8 @@ fn a_point_light_lights_nothing_from_its_range_on() {
 /// of the distance, a cool directional light and a little ambient: flat and Gouraud.
 #[test]
 fn golden_point_light_torus() {
-    let (nv, nt) = torus_counts(48, 24);
-    let (mut p, mut n, mut t) = (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0; 3]; nt]);
-    let mesh = torus(
-        Scalar::ONE,
-        Scalar::from_num(0.4),
-        48,
-        24,
-        &mut p,
-        &mut n,
-        &mut t,
-    )
-    .unwrap();
+    let mut torus = Torus::new();
+    let mesh = torus.mesh();
     let warm = Rgb888::new(255, 200, 140);
     let lights = [
         Light::ambient(0.08),
@@ -186,17 +216,7 @@ fn golden_point_light_torus() {
         let model = Model::new(&mesh, Rgb888::new(230, 230, 230))
             .rotated_x(60)
             .shaded(shade);
-        let mut screen = Screen::new(320, 240, BLANK);
-        let (mut v, mut b) = (
-            vec![fixed3d::pipeline::ScreenVertex::DEFAULT; nv],
-            vec![fixed3d::pipeline::Bin::EMPTY; nt],
-        );
-        let (mut c, mut d) = (vec![Rgb888::BLACK; 320 * 40], vec![0u16; 320 * 40]);
-        let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
-        renderer
-            .render(&[model], &lights, &camera, &mut screen)
-            .unwrap();
-        screen.pixels
+        frame(&[model], &lights, &camera, 40)
     };
     let flat = draw(Shade::Flat);
     let gouraud = draw(Shade::Gouraud);
@@ -283,18 +303,8 @@ fn highlights_follow_the_camera() {
 /// light: Gouraud and perspective-correct Gouraud; flat leaves the highlights out.
 #[test]
 fn golden_specular_torus() {
-    let (nv, nt) = torus_counts(48, 24);
-    let (mut p, mut n, mut t) = (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0; 3]; nt]);
-    let mesh = torus(
-        Scalar::ONE,
-        Scalar::from_num(0.4),
-        48,
-        24,
-        &mut p,
-        &mut n,
-        &mut t,
-    )
-    .unwrap();
+    let mut torus = Torus::new();
+    let mesh = torus.mesh();
     let lights = [
         Light::ambient(0.1),
         Light::directional([-1, 1, 1], 0.6),
@@ -310,17 +320,7 @@ fn golden_specular_torus() {
             .rotated_y(30)
             .shaded(shade)
             .glossy(&gloss);
-        let mut screen = Screen::new(320, 240, BLANK);
-        let (mut v, mut b) = (
-            vec![fixed3d::pipeline::ScreenVertex::DEFAULT; nv],
-            vec![fixed3d::pipeline::Bin::EMPTY; nt],
-        );
-        let (mut c, mut d) = (vec![Rgb888::BLACK; 320 * 240], vec![0u16; 320 * 240]);
-        let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
-        renderer
-            .render(&[model], &lights, &camera, &mut screen)
-            .unwrap();
-        screen.pixels
+        frame(&[model], &lights, &camera, 240)
     };
     let gouraud = draw(Shade::Gouraud);
     golden::check("specular_torus_gouraud", 320, 240, &gouraud);

@@ -85,33 +85,25 @@ n=$(changed left mode)
 echo "M: $n pixels changed"
 [ "$n" -gt 2000 ] || fail "M did not change the image ($n pixels)"
 
-# In Gouraud mode (3), L puts a point light at the camera: the scene brightens; K takes it away
-# again: the scene is as it was (the status line, which shows the message and the frame time,
-# is left out).
+# In Gouraud mode (3), L puts a point light at the camera and K takes it away; G turns
+# highlights on and off again. Each first key changes the scene, each second brings back the
+# scene from before the first, pixel for pixel (the status line, which shows the message and
+# the frame time, is left out).
 scene() { convert "$out/$1.png" -crop 640x460+0+20 +repage "$out/$1-scene.png"; }
+# press KEY NAME: presses KEY, shoots the scene as NAME and prints how many pixels differ
+# from the scene before the toggles.
+press() { xdotool key "$1"; sleep 0.6; shot "$2"; scene "$2"; changed plain-scene "$2-scene"; }
 xdotool key 3; sleep 0.6
-shot unlit; scene unlit
-xdotool key l; sleep 0.6
-shot lamp; scene lamp
-grep -q "point light at" "$out/viewer.log" || fail "L did not report the point light"
-n=$(changed unlit-scene lamp-scene)
-echo "L: $n pixels changed"
+shot plain; scene plain
+n=$(press l lamp); echo "L: $n pixels changed"
 [ "$n" -gt 2000 ] || fail "L did not light the scene ($n pixels)"
-xdotool key k; sleep 0.6
-shot unlit2; scene unlit2
-n=$(changed unlit-scene unlit2-scene)
-echo "K: $n pixels differ from before L"
+grep -q "point light at" "$out/viewer.log" || fail "L did not report the point light"
+n=$(press k unlit); echo "K: $n pixels differ from before L"
 [ "$n" -lt 20 ] || fail "K did not take the point light away ($n pixels)"
 grep -q "point light removed" "$out/viewer.log" || fail "K did not report the removal"
-# G turns highlights on (the scene changes) and off again (as it was).
-xdotool key g; sleep 0.6
-shot glossy; scene glossy
-n=$(changed unlit-scene glossy-scene)
-echo "G: $n pixels changed"
+n=$(press g glossy); echo "G: $n pixels changed"
 [ "$n" -gt 500 ] || fail "G did not add highlights ($n pixels)"
-xdotool key g; sleep 0.6
-shot matte; scene matte
-n=$(changed unlit-scene matte-scene)
+n=$(press g matte); echo "G again: $n pixels differ from before G"
 [ "$n" -lt 20 ] || fail "G again did not take the highlights away ($n pixels)"
 
 # P saves under the next free name, never over an earlier file.

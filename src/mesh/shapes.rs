@@ -289,6 +289,17 @@ impl<'a> Storage<'a> {
         }
     }
 
+    /// The positions, normals, UVs (empty for a shape without them) and triangles to fill.
+    #[allow(clippy::type_complexity)]
+    fn parts(&mut self) -> (&mut [Vec3], &mut [Vec3], &mut [Uv], &mut [Triangle]) {
+        (
+            &mut *self.positions,
+            &mut *self.normals,
+            self.uvs.as_deref_mut().unwrap_or(&mut []),
+            &mut *self.triangles,
+        )
+    }
+
     /// The mesh over the filled storage (its indices are checked once more).
     fn into_mesh(self) -> Result<Mesh<'a>, ShapeError> {
         let too_small = self.too_small;
@@ -395,12 +406,7 @@ fn torus_into<'a>(
         torus_counts(ring, tube)
     };
     let mut store = Storage::new(counts, positions, normals, uvs, triangles)?;
-    let (pos, nor, tri) = (
-        &mut *store.positions,
-        &mut *store.normals,
-        &mut *store.triangles,
-    );
-    let uvs = store.uvs.as_deref_mut().unwrap_or(&mut []);
+    let (pos, nor, uvs, tri) = store.parts();
     let (big, small) = (major.to_bits() as i64, minor.to_bits() as i64);
     let (rows, columns) = (ring as usize + seam as usize, tube as usize + seam as usize);
     for (k, (p, n)) in pos.iter_mut().zip(nor.iter_mut()).enumerate() {
@@ -531,12 +537,7 @@ fn sphere_into<'a>(
         uv_sphere_counts(segments, rings)
     };
     let mut store = Storage::new(counts, positions, normals, uvs, triangles)?;
-    let (pos, nor, tri) = (
-        &mut *store.positions,
-        &mut *store.normals,
-        &mut *store.triangles,
-    );
-    let uvs = store.uvs.as_deref_mut().unwrap_or(&mut []);
+    let (pos, nor, uvs, tri) = store.parts();
     let r = radius.to_bits() as i64;
     let (seg, last_ring) = (segments as usize, rings as usize);
     let south = counts.0 - 1;
