@@ -312,7 +312,8 @@ impl PreparedPoint {
             p.saturating_sub(a)
         });
         let (unit, distance) = unit_and_length(v)?;
-        (distance < u64::from(self.range)).then(|| (unit, self.attenuation.factor(distance)))
+        let within = self.range == u32::MAX || distance < u64::from(self.range);
+        within.then(|| (unit, self.attenuation.factor(distance)))
     }
 }
 

@@ -769,6 +769,12 @@ mod tests {
             cut += !in_range as u32;
         }
         assert!(lit > 10_000 && cut > 1_000, "{lit} {cut}");
+        // Without a range, a light lights surfaces however far (here 104,000 units away,
+        // beyond what a range's 32 bits hold).
+        let mut far = Lighting::<1>::new(LightColor::BLACK);
+        far.push_point(PointLight::new([-30_000; 3], 1)).unwrap();
+        let at = [30_000i64 << 16; 3];
+        assert_eq!(lambert(base, normalize([-1; 3]), &at, &far), base);
         // At the light itself: ambient alone.
         let mut lighting = Lighting::<1>::new(LightColor::gray(q(0.2)));
         lighting.push_point(PointLight::new([1, 2, 3], 1)).unwrap();
