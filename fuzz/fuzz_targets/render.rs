@@ -1,7 +1,9 @@
-//! Fuzzes the renderer: random meshes (any coordinates, invalid indices among them), cameras,
-//! lights, viewports, band heights, storage sizes, shadings and styles. It must never panic
-//! (overflow checks and debug assertions are on), never write outside its buffers (canary
-//! cells after them) or the display, and draw a frame in bands as it draws it in one pass.
+//! Fuzzes the renderer: random meshes (any coordinates, invalid indices among them, with or
+//! without vertex normals and UVs), cameras, ambient, directional and point lights, viewports,
+//! band heights, storage sizes, shadings, styles, textures (every wrap, filter, mapping and
+//! run) and highlights. It must never panic (overflow checks and debug assertions are on),
+//! never write outside its buffers (canary cells after them) or the display, and draw a frame
+//! in bands as it draws it in one pass.
 #![no_main]
 
 use embedded_graphics::draw_target::DrawTarget;
@@ -9,7 +11,9 @@ use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::{Drawable, Pixel};
 use fixed3d::math::{Scalar, Vec3};
-use fixed3d::mesh::Mesh;
+use fixed3d::mesh::{Mesh, Specular};
+use fixed3d::scene::{Attenuation, PointLight};
+use fixed3d::texture::{Filter, Mapping, Texels, Texture, Wrap};
 use fixed3d::pipeline::{Bin, Cull, ScreenVertex};
 use fixed3d::render::{Model, Renderer, Shade, Wireframe};
 use fixed3d::{Camera, Light};
@@ -75,24 +79,49 @@ fuzz_target!(|data: &[u8]| {
     let triangles: Vec<[u16; 3]> = (0..1 + b.u8() % 40)
         .map(|_| [0; 3].map(|_| u16::from(b.u8()) % (vertices as u16 + 2)))
         .collect();
-    let Ok(mesh) = Mesh::new(&positions, &triangles) else {
+    let normals: Vec<Vec3> = (0..vertices).map(|_| b.vec3()).collect();
+    let uvs: Vec<[Scalar; 2]> = (0..vertices).map(|_| [b.scalar(), b.scalar()]).collect();
+    let Ok(plain) = Mesh::new(&positions, &triangles) else {
         return;
     };
+    let with = b.u8();
+    let mesh = if with & 1 != 0 { plain.with_normals(&normals).unwrap_or(plain) } else { plain };
+    let mesh = if with & 2 != 0 { mesh.with_uvs(&uvs).unwrap_or(mesh) } else { mesh };
+    let texels: Vec<Rgb888> = (0..12).map(|_| Rgb888::new(b.u8(), b.u8(), b.u8())).collect();
+    let (tw, th) = (1 + u16::from(b.u8() % 4), 1 + u16::from(b.u8() % 3));
+    let Ok(texture) = Texture::new(Texels::Rgb888(&texels), tw, th) else {
+        return;
+    };
+    let texture = texture
+        .with_wrap([Wrap::Repeat, Wrap::Clamp][usize::from(b.u8() % 2)])
+        .with_filter([Filter::Nearest, Filter::Bilinear][usize::from(b.u8() % 2)])
+        .with_mapping([Mapping::Perspective, Mapping::Affine][usize::from(b.u8() % 2)])
+        .with_run(b.u8());
+    let gloss = Specular::new(
+        Rgb888::new(b.u8(), b.u8(), b.u8()),
+        u16::from_le_bytes([b.u8(), b.u8()]),
+    );
     let models: Vec<Model<'_>> = (0..1 + b.u8() % 3)
         .map(|_| {
             let shade = [Shade::Unlit, Shade::Flat, Shade::Gouraud, Shade::PerspectiveGouraud]
                 [usize::from(b.u8() % 4)];
-            let model = Model::new(&mesh, Rgb888::new(b.u8(), b.u8(), b.u8()))
+            let mut model = Model::new(&mesh, Rgb888::new(b.u8(), b.u8(), b.u8()))
                 .rotated_y(b.scalar())
                 .rotated_x(b.scalar())
                 .scaled(b.scalar())
                 .translated(b.vec3())
                 .shaded(shade);
-            if b.u8() % 4 == 0 {
-                model.wireframe()
-            } else {
-                model
+            let extras = b.u8();
+            if extras & 1 != 0 {
+                model = model.textured(&texture);
             }
+            if extras & 2 != 0 {
+                model = model.glossy(&gloss);
+            }
+            if extras % 16 >= 12 {
+                model = model.wireframe();
+            }
+            model
         })
         .collect();
     let camera = if b.u8() % 4 == 0 {
@@ -102,9 +131,15 @@ fuzz_target!(|data: &[u8]| {
     }
     .looking_at(b.vec3(), b.vec3());
     let lights: Vec<Light> = (0..b.u8() % 6)
-        .map(|_| match b.u8() % 2 {
+        .map(|_| match b.u8() % 3 {
             0 => Light::ambient(b.scalar()),
-            _ => Light::directional(b.vec3(), b.scalar()),
+            1 => Light::directional(b.vec3(), b.scalar()),
+            _ => {
+                let attenuation = [Attenuation::None, Attenuation::Linear, Attenuation::InverseSquare]
+                    [usize::from(b.u8() % 3)];
+                let point = PointLight::new(b.vec3(), b.scalar()).attenuated(attenuation);
+                if b.u8() % 2 == 0 { point.within(b.scalar()) } else { point }.into()
+            }
         })
         .collect();
     let cull = [Cull::Back, Cull::Front, Cull::None][usize::from(b.u8() % 3)];
