@@ -209,8 +209,10 @@ pub(crate) fn unit_and_length(v: [i64; 3]) -> Option<([i32; 3], u64)> {
     if len == 0 {
         return None;
     }
+    // One divisor for the three components (below 2³²: prepared once where that is faster).
+    let by = super::DivideBy::new(len as i64);
     let unit = scaled.map(|c| {
-        let q = super::div_round(c << 30, len as i64);
+        let q = by.round(c << 30);
         q.clamp(-(UNIT_ONE as i64), UNIT_ONE as i64) as i32
     });
     let length = if shift > 0 {
