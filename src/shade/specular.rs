@@ -3,7 +3,7 @@
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use super::lambert::{attenuate, term};
-use crate::math::{cosine_unit, map3, normalize, UNIT_ONE};
+use crate::math::{cosine_unit, map3, mul_wide_u32, normalize, UNIT_ONE};
 use crate::mesh::Specular;
 use crate::scene::Lighting;
 
@@ -86,15 +86,16 @@ fn half(a: &[i32; 3], b: &[i32; 3]) -> [i32; 3] {
 /// `c^k` for a cosine `c` (Q2.30, taken within [0, 1]) and `k ≥ 1` (0 counts as 1), by
 /// squaring, each of at most 32 products rounded down: within `2k·2⁻³⁰` below the exact power.
 fn power(c: i32, k: u16) -> i32 {
-    let mut base = c.clamp(0, UNIT_ONE) as u64;
+    let mut base = c.clamp(0, UNIT_ONE) as u32;
     let mut k = k.max(1);
-    let mut result = 1u64 << 30;
+    let mut result = 1u32 << 30;
+    // Factors at most 2³⁰: products below 2⁶⁰, and back to at most 2³⁰.
+    let times = |a: u32, b: u32| (mul_wide_u32(a, b) >> 30) as u32;
     while k != 0 {
-        // Factors at most 2³⁰: products below 2⁶¹.
         if k & 1 != 0 {
-            result = (result * base) >> 30;
+            result = times(result, base);
         }
-        base = (base * base) >> 30;
+        base = times(base, base);
         k >>= 1;
     }
     result as i32
