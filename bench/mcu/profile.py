@@ -40,7 +40,8 @@ def machine(target):
 
 def build(preset, target, target_dir):
     env = dict(os.environ, CARGO_PROFILE_RELEASE_S_DEBUG="line-tables-only")
-    features = ["--features", "micromath"] if preset == "knobs" else []
+    # The presets that need features of their own (as run.sh builds them).
+    features = {"knobs": ["--features", "micromath"], "phong": ["--features", "phong"]}.get(preset, [])
     subprocess.run(["cargo", "build", "--quiet", "--profile", "release-s", "--target", target,
                     "--target-dir", target_dir, "--bin", preset] + features,
                    cwd=HERE, env=env, check=True)
