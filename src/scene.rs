@@ -10,7 +10,9 @@ use core::fmt;
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-use crate::math::{is_scaled_rotation, map3, normalize, unit_and_length, Number, Scalar, Vec3};
+use crate::math::{
+    div_floor, is_scaled_rotation, map3, normalize, unit_and_length, Number, Scalar, Vec3,
+};
 use crate::mesh::Object;
 
 /// The colour and intensity of a light: one [`Scalar`] per channel, 1.0 is full strength
@@ -175,9 +177,9 @@ impl Attenuation {
         let f = match self {
             Attenuation::None => ONE,
             // 2⁴⁶ / (2¹⁶ + d) is (1 / (1 + d)) in Q2.30.
-            Attenuation::Linear => (ONE << 16) / (1u64 << 16).saturating_add(d),
+            Attenuation::Linear => div_floor(ONE << 16, (1u64 << 16).saturating_add(d)),
             // d² below 2⁶², else the factor is below 2⁻³⁰.
-            Attenuation::InverseSquare if d < 1 << 31 => (ONE << 32) / ((1 << 32) + d * d),
+            Attenuation::InverseSquare if d < 1 << 31 => div_floor(ONE << 32, (1 << 32) + d * d),
             Attenuation::InverseSquare => 0,
         };
         f as i32

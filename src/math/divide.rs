@@ -107,22 +107,38 @@ const fn with_sign_of(n: i64, q: u64) -> i64 {
     }
 }
 
-/// [`div_round`] for `d` that fits 32 bits, by [`div_u64_u32`]: once for a quotient below 2³²,
-/// once more for its high word.
+/// [`div_round`] for `d` that fits 32 bits, by [`div_by_word`].
 const fn div_round_u64_u32(n: i64, d: i64) -> Option<i64> {
     if d <= 0 || d > u32::MAX as i64 {
         return None;
     }
     let d = d as u32;
-    let a = rounded_magnitude(n, d);
+    let q = div_by_word(rounded_magnitude(n, d), d);
+    Some(with_sign_of(n, q))
+}
+
+/// `⌊a / d⌋` for `d > 0` by [`div_u64_u32`]: once for a quotient below 2³², once more for its
+/// high word.
+const fn div_by_word(a: u64, d: u32) -> u64 {
     let hi = (a >> 32) as u32;
-    let q = if hi < d {
+    if hi < d {
         div_u64_u32(a, d) as u64
     } else {
         let (qh, rh) = (hi / d, hi % d);
         ((qh as u64) << 32) | div_u64_u32(((rh as u64) << 32) | (a & 0xFFFF_FFFF), d) as u64
-    };
-    Some(with_sign_of(n, q))
+    }
+}
+
+/// `⌊n / d⌋` (0 for `d = 0`): by 32-bit digits ([`div_by_word`]) where `d` fits 32 bits (on
+/// 32-bit cores a 64-bit division is a long library routine).
+pub(crate) const fn div_floor(n: u64, d: u64) -> u64 {
+    if d == 0 {
+        return 0;
+    }
+    if d <= u32::MAX as u64 {
+        return div_by_word(n, d as u32);
+    }
+    n / d
 }
 
 /// Divisors below `2^SHIFTED_DIVISOR_BITS` take [`shifted_by_short`]: a remainder shifted by
@@ -877,6 +893,26 @@ mod tests {
             assert_eq!(div_u64_u32(n, d), q, "{n} / {d}");
         }
         assert!(checked > 100_000, "{checked}");
+        // Floor division by 32-bit digits equals the 64-bit one for every size of divisor and
+        // numerator, and the ends of both ranges.
+        for k in 0..200_000u64 {
+            let x = rng.next_u64();
+            let n = rng.next_u64() >> (k % 64);
+            let d = (x >> (x % 64)).max(1);
+            assert_eq!(
+                div_by_word(n, (d as u32).max(1)),
+                n / u64::from((d as u32).max(1))
+            );
+            assert_eq!(div_floor(n, d), n / d, "{n} / {d}");
+        }
+        for (n, d) in [
+            (u64::MAX, 1),
+            (u64::MAX, u64::from(u32::MAX)),
+            (0, 7),
+            (5, 0),
+        ] {
+            assert_eq!(div_floor(n, d), n.checked_div(d).unwrap_or(0));
+        }
     }
 
     /// The two-by-one division equals 128-bit division: random divisors of every size,

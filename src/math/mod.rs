@@ -30,7 +30,9 @@ pub(crate) use scalar::{
     shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
 };
 
-pub(crate) use divide::{div_round, div_round_word, fraction_in_words, DivideBy, ShortQuotients};
+pub(crate) use divide::{
+    div_floor, div_round, div_round_word, fraction_in_words, DivideBy, ShortQuotients,
+};
 #[cfg(test)]
 pub(crate) use face::shrink_below;
 pub(crate) use face::{apply, face_direction, face_newton_direction, shrink};
