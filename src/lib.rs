@@ -41,7 +41,7 @@ pub use scene::Light;
 pub mod prelude {
     pub use crate::camera::Camera;
     pub use crate::math::{Angle, Number, Scalar, Vec3};
-    pub use crate::mesh::{Mesh, CUBE, OCTAHEDRON, TETRAHEDRON};
+    pub use crate::mesh::{Mesh, Specular, CUBE, OCTAHEDRON, TETRAHEDRON};
     pub use crate::render::{Model, RenderError, Renderer, Shade, Storage, Style, Wireframe};
     pub use crate::scene::{Attenuation, Light, PointLight};
 }

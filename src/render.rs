@@ -214,7 +214,7 @@ impl<'a> Model<'a> {
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
-    /// use fixed3d::mesh::{torus, Specular};
+    /// use fixed3d::mesh::torus;
     /// use fixed3d::prelude::*;
     /// static GLOSS: Specular = Specular::new(Rgb888::new(255, 255, 255), 32);
     /// let (mut p, mut n, mut t) = ([Vec3::ZERO; 200], [Vec3::ZERO; 200], [[0; 3]; 400]);
