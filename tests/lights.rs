@@ -38,21 +38,42 @@ impl Torus {
     }
 }
 
-/// One 320x240 frame of `models` through the renderer, in bands of `rows` rows.
-fn frame(models: &[Model<'_>], lights: &[Light], camera: &Camera, rows: usize) -> Vec<Rgb888> {
+/// One `w` x `h` frame of `models` through the renderer, in bands of `rows` rows.
+fn frame(
+    models: &[Model<'_>],
+    lights: &[Light],
+    camera: &Camera,
+    (w, h): (u32, u32),
+    rows: usize,
+) -> Vec<Rgb888> {
     let vertices = models.iter().map(|m| m.mesh().positions().len()).sum();
     let triangles = models.iter().map(|m| m.mesh().triangles().len()).sum();
-    let mut screen = Screen::new(320, 240, BLANK);
+    let mut screen = Screen::new(w, h, BLANK);
     let (mut v, mut b) = (
         vec![fixed3d::pipeline::ScreenVertex::DEFAULT; vertices],
         vec![fixed3d::pipeline::Bin::EMPTY; triangles],
     );
-    let (mut c, mut d) = (vec![Rgb888::BLACK; 320 * rows], vec![0u16; 320 * rows]);
+    let cells = w as usize * rows;
+    let (mut c, mut d) = (vec![Rgb888::BLACK; cells], vec![0u16; cells]);
     let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d);
     renderer
         .render(models, lights, camera, &mut screen)
         .unwrap();
     screen.pixels
+}
+
+/// The pixels `model` covers in a 64x64 frame (its background black).
+fn covered(model: Model<'_>, lights: &[Light], camera: &Camera) -> Vec<Rgb888> {
+    let pixels = frame(&[model], lights, camera, (64, 64), 64);
+    pixels.into_iter().filter(|&p| p != Rgb888::BLACK).collect()
+}
+
+/// Every pixel within one 8-bit step of `want` per channel.
+fn all_within_one(pixels: &[Rgb888], want: [i32; 3]) -> bool {
+    pixels.iter().all(|p| {
+        let got = [p.r(), p.g(), p.b()].map(i32::from);
+        got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1)
+    })
 }
 
 /// An equilateral triangle about the origin in the plane y = 0, facing +y, its corners one
@@ -142,24 +163,12 @@ fn point_lights_light_faces_at_their_centre_and_vertices_where_they_are() {
                 .rotated_y(turn)
                 .translated(place)
                 .shaded(shade);
-            let mut screen = Screen::new(64, 64, BLANK);
-            let mut storage = Storage::<3, 1>::new();
-            let (mut c, mut d) = ([Rgb888::BLACK; 64 * 64], [0u16; 64 * 64]);
-            let mut renderer = Renderer::new(&mut storage, &mut c, &mut d);
-            renderer
-                .render(&[model], &lights, &camera, &mut screen)
-                .unwrap();
-            let drawn: Vec<_> = screen
-                .pixels
-                .iter()
-                .filter(|&&p| p != Rgb888::BLACK)
-                .collect();
+            let drawn = covered(model, &lights, &camera);
             assert!(drawn.len() > 50, "{k}: {} pixels", drawn.len());
-            for p in drawn {
-                let got = [p.r(), p.g(), p.b()].map(i32::from);
-                let close = got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1);
-                assert!(close, "{k} {shade:?} {attenuation:?}: {got:?} vs {want:?}");
-            }
+            assert!(
+                all_within_one(&drawn, want),
+                "{k} {shade:?} {attenuation:?}: {drawn:?} vs {want:?}"
+            );
             checked += 1;
         }
     }
@@ -176,16 +185,9 @@ fn a_point_light_lights_nothing_from_its_range_on() {
     let camera = Camera::perspective(60, 0.5, 100).looking_at([0.5, 6.0, 3.0], [0, 0, 0]);
     let colour = |range: f64| {
         let lamp = PointLight::new([0, 2, 0], 1).within(range);
-        let mut screen = Screen::new(64, 64, BLANK);
-        let mut storage = Storage::<3, 1>::new();
-        let (mut c, mut d) = ([Rgb888::BLACK; 64 * 64], [0u16; 64 * 64]);
-        let mut renderer = Renderer::new(&mut storage, &mut c, &mut d);
         let lights = [Light::ambient(0.1), lamp.into()];
-        let model = Model::new(&mesh, BASE);
-        renderer
-            .render(&[model], &lights, &camera, &mut screen)
-            .unwrap();
-        screen.pixels[32 * 64 + 32]
+        let pixels = frame(&[Model::new(&mesh, BASE)], &lights, &camera, (64, 64), 64);
+        pixels[32 * 64 + 32]
     };
     let ambient = Rgb888::new(25, 16, 6);
     assert_eq!(colour(1.99), ambient);
@@ -216,7 +218,7 @@ fn golden_point_light_torus() {
         let model = Model::new(&mesh, Rgb888::new(230, 230, 230))
             .rotated_x(60)
             .shaded(shade);
-        frame(&[model], &lights, &camera, 40)
+        frame(&[model], &lights, &camera, (320, 240), 40)
     };
     let flat = draw(Shade::Flat);
     let gouraud = draw(Shade::Gouraud);
@@ -266,13 +268,7 @@ fn highlights_follow_the_camera() {
         let model = Model::new(&mesh, BASE)
             .shaded(Shade::Gouraud)
             .glossy(&gloss);
-        let mut screen = Screen::new(64, 64, BLANK);
-        let mut storage = Storage::<3, 1>::new();
-        let (mut c, mut d) = ([Rgb888::BLACK; 64 * 64], [0u16; 64 * 64]);
-        let mut renderer = Renderer::new(&mut storage, &mut c, &mut d);
-        renderer
-            .render(&[model], &lights, &camera, &mut screen)
-            .unwrap();
+        let drawn = covered(model, &lights, &camera);
         let l = norm(towards);
         let v = norm(eye);
         let h = norm([l[0] + v[0], l[1] + v[1], l[2] + v[2]]);
@@ -282,17 +278,11 @@ fn highlights_follow_the_camera() {
             let d = (b as f64 * diffuse).floor() as i32;
             (d + (s as f64 * spec).floor() as i32).min(255)
         });
-        let drawn: Vec<_> = screen
-            .pixels
-            .iter()
-            .filter(|&&p| p != Rgb888::BLACK)
-            .collect();
         assert!(drawn.len() > 20, "{k}: {} pixels", drawn.len());
-        for p in drawn {
-            let got = [p.r(), p.g(), p.b()].map(i32::from);
-            let close = got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1);
-            assert!(close, "{k} eye {eye:?}: {got:?} vs {want:?}");
-        }
+        assert!(
+            all_within_one(&drawn, want),
+            "{k} eye {eye:?}: {drawn:?} vs {want:?}"
+        );
         bright += (want[2] > 100) as u32;
         checked += 1;
     }
@@ -320,7 +310,7 @@ fn golden_specular_torus() {
             .rotated_y(30)
             .shaded(shade)
             .glossy(&gloss);
-        frame(&[model], &lights, &camera, 240)
+        frame(&[model], &lights, &camera, (320, 240), 240)
     };
     let gouraud = draw(Shade::Gouraud);
     golden::check("specular_torus_gouraud", 320, 240, &gouraud);

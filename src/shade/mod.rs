@@ -20,7 +20,7 @@ pub(crate) use lambert::{flat_color, kept_face_color, lambert, vertex_normal};
 pub use paint::{
     Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
 };
-pub(crate) use specular::{add as add_highlight, Highlights, SPECULAR};
+pub(crate) use specular::{add_highlight, Highlights, SPECULAR};
 pub use texture::{TextureCursor, TexturePaint};
 
 use embedded_graphics::pixelcolor::Rgb888;

@@ -102,7 +102,7 @@ fn power(c: i32, k: u16) -> i32 {
 }
 
 /// The highlight added to a diffuse colour, each channel saturating.
-pub(crate) fn add(diffuse: Rgb888, highlight: [u8; 3]) -> Rgb888 {
+pub(crate) fn add_highlight(diffuse: Rgb888, highlight: [u8; 3]) -> Rgb888 {
     let [r, g, b] = highlight;
     Rgb888::new(
         diffuse.r().saturating_add(r),
