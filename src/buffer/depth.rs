@@ -1,12 +1,7 @@
 //! Depth buffers: per-pixel depth in a caller-supplied `&mut [u16]` or `&mut [u32]`.
 
-use core::num::NonZeroU64;
-
 use super::grid::{BufferError, Grid};
-use crate::math::{
-    mul_short, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE,
-};
-use crate::raster::{first_centre_from32, Plane, RowStarts, ScreenPoint};
+use crate::raster::{AreaWalks, RowStarts, ScreenPoint};
 
 /// The interpolator's fraction bits below one u16 step (its Q1.44 value has 2¹⁶ steps).
 const U16_STEP_BITS: u32 = 28;
@@ -221,23 +216,10 @@ fn loop_step(step: i64) -> i64 {
 }
 
 /// The u16 depth loop's values in 32-bit words, in its unit (2⁻³¹ of the depth range, 2⁻¹⁵ of
-/// a u16 step, half a step added so that truncation rounds): the plane through the snapped
-/// vertices with its gradients rounded once to that unit per pixel, `sx` along a row and
-/// `sy` down a column (one division of each gradient's numerator by the doubled area, a
-/// 32-bit quotient), and its value at a reference pixel beside the first vertex (the pixel
-/// whose column holds the vertex, on the first row at or below it) from the vertex's own
-/// depth and those steps. The value at pixel `(x, y)` is `s₀ + sx·x + sy·(y − y_r)` modulo
-/// 2³² (the reference column folded into `s₀`): the span loop starts from it with one
-/// multiply and one addition a span, and one addition a row, and steps by `sx`.
-///
-/// Each rounded step errs by at most half a unit, so a value errs from the exact plane by at
-/// most `(|x − x_r| + |y − y_r|) / 2 + 5/4` units: below 2¹² + 2 for the pipeline's triangles,
-/// and the walk depends on nothing but the triangle, so a band draws what the whole frame
-/// draws. The exact start it replaces took the plane in Q1.44 (two divisions with 64-bit
-/// quotients: on Cortex-M0 four two-by-one steps of the reciprocal division, where these two
-/// 32-bit quotients take two), its value at each span's first pixel (a 64-bit product and shift
-/// on the M4 and x86-64, two 32-bit products and six words of quotients and remainders on the
-/// M0) and a second rounding of its step.
+/// a u16 step, half a step added so that truncation rounds), row by row: the triangle's
+/// [`WordPlane`](crate::raster::WordPlane) of its vertex depths (whose error bound, below
+/// 2¹² + 2 units, is a fraction of a step), started on a row and moved down one row at a time.
+/// The span loop starts from it with one multiply and one addition a span, and steps by `sx`.
 ///
 /// 64-bit hosts hold the same values shifted up by 13 bits in 64-bit words, so that their loop
 /// takes the form of a 64-bit product and shift. The sums stay far below 2⁶³, so shifting back
@@ -315,83 +297,14 @@ impl<W: LoopWord> RoundedRows<W> {
     /// nearly edge-on, which the general loop takes).
     #[inline]
     pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
-        let (nx, ny) = Plane::numerators_given(p, z);
-        let (sx, sy) = if cfg!(target_pointer_width = "64") {
-            // With 64-bit words each step by one division of its numerator's magnitude by the
-            // area's, its sign both signs'.
-            steps_over_area(nx, ny, area)?
-        } else {
-            let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
-            // Per pixel (16 sub-pixels) in the loop's unit (twice Q1.30): 2⁵ · n / area.
-            // Without a divide instruction (Cortex-M0), for the usual triangle (a doubled
-            // area below 2²⁹, steps below 2³⁰), by two 15-bit digits each (fewer instructions
-            // than through a reciprocal to 32 bits, which the others take).
-            let short = if NARROW_CORE {
-                ShortQuotients::new(den).and_then(|by| {
-                    Some((by.round_below_2_30(nx << 5)?, by.round_below_2_30(ny << 5)?))
-                })
-            } else {
-                None
-            };
-            if let Some(steps) = short {
-                steps
-            } else {
-                let by_area = DivideBy::new(den);
-                (
-                    by_area.round_shifted_i32(nx, 5)?,
-                    by_area.round_shifted_i32(ny, 5)?,
-                )
-            }
-        };
-        // The reference pixel: the first vertex's column, the first row at or below it; its
-        // centre lies dx in (−8, 8] and dy in [0, 16) sub-pixels from the vertex.
-        let a = p[0];
-        let (x_r, y_r) = (a.x >> SUBPIXEL_BITS, first_centre_from32(a.y));
-        let dx = x_r.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.x;
-        let dy = y_r.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.y;
-        // Within ±2³⁶: the offset in sixteenths of the unit, rounded to the unit.
-        let offset = rounded_offset(sx, dx, sy, dy);
-        let at_ref = z[0]
-            .wrapping_mul(2)
-            .wrapping_add(LOOP_HALF_STEP)
-            .wrapping_add(offset);
-        // `s₀ + sx·(x − x_r) = (s₀ − sx·x_r) + sx·x` modulo 2³²: no column for the row loop to
-        // hold.
-        let row = at_ref
-            .wrapping_add(sy.wrapping_mul(y.wrapping_sub(y_r)))
-            .wrapping_sub(sx.wrapping_mul(x_r));
+        let walk = AreaWalks::new(area).walk(p, z, LOOP_HALF_STEP)?;
         let rows = RoundedRows {
-            row: W::from_i32(row),
-            step_x: W::from_i32(sx),
-            step_y: W::from_i32(sy),
+            row: W::from_i32(walk.at(0, y)),
+            step_x: W::from_i32(walk.sx),
+            step_y: W::from_i32(walk.sy),
         };
-        Some((rows, sx))
+        Some((rows, walk.sx))
     }
-}
-
-/// The steps `round(32·n / area)` of the gradient numerators `nx` and `ny` over the doubled
-/// signed area (not 0; `None` for 0), ties away from zero, where both fit an i32, else
-/// `None`: what [`DivideBy::round_shifted_i32`]`(n, 5)` gives of the numerators and the area
-/// made positive (a numerator's magnitude is unchanged, its sign turned where the area's is
-/// negative; a zero numerator's quotient is zero either way).
-#[inline(always)]
-fn steps_over_area(nx: i64, ny: i64, area: i64) -> Option<(i32, i32)> {
-    let d = NonZeroU64::new(area.unsigned_abs())?;
-    let half = d.get() / 2;
-    let step = |n: i64| {
-        // |n| · 2⁵ lies below 2⁶³ for the pipeline's triangles (see `round_shifted`).
-        let q = ((n.unsigned_abs() << 5).wrapping_add(half) / d) as i64;
-        i32::try_from(if (n ^ area) < 0 { q.wrapping_neg() } else { q }).ok()
-    };
-    Some((step(nx)?, step(ny)?))
-}
-
-/// `⌊(sx·dx + sy·dy + 8) / 16⌋` modulo 2³² for steps `sx`, `sy` and offsets `dx`, `dy` within
-/// ±2⁴ (sub-pixels within a pixel), whose sum lies within ±2³⁶.
-#[inline(always)]
-fn rounded_offset(sx: i32, dx: i32, sy: i32, dy: i32) -> i32 {
-    let offset = mul_short(sx, dx).wrapping_add(mul_short(sy, dy));
-    (offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32
 }
 
 impl<W: LoopWord> RowStarts for RoundedRows<W> {
@@ -541,61 +454,10 @@ impl<'a, D: DepthFormat> DepthBuffer<'a, D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{doubled_area, spans_in_range, PipelineEdge, PixelRect, PIPELINE_LIMIT};
-
-    /// The steps by the numerators' magnitudes over the area's are `DivideBy`'s of the
-    /// numerators and the area made positive, for both signs of each, zero numerators, ties,
-    /// and steps at and beyond i32's ends (`None` where either does not fit).
-    #[test]
-    fn r7_steps_over_area_are_those_over_the_positive_area() {
-        let reference = |nx: i64, ny: i64, area: i64| {
-            let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
-            let by = DivideBy::new(den);
-            Some((by.round_shifted_i32(nx, 5)?, by.round_shifted_i32(ny, 5)?))
-        };
-        let mut seed = 0x2545_F491_4F6C_DD1D_u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
-        let mut cases = std::vec![
-            (0, 0, 1),
-            (0, 0, -1),
-            (1, -1, 64),
-            (-1, 1, -64),
-            (3, -3, 192),
-        ];
-        // Quotients at i32's ends: 32·n / d just inside and outside [−2³¹, 2³¹).
-        for d in [1_i64, 3, 1 << 20] {
-            for n in [
-                (1_i64 << 26) * d - 1,
-                (1 << 26) * d,
-                -(1 << 26) * d,
-                -(1 << 26) * d - d,
-            ] {
-                cases.push((n, 1, d));
-                cases.push((n, -1, -d));
-            }
-        }
-        for _ in 0..20_000 {
-            let bits = next();
-            let area = (next() >> (34 + bits % 28)) as i64 + 1;
-            let area = if bits & 1 == 0 { area } else { -area };
-            let n =
-                |v: u64| (v >> (18 + (v >> 58) % 24)) as i64 - (v >> (19 + (v >> 58) % 24)) as i64;
-            cases.push((n(next()), n(next()), area));
-        }
-        for (nx, ny, area) in cases {
-            assert_eq!(
-                steps_over_area(nx, ny, area),
-                reference(nx, ny, area),
-                "{nx} {ny} {area}"
-            );
-        }
-        assert_eq!(steps_over_area(5, 5, 0), None);
-    }
+    use crate::raster::{
+        doubled_area, first_centre_from32, spans_in_range, PipelineEdge, PixelRect, Plane,
+        PIPELINE_LIMIT,
+    };
 
     /// `RoundedRows` in 32-bit words (Cortex-M's) and in 64-bit ones (the host's) give the
     /// same value at every pixel of every span; each lies within its bound,

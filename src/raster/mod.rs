@@ -14,8 +14,12 @@
 //!   pixel of the row `floor(y)` at that centre (y-major lines swap the axes). The start is
 //!   included and the end excluded, so a closed polygon draws each vertex pixel once. Clipping
 //!   to the target never changes which pixels are drawn.
-//! - **Attributes**: depth and colour are planes through the three snapped vertices,
-//!   evaluated at pixel centres in 64-bit arithmetic and stepped along spans.
+//! - **Attributes**: depth and colour are planes through the three snapped vertices, sampled at
+//!   pixel centres. The span loops walk them in 32-bit words, with steps rounded once per
+//!   triangle and a start found from the triangle's own first vertex: each value lies within a
+//!   small stated bound of the exact plane, and depends on nothing but the triangle, so bands
+//!   draw what a whole frame draws. The general forms (clamped depth, perspective) take the
+//!   exact plane in 64-bit arithmetic.
 //!
 //! Coordinates must lie within ±[`COORD_LIMIT`] sub-pixels; the pipeline's guard band keeps them
 //! far inside it. Work is proportional to the visible rows and pixels, never to the size of the
@@ -28,7 +32,7 @@ mod triangle;
 
 pub(crate) use edge::PipelineEdge;
 pub use line::{line_pixels, LinePixels};
-pub(crate) use plane::{Plane, RowStarts};
+pub(crate) use plane::{AreaWalks, Plane, RowStarts, WordPlane};
 pub(crate) use triangle::{rows_in_range, spans_in_range, TriangleWalk};
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 

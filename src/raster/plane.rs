@@ -1,8 +1,12 @@
 //! Attribute planes: depth and colour as linear functions of screen position through the three
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
-use super::ScreenPoint;
-use crate::math::{mul_wide, DivideBy, SUBPIXEL_SCALE};
+use core::num::NonZeroU64;
+
+use super::{first_centre_from32, ScreenPoint};
+use crate::math::{
+    mul_short, mul_wide, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE,
+};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels, through the first
 /// vertex `(x0, y0, v0)`, kept as its value at the centre of pixel (0, 0): the value at pixel
@@ -206,6 +210,173 @@ impl AreaDivisor {
     }
 }
 
+/// A plane walked in 32-bit words, the form the span loops take: its steps from one pixel to
+/// the next along a row (`sx`) and down a column (`sy`), each rounded once to the walk's unit,
+/// and its value at a reference pixel beside the first vertex (the pixel whose column holds
+/// the vertex, on the first row at or below it) from the vertex's own value and those steps,
+/// kept as its value at pixel (0, 0) modulo 2³². The values walked are twice the plane's (for
+/// vertex values `v` in [0, 2³⁰]) plus a `bias`.
+///
+/// Each rounded step errs by at most half a unit, so the value at pixel `(x, y)` errs from the
+/// exact one by at most `(|x − x_r| + |y − y_r|) / 2 + 5/4` units: below 2¹² + 2 for the
+/// pipeline's triangles (its pixels lie within 2¹² of a triangle's vertices). The walk depends
+/// on nothing but the triangle, so a band draws what the whole frame draws.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct WordPlane {
+    /// The walk's value at pixel (0, 0), modulo 2³².
+    origin: i32,
+    /// The step along a row.
+    pub(crate) sx: i32,
+    /// The step down a column.
+    pub(crate) sy: i32,
+}
+
+/// The division by a triangle's doubled signed area (non-zero) that its [`WordPlane`]s share:
+/// prepared once on cores without a divide instruction.
+pub(crate) struct AreaWalks {
+    area: i64,
+    short: Option<ShortQuotients>,
+}
+
+impl AreaWalks {
+    #[inline(always)]
+    pub(crate) fn new(area: i64) -> AreaWalks {
+        let short = if NARROW_CORE && cfg!(target_pointer_width = "32") {
+            ShortQuotients::new(area.wrapping_abs())
+        } else {
+            None
+        };
+        AreaWalks { area, short }
+    }
+
+    /// The walk of the plane through `(p[i], v[i])` (each value in [0, 2³⁰]) with `bias` added;
+    /// `None` where its steps do not fit 32 bits (a triangle nearly edge-on).
+    #[inline(always)]
+    pub(crate) fn walk(&self, p: &[ScreenPoint; 3], v: [i32; 3], bias: i32) -> Option<WordPlane> {
+        let (nx, ny) = Plane::numerators_given(p, v);
+        let (sx, sy) = word_steps(nx, ny, self.area, self.short.as_ref())?;
+        let reference = Reference::of(p[0]);
+        // Within ±2³⁶: the offset in sixteenths of the unit, rounded to the unit.
+        let offset = mul_short(sx, reference.dx).wrapping_add(mul_short(sy, reference.dy));
+        let offset = (offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32;
+        let at_ref = v[0].wrapping_mul(2).wrapping_add(bias).wrapping_add(offset);
+        Some(reference.plane(at_ref, sx, sy))
+    }
+
+    /// [`walk`](Self::walk) whatever its steps: see [`WordPlane::wrapping`].
+    #[inline(always)]
+    pub(crate) fn walk_any(&self, p: &[ScreenPoint; 3], v: [i32; 3], bias: i32) -> WordPlane {
+        match self.walk(p, v, bias) {
+            Some(walk) => walk,
+            None => WordPlane::wrapping(p, v, bias, self.area),
+        }
+    }
+}
+
+impl WordPlane {
+    /// The walk of one value set whatever its steps: those that do not fit 32 bits are kept
+    /// modulo 2³², which the walk's sums are taken in (a value inside the triangle, within its
+    /// bound of the exact one, still comes out exact). Through 64-bit divisions: for the few
+    /// triangles [`AreaWalks::walk`] declines.
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn wrapping(p: &[ScreenPoint; 3], v: [i32; 3], bias: i32, area: i64) -> WordPlane {
+        let (nx, ny) = Plane::numerators(p, v);
+        let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+        // |n| < 2⁴⁸: the shifted numerators, the quotients and their products with the
+        // offsets (within ±2⁴) stay far inside i64.
+        let by = DivideBy::new(den);
+        let (sx, sy) = (by.round_shifted(nx, 5), by.round_shifted(ny, 5));
+        let reference = Reference::of(p[0]);
+        let offset = sx
+            .wrapping_mul(reference.dx as i64)
+            .wrapping_add(sy.wrapping_mul(reference.dy as i64));
+        let offset = offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS;
+        let at_ref = (v[0] as i64 * 2 + bias as i64).wrapping_add(offset);
+        reference.plane(at_ref as i32, sx as i32, sy as i32)
+    }
+
+    /// The walk's value at pixel `(x, y)`, modulo 2³².
+    #[inline(always)]
+    pub(crate) fn at(&self, x: i32, y: i32) -> i32 {
+        self.origin
+            .wrapping_add(self.sx.wrapping_mul(x))
+            .wrapping_add(self.sy.wrapping_mul(y))
+    }
+}
+
+/// A [`WordPlane`]'s reference pixel `(x, y)` for a first vertex, and its centre's offset
+/// from the vertex in sub-pixels: `dx` in (−8, 8], `dy` in [0, 16).
+struct Reference {
+    x: i32,
+    y: i32,
+    dx: i32,
+    dy: i32,
+}
+
+impl Reference {
+    #[inline(always)]
+    fn of(a: ScreenPoint) -> Reference {
+        let (x, y) = (a.x >> SUBPIXEL_BITS, first_centre_from32(a.y));
+        Reference {
+            x,
+            y,
+            dx: x.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.x,
+            dy: y.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.y,
+        }
+    }
+
+    /// The walk with value `at_ref` here and steps `sx`, `sy`, as its value at pixel (0, 0).
+    #[inline(always)]
+    fn plane(&self, at_ref: i32, sx: i32, sy: i32) -> WordPlane {
+        WordPlane {
+            origin: at_ref
+                .wrapping_sub(sx.wrapping_mul(self.x))
+                .wrapping_sub(sy.wrapping_mul(self.y)),
+            sx,
+            sy,
+        }
+    }
+}
+
+/// The steps `round(32·n / area)` of gradient numerators over the doubled signed area (per
+/// pixel, 16 sub-pixels, in units of half the values'), where both fit an i32. On 64-bit hosts
+/// by [`steps_over_area`]; on cores without a divide instruction, for the usual triangle (a
+/// doubled area below 2²⁹, steps below 2³⁰), by two 15-bit digits each through `short`, the
+/// area's magnitude prepared (fewer instructions than through a reciprocal to 32 bits, which
+/// the others take).
+#[inline(always)]
+fn word_steps(nx: i64, ny: i64, area: i64, short: Option<&ShortQuotients>) -> Option<(i32, i32)> {
+    if cfg!(target_pointer_width = "64") {
+        return steps_over_area(nx, ny, area);
+    }
+    let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+    if let Some(by) = short {
+        if let (Some(sx), Some(sy)) = (by.round_below_2_30(nx << 5), by.round_below_2_30(ny << 5)) {
+            return Some((sx, sy));
+        }
+    }
+    let by = DivideBy::new(den);
+    Some((by.round_shifted_i32(nx, 5)?, by.round_shifted_i32(ny, 5)?))
+}
+
+/// The steps `round(32·n / area)` of the gradient numerators `nx` and `ny` over the doubled
+/// signed area (not 0; `None` for 0), ties away from zero, where both fit an i32, else
+/// `None`: what [`DivideBy::round_shifted_i32`]`(n, 5)` gives of the numerators and the area
+/// made positive (a numerator's magnitude is unchanged, its sign turned where the area's is
+/// negative; a zero numerator's quotient is zero either way).
+#[inline(always)]
+fn steps_over_area(nx: i64, ny: i64, area: i64) -> Option<(i32, i32)> {
+    let d = NonZeroU64::new(area.unsigned_abs())?;
+    let half = d.get() / 2;
+    let step = |n: i64| {
+        // |n| · 2⁵ lies below 2⁶³ for the pipeline's triangles (see `round_shifted`).
+        let q = ((n.unsigned_abs() << 5).wrapping_add(half) / d) as i64;
+        i32::try_from(if (n ^ area) < 0 { q.wrapping_neg() } else { q }).ok()
+    };
+    Some((step(nx)?, step(ny)?))
+}
+
 /// Walks a [`Plane`] down the rows, for a span loop that starts each row's span from the
 /// plane's value at its first pixel: [`at`](RowStarts::at) is that value on the current row
 /// (in the form the loop takes: [`PlaneRows`] gives [`Plane::at`] itself, bit for bit modulo
@@ -247,6 +418,60 @@ impl RowStarts for PlaneRows {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The steps by the numerators' magnitudes over the area's are `DivideBy`'s of the
+    /// numerators and the area made positive, for both signs of each, zero numerators, ties,
+    /// and steps at and beyond i32's ends (`None` where either does not fit).
+    #[test]
+    fn r7_steps_over_area_are_those_over_the_positive_area() {
+        let reference = |nx: i64, ny: i64, area: i64| {
+            let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+            let by = DivideBy::new(den);
+            Some((by.round_shifted_i32(nx, 5)?, by.round_shifted_i32(ny, 5)?))
+        };
+        let mut seed = 0x2545_F491_4F6C_DD1D_u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut cases = std::vec![
+            (0, 0, 1),
+            (0, 0, -1),
+            (1, -1, 64),
+            (-1, 1, -64),
+            (3, -3, 192),
+        ];
+        // Quotients at i32's ends: 32·n / d just inside and outside [−2³¹, 2³¹).
+        for d in [1_i64, 3, 1 << 20] {
+            for n in [
+                (1_i64 << 26) * d - 1,
+                (1 << 26) * d,
+                -(1 << 26) * d,
+                -(1 << 26) * d - d,
+            ] {
+                cases.push((n, 1, d));
+                cases.push((n, -1, -d));
+            }
+        }
+        for _ in 0..20_000 {
+            let bits = next();
+            let area = (next() >> (34 + bits % 28)) as i64 + 1;
+            let area = if bits & 1 == 0 { area } else { -area };
+            let n =
+                |v: u64| (v >> (18 + (v >> 58) % 24)) as i64 - (v >> (19 + (v >> 58) % 24)) as i64;
+            cases.push((n(next()), n(next()), area));
+        }
+        for (nx, ny, area) in cases {
+            assert_eq!(
+                steps_over_area(nx, ny, area),
+                reference(nx, ny, area),
+                "{nx} {ny} {area}"
+            );
+        }
+        assert_eq!(steps_over_area(5, 5, 0), None);
+    }
 
     /// The sums of products (Cortex-M3/M4) and the differences equal the exact numerators: at
     /// the corners of the range (coordinates ±2¹⁵, values 0 and 2³⁰) and at random.

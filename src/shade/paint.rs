@@ -5,7 +5,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::pixelcolor::RgbColor;
 
 use crate::math::{magnitude_bits, DivideBy};
-use crate::raster::{Plane, ScreenPoint, Span};
+use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 
 /// A source of colours along a span, started at its first pixel.
 pub trait Paint: core::fmt::Debug {
@@ -33,8 +33,6 @@ impl Paint for SolidPaint {
     }
 }
 
-/// Channel values carry this many fraction bits in the planes (values below 2⁴⁴).
-const FRAC: u32 = 36;
 /// Vertex colours arrive with this many fraction bits (0..=255 << 8).
 pub(crate) const RGB_FRAC: u32 = 8;
 
@@ -45,85 +43,59 @@ fn channel_ranges(channel: impl Fn(usize) -> [i64; 3]) -> ([i64; 3], [i64; 3]) {
     (lo, hi)
 }
 
-/// Vertex colours interpolated across the triangle, each channel clamped to the range of its
-/// vertex values (so every pixel is a convex combination, rule R8).
+/// A whole channel value `c` (0..=255) as a [`WordPlane`] takes it: `c · 2²²`, which the walk
+/// doubles, so that a channel is its bits 23 to 30.
+const CHANNEL_SHIFT: u32 = 22;
+/// Half a channel step in the walk's unit: added once, truncation then rounds to nearest.
+const HALF_CHANNEL: i32 = 1 << CHANNEL_SHIFT;
+
+/// Vertex colours interpolated across the triangle in 32-bit words (each channel a plane walked
+/// by steps rounded once, as depth is), each channel rounded to nearest.
+///
+/// The vertex channels are whole numbers (those of clipped vertices rounded so), and a walk
+/// errs from the exact plane by less than 2⁻¹⁰ of a channel step, so a pixel's rounded
+/// channel lies between the smallest and the largest vertex value: every pixel is a convex
+/// combination of the vertex colours (rule R8) with no clamp in the pixel loop.
 #[derive(Clone, Copy, Debug)]
 pub struct SmoothPaint {
-    /// Per channel, the plane at pixel (0, 0) and its changes from one pixel to the next
-    /// along a row and down a column, modulo 2⁶⁴ as [`Plane::at`] is: a span's start is
-    /// [`Plane::at`] itself, bit for bit.
-    origin: [i64; 3],
-    along: [i64; 3],
-    down: [i64; 3],
-    /// Per channel, the step a span takes ([`Plane::step_x`]).
-    step: [i64; 3],
-    range: ChannelRange,
+    channels: [WordPlane; 3],
 }
 
 impl SmoothPaint {
     /// From vertex colours (channels `0..=255 << RGB_FRAC`) at snapped screen positions.
     pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64) -> Self {
-        let [a, b, c] = rgb;
-        let channels = [[a[0], b[0], c[0]], [a[1], b[1], c[1]], [a[2], b[2], c[2]]];
-        let planes = Plane::scaled_each(p, channels, FRAC - RGB_FRAC, area2);
-        // The range of each channel's vertex values, rounded as the pixels are.
-        let round = |v: i32| round_channel((v as i64) << (FRAC - RGB_FRAC));
-        let range = |k: usize| {
-            let [a, b, c] = channels[k];
-            (round(a.min(b).min(c)), round(a.max(b).max(c)))
+        let whole = |c: i32| {
+            let c = c.saturating_add(1 << (RGB_FRAC - 1)) >> RGB_FRAC;
+            c.clamp(0, 255) << CHANNEL_SHIFT
         };
-        let (r, g, b) = (range(0), range(1), range(2));
+        let [a, b, c] = rgb.map(|v| v.map(whole));
+        let values = [[a[0], b[0], c[0]], [a[1], b[1], c[1]], [a[2], b[2], c[2]]];
+        let by_area = AreaWalks::new(area2);
+        let [r, g, b] = values;
         SmoothPaint {
-            origin: planes.map(|p| p.at(0, 0)),
-            along: planes.map(|p| p.pixel_steps().0),
-            down: planes.map(|p| p.pixel_steps().1),
-            step: planes.map(|p| p.step_x()),
-            range: ChannelRange {
-                lo: [r.0, g.0, b.0],
-                hi: [r.1, g.1, b.1],
-            },
+            channels: [
+                by_area.walk_any(p, r, HALF_CHANNEL),
+                by_area.walk_any(p, g, HALF_CHANNEL),
+                by_area.walk_any(p, b, HALF_CHANNEL),
+            ],
         }
     }
-}
-
-/// A value with [`FRAC`] fraction bits rounded to an 8-bit channel (ties up), clamped to
-/// [0, 255], as each pixel's channel is (see [`SmoothCursor::next`]).
-fn round_channel(v: i64) -> u8 {
-    (v.saturating_add(1 << (FRAC - 1)) >> FRAC).clamp(0, 255) as u8
-}
-
-/// Per channel, the rounded smallest and largest vertex values: rounding is monotone, so
-/// rounding a value clamped to the vertex range equals clamping the rounded value to the
-/// rounded range.
-#[derive(Clone, Copy, Debug)]
-struct ChannelRange {
-    lo: [u8; 3],
-    hi: [u8; 3],
 }
 
 /// The running colour of a [`SmoothPaint`] along a span.
 #[derive(Clone, Copy, Debug)]
 pub struct SmoothCursor {
-    acc: [i64; 3],
-    step: [i64; 3],
-    range: ChannelRange,
+    acc: [u32; 3],
+    step: [u32; 3],
 }
 
 impl Iterator for SmoothCursor {
     type Item = Rgb888;
-    /// Each channel is `(v + 2³⁵) >> 36` of its running value `v = H·2³² + L` (`0 ≤ L < 2³²`),
-    /// which is `(H + 8) >> 4`: with `H + 8 = 16q + r`, `0 ≤ r < 16`, it is
-    /// `q + ⌊(r·2³² + L) / 2³⁶⌋` and the second term is 0. The pipeline's values lie below 2⁴⁴
-    /// (a pixel inside the triangle, its rounding drift far below one unit): `H + 8` cannot
-    /// wrap.
+    /// Each channel is bits 23 to 30 of its walk's value, which lies in [0, 2³¹) (see
+    /// [`SmoothPaint`]).
     #[inline(always)]
     fn next(&mut self) -> Option<Rgb888> {
-        let ChannelRange { lo, hi } = self.range;
-        let ch = |k: usize| {
-            let rounded = ((self.acc[k] >> 32) as i32).wrapping_add(8) >> 4;
-            // max then min: the range is never empty, and no test of it is made per pixel.
-            rounded.max(lo[k] as i32).min(hi[k] as i32) as u8
-        };
+        let ch = |k: usize| (self.acc[k] >> (CHANNEL_SHIFT + 1)) as u8;
         let c = Rgb888::new(ch(0), ch(1), ch(2));
         let [a0, a1, a2] = self.acc;
         let [s0, s1, s2] = self.step;
@@ -144,15 +116,10 @@ impl Paint for SmoothPaint {
     #[inline(always)]
     fn cursor(&self, span: Span) -> SmoothCursor {
         let (x, y) = (span.x0, span.y);
-        let at = |k: usize| {
-            self.origin[k]
-                .wrapping_add(self.along[k].wrapping_mul(x as i64))
-                .wrapping_add(self.down[k].wrapping_mul(y as i64))
-        };
+        let [r, g, b] = self.channels;
         SmoothCursor {
-            acc: [at(0), at(1), at(2)],
-            step: self.step,
-            range: self.range,
+            acc: [r.at(x, y) as u32, g.at(x, y) as u32, b.at(x, y) as u32],
+            step: [r.sx as u32, g.sx as u32, b.sx as u32],
         }
     }
 }
@@ -254,54 +221,124 @@ impl Paint for PerspectivePaint {
 mod tests {
     use super::*;
 
-    /// T36 and R8: a colour ramp along a 2048-pixel span stays within 1 LSB of the exact plane
-    /// at every pixel and never leaves the range of the vertex colours.
+    /// The exact channel at pixel `(x, y)` of the plane through `(p[i], c[i])` (whole
+    /// channels), as `num / den` with `den > 0`.
+    fn exact(p: &[ScreenPoint; 3], c: [i32; 3], area: i64, (x, y): (i32, i32)) -> (i128, i128) {
+        let (nx, ny) = Plane::numerators(p, c);
+        let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+        let (dx, dy) = (16 * x + 8 - p[0].x, 16 * y + 8 - p[0].y);
+        let den = den as i128;
+        let num = c[0] as i128 * den + nx as i128 * dx as i128 + ny as i128 * dy as i128;
+        (num, den)
+    }
+
+    /// Checks every pixel of `p`'s spans (at most `per_span` of each) against the exact planes
+    /// of the whole vertex channels `rgb`: each channel is the exact value rounded to nearest
+    /// (unless that lies within 2⁻¹⁰ of a rounding boundary) and always between the smallest
+    /// and the largest vertex value (R8). Returns the pixels checked.
+    fn check_spans(p: [ScreenPoint; 3], rgb: [[i32; 3]; 3], per_span: i32) -> u64 {
+        let area = crate::raster::doubled_area(p[0], p[1], p[2]);
+        if area == 0 {
+            return 0;
+        }
+        let paint = SmoothPaint::new(&p, rgb.map(|c| c.map(|c| c << RGB_FRAC)), area);
+        let clip = crate::raster::PixelRect::new(0, 0, 4096, 4096);
+        let mut pixels = 0;
+        for span in crate::raster::triangle_spans(p, clip) {
+            let mut cursor = paint.cursor(span);
+            for x in span.x0..span.x1.min(span.x0 + per_span) {
+                let c = cursor.next().unwrap_or_default();
+                for (k, got) in [c.r(), c.g(), c.b()].into_iter().enumerate() {
+                    let v = rgb.map(|v| v[k]);
+                    let (num, den) = exact(&p, v, area, (x, span.y));
+                    let lo = *v.iter().min().unwrap_or(&0);
+                    let hi = *v.iter().max().unwrap_or(&0);
+                    let at = (x, span.y);
+                    assert!((lo..=hi).contains(&(got as i32)), "{p:?} {rgb:?} {at:?}");
+                    // Twice the value plus one, over twice den: its floor is the rounding.
+                    let twice = 2 * num + den;
+                    let near_boundary = (twice.rem_euclid(2 * den) * 1024) < 2 * den
+                        || ((2 * den - twice.rem_euclid(2 * den)) * 1024) < 2 * den;
+                    if !near_boundary {
+                        let rounded = twice.div_euclid(2 * den);
+                        assert_eq!(got as i128, rounded, "{p:?} {rgb:?} {at:?}");
+                    }
+                }
+                pixels += 1;
+            }
+        }
+        pixels
+    }
+
+    /// T36 and R8: colour ramps along spans up to 2048 pixels long are the exact planes
+    /// rounded, with no drift, and never leave the range of the vertex colours.
     #[test]
     fn t36_long_span_ramp_has_no_drift() {
+        let rgb = [[0, 128, 255], [255, 7, 0], [31, 255, 99]];
         for width in [64i32, 320, 1024, 2048] {
             let p = [
                 ScreenPoint::new(0, 0),
                 ScreenPoint::new(width * 16, 3),
                 ScreenPoint::new(5, 40 * 16),
             ];
-            let rgb = [
-                [0, 128 << 8, 255 << 8],
-                [255 << 8, 7 << 8, 0],
-                [31 << 8, 255 << 8, 99 << 8],
-            ];
-            let area = {
-                let [a, b, c] = p.map(|q| (q.x as i64, q.y as i64));
-                (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
-            };
-            let paint = SmoothPaint::new(&p, rgb, area);
-            let y = 1;
-            let mut cursor = paint.cursor(Span {
-                y,
-                x0: 0,
-                x1: width,
+            assert!(check_spans(p, rgb, width) > width as u64);
+        }
+    }
+
+    /// R8: random triangles of every size within the pipeline's range (slivers included,
+    /// whose steps do not fit 32 bits), random whole vertex colours: every pixel is the exact
+    /// colour rounded, within the vertex colours' range.
+    #[test]
+    fn r8_smooth_paint_is_the_exact_plane_rounded() {
+        let mut rng = crate::testing::XorShift(0x5851_F42D_4C95_7F2Du64);
+        let (mut pixels, mut steep_drawn) = (0, 0);
+        for k in 0..4_000 {
+            let scale = rng.pick(&[8, 40, 400, 4000, crate::raster::PIPELINE_LIMIT / 2]);
+            let centre = ScreenPoint::new(16 * 1000, 16 * 1000);
+            let mut p = rng.triangle(centre, scale);
+            if k % 4 == 0 {
+                // A sliver: the third vertex a sub-pixel off the first two's line.
+                let [a, b, _] = p;
+                p[2] = ScreenPoint::new((a.x + b.x) / 2 + rng.within(2), (a.y + b.y) / 2);
+            }
+            let rgb = [(); 3].map(|_| [(); 3].map(|_| (rng.next_u64() % 256) as i32));
+            let area = crate::raster::doubled_area(p[0], p[1], p[2]) as i128;
+            let covered = check_spans(p, rgb, 48);
+            // Steps of 2⁵·n / area in the walk's unit (2²² per channel step).
+            let steep = (0..3).any(|k| {
+                let (nx, ny) = Plane::numerators(&p, rgb.map(|c| c[k] << CHANNEL_SHIFT));
+                let big = |n: i64| area != 0 && (32 * n as i128 / area).abs() > i32::MAX as i128;
+                big(nx) || big(ny)
             });
-            for x in 0..width - 2 {
-                let c = cursor.next().unwrap_or_default();
-                // Exact barycentric plane at the pixel centre.
-                let (px, py) = (x as f64 * 16.0 + 8.0, y as f64 * 16.0 + 8.0);
-                let f = p.map(|q| (q.x as f64, q.y as f64));
-                let det =
-                    (f[1].0 - f[0].0) * (f[2].1 - f[0].1) - (f[2].0 - f[0].0) * (f[1].1 - f[0].1);
-                let l1 =
-                    ((px - f[0].0) * (f[2].1 - f[0].1) - (f[2].0 - f[0].0) * (py - f[0].1)) / det;
-                let l2 =
-                    ((f[1].0 - f[0].0) * (py - f[0].1) - (px - f[0].0) * (f[1].1 - f[0].1)) / det;
-                for (k, got) in [c.r(), c.g(), c.b()].into_iter().enumerate() {
-                    let v = rgb.map(|v| v[k] as f64 / 256.0);
-                    let exact = v[0] + l1 * (v[1] - v[0]) + l2 * (v[2] - v[0]);
-                    let lo = v.iter().cloned().fold(f64::INFINITY, f64::min);
-                    let hi = v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
-                    assert!(
-                        (got as f64 - exact.clamp(lo, hi)).abs() <= 1.0,
-                        "width {width} x {x}: {got} vs {exact}"
-                    );
-                    assert!(got as f64 >= lo.floor() && got as f64 <= hi.ceil());
-                }
+            steep_drawn += u32::from(steep && covered > 0);
+            pixels += covered;
+        }
+        assert!(
+            pixels > 200_000 && steep_drawn > 20,
+            "{pixels} {steep_drawn}"
+        );
+    }
+
+    /// Vertex channels with fraction bits (clipped vertices) are rounded to whole ones first:
+    /// every pixel stays within the rounded vertex range.
+    #[test]
+    fn fractional_vertex_channels_are_rounded() {
+        let p = [
+            ScreenPoint::new(0, 0),
+            ScreenPoint::new(16 * 40, 8),
+            ScreenPoint::new(16 * 3, 16 * 30),
+        ];
+        let area = crate::raster::doubled_area(p[0], p[1], p[2]);
+        let rgb = [
+            [200 << 8 | 128, 0, 0],
+            [100 << 8 | 127, 0, 0],
+            [150 << 8, 0, 0],
+        ];
+        let paint = SmoothPaint::new(&p, rgb, area);
+        let clip = crate::raster::PixelRect::new(0, 0, 64, 64);
+        for span in crate::raster::triangle_spans(p, clip) {
+            for c in paint.cursor(span).take((span.x1 - span.x0) as usize) {
+                assert!((100..=201).contains(&c.r()), "{span:?} {c:?}");
             }
         }
     }
