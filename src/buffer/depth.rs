@@ -297,7 +297,7 @@ impl<W: LoopWord> RoundedRows<W> {
     /// nearly edge-on, which the general loop takes).
     #[inline]
     pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
-        let walk = AreaWalks::new(area).walk(p, z, LOOP_HALF_STEP)?;
+        let walk = AreaWalks::new(area).walk(p, z, 0, LOOP_HALF_STEP)?;
         let rows = RoundedRows {
             row: W::from_i32(walk.at(0, y)),
             step_x: W::from_i32(walk.sx),

@@ -144,24 +144,31 @@ pub(crate) const fn div_floor(n: u64, d: u64) -> u64 {
 /// Divisors below `2^SHIFTED_DIVISOR_BITS` take [`shifted_by_short`]: a remainder shifted by
 /// up to [`MAX_SHIFT`] bits, plus half the divisor, still fits a 32-bit word.
 const SHIFTED_DIVISOR_BITS: u32 = 17;
-/// The largest shift [`shifted_by_short`] takes.
+/// The largest shift [`shifted_by_short`] takes in one step of its remainder.
 const MAX_SHIFT: u32 = 14;
 
-/// `⌊(m · 2^s + ⌊d/2⌋) / d⌋` for `0 < d < 2¹⁷` and `s ≤ 14`, by two 32-bit divisions: with `m =
-/// q·d + r`, it is `q · 2^s + ⌊(r · 2^s + ⌊d/2⌋) / d⌋`, and `r · 2^s + ⌊d/2⌋` lies below `2¹⁷ ·
-/// 2¹⁴ + 2¹⁶`, a 32-bit word. This is the magnitude [`div_round`] rounds for a numerator `±m ·
-/// 2^s`: the depth gradients of most small triangles (a numerator below 2³² shifted by 14), in
-/// two divides.
+/// `⌊(m · 2^s + ⌊d/2⌋) / d⌋` for `0 < d < 2¹⁷` and `s ≤ 28`, by 32-bit divisions: with `m =
+/// q·d + r`, it is `q · 2^s + ⌊(r · 2^s + ⌊d/2⌋) / d⌋`, and for `s ≤ 14`, `r · 2^s + ⌊d/2⌋` lies
+/// below `2¹⁷ · 2¹⁴ + 2¹⁶`, a 32-bit word; a longer shift takes the remainder on in two steps
+/// (`r · 2¹⁴ = q₂·d + r₂`, then `r₂` shifted by the rest). This is the magnitude [`div_round`]
+/// rounds for a numerator `±m · 2^s`: the depth gradients of most small triangles (a numerator
+/// below 2³² shifted by 14) in two divides, their colour gradients (shifted by 27) in three.
 #[inline(always)]
 const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     let (q, r) = (m / d, m % d);
-    ((q as u64) << s) + ((r << s) + d / 2) as u64 / d as u64
+    if s <= MAX_SHIFT {
+        return ((q as u64) << s) + ((r << s) + d / 2) as u64 / d as u64;
+    }
+    let rest = s - MAX_SHIFT;
+    let t = r << MAX_SHIFT;
+    let (q2, r2) = (t / d, t % d);
+    ((q as u64) << s) + ((q2 as u64) << rest) + ((r2 << rest) + d / 2) as u64 / d as u64
 }
 
-/// [`div_round`]`(n · 2^s, d)` as a word, for `0 < d < 2¹⁷` and `s ≤ 14`: [`shifted_by_short`]
+/// [`div_round`]`(n · 2^s, d)` as a word, for `0 < d < 2¹⁷` and `s ≤ 28`: [`shifted_by_short`]
 /// of `|n|` where it is below 2³² and its first quotient below 2^(30 − s), so that the
-/// magnitude, at most `(q + 1)·2^s ≤ 2³⁰` (the second quotient is at most 2^s), takes its sign
-/// in a word; `None` otherwise.
+/// magnitude, at most `(q + 1)·2^s ≤ 2³⁰` (the rest is at most 2^s), takes its sign in a word;
+/// `None` otherwise.
 #[inline(always)]
 fn shifted_i32_in_words(n: i64, s: u32, d: u32) -> Option<i32> {
     let m = u32::try_from(n.unsigned_abs()).ok()?;
@@ -309,15 +316,15 @@ impl DivideBy {
         self.round(n << shift)
     }
 
-    /// [`round_shifted`](Self::round_shifted) where it fits an i32, else `None`; on 32-bit
-    /// cores by [`shifted_i32_in_words`] where it applies (the depth gradients). (64-bit
-    /// cores find the depth walk's steps by `buffer::depth::steps_over_area` instead.)
+    /// [`round_shifted`](Self::round_shifted) (for `shift ≤ 28`) where it fits an i32, else
+    /// `None`; on 32-bit cores by [`shifted_i32_in_words`] where it applies (the depth and
+    /// colour gradients). (64-bit cores find those walks' steps by one 64-bit division each.)
     #[inline(always)]
     pub(crate) fn round_shifted_i32(&self, n: i64, shift: u32) -> Option<i32> {
         if cfg!(target_pointer_width = "32")
             && self.d32 > 0
             && self.d32 < 1 << SHIFTED_DIVISOR_BITS
-            && shift <= MAX_SHIFT
+            && shift <= 2 * MAX_SHIFT
         {
             if let Some(q) = shifted_i32_in_words(n, shift, self.d32 as u32) {
                 return Some(q);
@@ -637,8 +644,8 @@ fn newton_reciprocal(d: u32) -> Option<u32> {
 mod tests {
     use super::*;
 
-    /// The shifted numerator's two 32-bit divisions give `div_round`'s quotient, for every
-    /// shift up to 14, divisors up to the bound and numerators of every 32-bit size, both signs.
+    /// The shifted numerator's 32-bit divisions give `div_round`'s quotient, for every shift up
+    /// to 28, divisors up to the bound and numerators of every 32-bit size, both signs.
     #[test]
     fn shifted_by_short_equals_div_round() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
@@ -654,7 +661,7 @@ mod tests {
                 1 => 1 + ((x >> 40) as u32 & 0x7),
                 _ => 1 + ((x >> 40) as u32 % top),
             };
-            let s = (x >> 60) as u32 % (MAX_SHIFT + 1);
+            let s = (x >> 58) as u32 % (2 * MAX_SHIFT + 1);
             let expected = div_round((m as i64) << s, d as i64);
             assert_eq!(shifted_by_short(m, s, d) as i64, expected, "{m} {s} {d}");
             assert_eq!(
@@ -682,7 +689,7 @@ mod tests {
                 1 => 1 + ((x >> 40) as u32 & 0x7),
                 _ => 1 + ((x >> 40) as u32 % top),
             };
-            let s = (x >> 59) as u32 % (MAX_SHIFT + 1);
+            let s = (x >> 58) as u32 % (2 * MAX_SHIFT + 1);
             match shifted_i32_in_words(n, s, d) {
                 Some(q) => {
                     assert_eq!(q as i64, div_round(n << s, d as i64), "{n} {s} {d}");

@@ -20,10 +20,11 @@ pub(crate) struct ClipVertex {
 }
 
 impl ClipVertex {
-    /// The colour.
+    /// The colour, whole channels (the varyings carry 8 fraction bits through the clip,
+    /// rounded off here).
     pub(crate) fn rgb(&self) -> [i32; 3] {
         let [r, g, b, _, _] = self.varying;
-        [r, g, b]
+        [r, g, b].map(|c| (c.saturating_add(1 << 7) >> 8).clamp(0, 255))
     }
 
     /// The UV.
@@ -121,4 +122,21 @@ pub(crate) fn clip_segment(
         }
     }
     Some((a, b))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Clipped colours reach shading as whole channels: rounded to nearest (ties up) and kept
+    /// in 0..=255, so that Gouraud's range argument (whole vertex channels) holds for them.
+    #[test]
+    fn clipped_colours_are_whole_channels() {
+        let v = |r: i32, g: i32, b: i32| ClipVertex {
+            c: Default::default(),
+            varying: [r, g, b, 0, 0],
+        };
+        assert_eq!(v(200 << 8 | 128, 100 << 8 | 127, 0).rgb(), [201, 100, 0]);
+        assert_eq!(v(255 << 8 | 200, -3, 7 << 8).rgb(), [255, 0, 7]);
+    }
 }

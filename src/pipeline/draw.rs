@@ -351,7 +351,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             // Vertex colours matter only to per-vertex shading, UVs to textures.
             let carried;
             let varyings = if S::PER_VERTEX || S::TEXTURED {
-                let rgb = |v: &ScreenVertex| map3(v.rgb, |c| (c as i32) << 8);
+                let rgb = |v: &ScreenVertex| map3(v.rgb, |c| c as i32);
                 let mut both = NO_VARYINGS;
                 if S::PER_VERTEX {
                     both.rgb = [rgb(a), rgb(b), rgb(c)];

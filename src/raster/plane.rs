@@ -249,26 +249,43 @@ impl AreaWalks {
         AreaWalks { area, short }
     }
 
-    /// The walk of the plane through `(p[i], v[i])` (each value in [0, 2³⁰]) with `bias` added;
-    /// `None` where its steps do not fit 32 bits (a triangle nearly edge-on).
+    /// The walk of the plane through `(p[i], v[i] · 2^shift)` (each of those in [0, 2³⁰]) with
+    /// `bias` added; `None` where its steps do not fit 32 bits (a triangle nearly edge-on).
+    /// Shifting the values rather than the numerators keeps those short (colour channels are
+    /// whole numbers below 2⁸, shifted by 22).
     #[inline(always)]
-    pub(crate) fn walk(&self, p: &[ScreenPoint; 3], v: [i32; 3], bias: i32) -> Option<WordPlane> {
+    pub(crate) fn walk(
+        &self,
+        p: &[ScreenPoint; 3],
+        v: [i32; 3],
+        shift: u32,
+        bias: i32,
+    ) -> Option<WordPlane> {
         let (nx, ny) = Plane::numerators_given(p, v);
-        let (sx, sy) = word_steps(nx, ny, self.area, self.short.as_ref())?;
+        let (sx, sy) = word_steps(nx, ny, shift, self.area, self.short.as_ref())?;
         let reference = Reference::of(p[0]);
         // Within ±2³⁶: the offset in sixteenths of the unit, rounded to the unit.
         let offset = mul_short(sx, reference.dx).wrapping_add(mul_short(sy, reference.dy));
         let offset = (offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32;
-        let at_ref = v[0].wrapping_mul(2).wrapping_add(bias).wrapping_add(offset);
+        let at_ref = (v[0] << shift)
+            .wrapping_mul(2)
+            .wrapping_add(bias)
+            .wrapping_add(offset);
         Some(reference.plane(at_ref, sx, sy))
     }
 
     /// [`walk`](Self::walk) whatever its steps: see [`WordPlane::wrapping`].
     #[inline(always)]
-    pub(crate) fn walk_any(&self, p: &[ScreenPoint; 3], v: [i32; 3], bias: i32) -> WordPlane {
-        match self.walk(p, v, bias) {
+    pub(crate) fn walk_any(
+        &self,
+        p: &[ScreenPoint; 3],
+        v: [i32; 3],
+        shift: u32,
+        bias: i32,
+    ) -> WordPlane {
+        match self.walk(p, v, shift, bias) {
             Some(walk) => walk,
-            None => WordPlane::wrapping(p, v, bias, self.area),
+            None => WordPlane::wrapping(p, v.map(|v| v << shift), bias, self.area),
         }
     }
 }
@@ -339,25 +356,38 @@ impl Reference {
     }
 }
 
-/// The steps `round(32·n / area)` of gradient numerators over the doubled signed area (per
-/// pixel, 16 sub-pixels, in units of half the values'), where both fit an i32. On 64-bit hosts
+/// The steps `round(32·n·2^shift / area)` of gradient numerators over the doubled signed area
+/// (per pixel, 16 sub-pixels, in units of half the shifted values'), where both fit an i32. On 64-bit hosts
 /// by [`steps_over_area`]; on cores without a divide instruction, for the usual triangle (a
 /// doubled area below 2²⁹, steps below 2³⁰), by two 15-bit digits each through `short`, the
 /// area's magnitude prepared (fewer instructions than through a reciprocal to 32 bits, which
 /// the others take).
 #[inline(always)]
-fn word_steps(nx: i64, ny: i64, area: i64, short: Option<&ShortQuotients>) -> Option<(i32, i32)> {
+fn word_steps(
+    nx: i64,
+    ny: i64,
+    shift: u32,
+    area: i64,
+    short: Option<&ShortQuotients>,
+) -> Option<(i32, i32)> {
     if cfg!(target_pointer_width = "64") {
-        return steps_over_area(nx, ny, area);
+        return steps_over_area(nx << shift, ny << shift, area);
     }
     let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+    let shift = shift + 5;
     if let Some(by) = short {
-        if let (Some(sx), Some(sy)) = (by.round_below_2_30(nx << 5), by.round_below_2_30(ny << 5)) {
+        if let (Some(sx), Some(sy)) = (
+            by.round_below_2_30(nx << shift),
+            by.round_below_2_30(ny << shift),
+        ) {
             return Some((sx, sy));
         }
     }
     let by = DivideBy::new(den);
-    Some((by.round_shifted_i32(nx, 5)?, by.round_shifted_i32(ny, 5)?))
+    Some((
+        by.round_shifted_i32(nx, shift)?,
+        by.round_shifted_i32(ny, shift)?,
+    ))
 }
 
 /// The steps `round(32·n / area)` of the gradient numerators `nx` and `ny` over the doubled

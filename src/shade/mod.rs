@@ -59,7 +59,7 @@ pub struct FaceInputs<'a> {
     pub(crate) normalize: Normalize,
     /// Per vertex: snapped screen position and depth (Q1.30).
     pub(crate) vertices: &'a [(ScreenPoint, i32); 3],
-    /// Per vertex: lit colour (Gouraud; zeros for other shadings).
+    /// Per vertex: lit colour, whole channels 0..=255 (Gouraud; zeros for other shadings).
     pub(crate) colors: &'a [[i32; 3]; 3],
     /// Per vertex: UV, raw Q16.16 (textured shadings; zeros for the others).
     pub(crate) uvs: &'a [[i32; 2]; 3],

@@ -33,8 +33,8 @@ impl Paint for SolidPaint {
     }
 }
 
-/// Vertex colours arrive with this many fraction bits (0..=255 << 8).
-pub(crate) const RGB_FRAC: u32 = 8;
+/// Vertex colours carry this many fraction bits in [`PerspectivePaint`]'s planes.
+const RGB_FRAC: u32 = 8;
 
 /// Per channel, the smallest and largest of the three vertex values `channel(k)`.
 fn channel_ranges(channel: impl Fn(usize) -> [i64; 3]) -> ([i64; 3], [i64; 3]) {
@@ -52,7 +52,7 @@ const HALF_CHANNEL: i32 = 1 << CHANNEL_SHIFT;
 /// Vertex colours interpolated across the triangle in 32-bit words (each channel a plane walked
 /// by steps rounded once, as depth is), each channel rounded to nearest.
 ///
-/// The vertex channels are whole numbers (those of clipped vertices rounded so), and a walk
+/// The vertex channels are whole numbers (clipped vertices' rounded so), and a walk
 /// errs from the exact plane by less than 2⁻¹⁰ of a channel step, so a pixel's rounded
 /// channel lies between the smallest and the largest vertex value: every pixel is a convex
 /// combination of the vertex colours (rule R8) with no clamp in the pixel loop.
@@ -62,21 +62,17 @@ pub struct SmoothPaint {
 }
 
 impl SmoothPaint {
-    /// From vertex colours (channels `0..=255 << RGB_FRAC`) at snapped screen positions.
+    /// From vertex colours (whole channels, 0..=255) at snapped screen positions.
     pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64) -> Self {
-        let whole = |c: i32| {
-            let c = c.saturating_add(1 << (RGB_FRAC - 1)) >> RGB_FRAC;
-            c.clamp(0, 255) << CHANNEL_SHIFT
-        };
-        let [a, b, c] = rgb.map(|v| v.map(whole));
+        let [a, b, c] = rgb;
         let values = [[a[0], b[0], c[0]], [a[1], b[1], c[1]], [a[2], b[2], c[2]]];
         let by_area = AreaWalks::new(area2);
         let [r, g, b] = values;
         SmoothPaint {
             channels: [
-                by_area.walk_any(p, r, HALF_CHANNEL),
-                by_area.walk_any(p, g, HALF_CHANNEL),
-                by_area.walk_any(p, b, HALF_CHANNEL),
+                by_area.walk_any(p, r, CHANNEL_SHIFT, HALF_CHANNEL),
+                by_area.walk_any(p, g, CHANNEL_SHIFT, HALF_CHANNEL),
+                by_area.walk_any(p, b, CHANNEL_SHIFT, HALF_CHANNEL),
             ],
         }
     }
@@ -140,8 +136,8 @@ pub struct PerspectivePaint {
 const Q_BITS: u32 = 28;
 
 impl PerspectivePaint {
-    /// From vertex colours (channels `0..=255 << RGB_FRAC`) and weights `q` proportional to
-    /// `1/w` (positive; any common scale).
+    /// From vertex colours (whole channels, 0..=255) and weights `q` proportional to `1/w`
+    /// (positive; any common scale).
     pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], q: [i64; 3], area2: i64) -> Self {
         let shift = magnitude_bits(&q.map(|v| v.max(1))) as i32 - Q_BITS as i32;
         let q = q.map(|v| {
@@ -152,7 +148,7 @@ impl PerspectivePaint {
             };
             v.max(1)
         });
-        let channel = |k: usize| rgb.map(|c| c.get(k).copied().unwrap_or(0) as i64);
+        let channel = |k: usize| rgb.map(|c| (c.get(k).copied().unwrap_or(0) as i64) << RGB_FRAC);
         let num = |k: usize| {
             let mut n = channel(k);
             for (c, q) in n.iter_mut().zip(q) {
@@ -241,7 +237,7 @@ mod tests {
         if area == 0 {
             return 0;
         }
-        let paint = SmoothPaint::new(&p, rgb.map(|c| c.map(|c| c << RGB_FRAC)), area);
+        let paint = SmoothPaint::new(&p, rgb, area);
         let clip = crate::raster::PixelRect::new(0, 0, 4096, 4096);
         let mut pixels = 0;
         for span in crate::raster::triangle_spans(p, clip) {
@@ -317,29 +313,5 @@ mod tests {
             pixels > 200_000 && steep_drawn > 20,
             "{pixels} {steep_drawn}"
         );
-    }
-
-    /// Vertex channels with fraction bits (clipped vertices) are rounded to whole ones first:
-    /// every pixel stays within the rounded vertex range.
-    #[test]
-    fn fractional_vertex_channels_are_rounded() {
-        let p = [
-            ScreenPoint::new(0, 0),
-            ScreenPoint::new(16 * 40, 8),
-            ScreenPoint::new(16 * 3, 16 * 30),
-        ];
-        let area = crate::raster::doubled_area(p[0], p[1], p[2]);
-        let rgb = [
-            [200 << 8 | 128, 0, 0],
-            [100 << 8 | 127, 0, 0],
-            [150 << 8, 0, 0],
-        ];
-        let paint = SmoothPaint::new(&p, rgb, area);
-        let clip = crate::raster::PixelRect::new(0, 0, 64, 64);
-        for span in crate::raster::triangle_spans(p, clip) {
-            for c in paint.cursor(span).take((span.x1 - span.x0) as usize) {
-                assert!((100..=201).contains(&c.r()), "{span:?} {c:?}");
-            }
-        }
     }
 }
