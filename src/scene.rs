@@ -346,9 +346,9 @@ pub struct Lighting<const N: usize> {
     /// True while the ambient colour and every directional light are grey (equal channels) and
     /// there is no point light: Lambert then sums one channel for all three.
     grey: bool,
-    /// True while they are grey and every channel lies in [0, 1] (the usual lights): that one
-    /// sum then fits a word (see [`in_words`](Self::in_words)).
-    words: bool,
+    /// True while every channel of the ambient colour and of every light lies in [0, 1] (the
+    /// usual lights): Lambert's sums then fit words (see [`channels_in_words`](Self::channels_in_words)).
+    unit: bool,
 }
 
 impl<const N: usize> Lighting<N> {
@@ -360,13 +360,12 @@ impl<const N: usize> Lighting<N> {
             ambient.g.to_bits(),
             ambient.b.to_bits(),
         ];
-        let grey = r == g && g == b;
         Lighting {
             ambient,
             lights: heapless::Vec::new(),
             points: heapless::Vec::new(),
-            grey,
-            words: grey && unit_channel(r as i64),
+            grey: r == g && g == b,
+            unit: unit_channel(r as i64) && unit_channel(g as i64) && unit_channel(b as i64),
         }
     }
 
@@ -384,7 +383,7 @@ impl<const N: usize> Lighting<N> {
         self.lights.push(prepared).map_err(|_| LightError::Full)?;
         let [r, g, b] = prepared.color;
         self.grey &= r == g && g == b;
-        self.words &= self.grey && unit_channel(r.into());
+        self.unit &= prepared.color.iter().all(|&c| unit_channel(c.into()));
         Ok(())
     }
 
@@ -397,11 +396,10 @@ impl<const N: usize> Lighting<N> {
         if self.len() >= N {
             return Err(LightError::Full);
         }
-        self.points
-            .push(PreparedPoint::new(&light))
-            .map_err(|_| LightError::Full)?;
+        let prepared = PreparedPoint::new(&light);
+        self.points.push(prepared).map_err(|_| LightError::Full)?;
         self.grey = false;
-        self.words = false;
+        self.unit &= prepared.color.iter().all(|&c| unit_channel(c.into()));
         Ok(())
     }
 
@@ -469,17 +467,17 @@ impl<const N: usize> Lighting<N> {
         self.points.iter().take(if POINT_LIGHT { N } else { 0 })
     }
 
-    /// True when the ambient colour and every directional light have three equal channels and
-    /// there is no point light.
-    pub(crate) fn is_grey(&self) -> bool {
-        self.grey
+    /// True when the ambient colour and every directional light are grey, there is no point
+    /// light, and the sums fit words ([`channels_in_words`](Self::channels_in_words)).
+    pub(crate) fn grey_in_words(&self) -> bool {
+        self.grey && self.channels_in_words()
     }
 
-    /// True when the lighting [`is_grey`](Self::is_grey), every channel lies in [0, 1] and
-    /// there are at most 2¹³ lights: a light's term (its channel times a cosine below 2³¹ in
-    /// Q2.30) is then below 2¹⁷ in Q16.16, and the ambient and all terms sum below 2³¹.
-    pub(crate) fn in_words(&self) -> bool {
-        self.words && N <= 1 << 13
+    /// True when every channel lies in [0, 1] and there are at most 2¹³ lights: a light's term
+    /// (its channel times a cosine below 2³¹ in Q2.30) is then below 2¹⁷ in Q16.16, and the
+    /// ambient and all terms of a channel sum below 2³¹.
+    pub(crate) fn channels_in_words(&self) -> bool {
+        self.unit && N <= 1 << 13
     }
 
     /// The same lights seen from an object's model space, for an object whose normal matrix
@@ -507,7 +505,7 @@ impl<const N: usize> Lighting<N> {
             lights,
             points: heapless::Vec::new(),
             grey: self.grey,
-            words: self.words,
+            unit: self.unit,
         })
     }
 }

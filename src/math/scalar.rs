@@ -225,6 +225,26 @@ const fn add_shifted16(lo: u32, hi: i32, m: i32) -> (u32, i32) {
     (lo, hi.wrapping_add(m >> 16).wrapping_add(carry as i32))
 }
 
+/// `⌊c · d / 2³⁰⌋` for `c ≤ 2¹⁶` and `d < 2³¹` (a light's channel and a cosine), below 2¹⁷:
+/// on cores without a long multiply [`shr30_by_halves`], elsewhere the widening product.
+#[inline(always)]
+pub(crate) const fn mul_shr30_short(c: u32, d: u32) -> u32 {
+    if NARROW_CORE {
+        shr30_by_halves(c, d)
+    } else {
+        (mul_wide_u32(c, d) >> 30) as u32
+    }
+}
+
+/// [`mul_shr30_short`] by two 32-bit products, of `c` by `d`'s bits from 15 up (`c·dₕ ≤ 2³² −
+/// 2¹⁶`) and below (`c·dₗ < 2³¹`): `⌊(c·dₕ·2¹⁵ + c·dₗ) / 2³⁰⌋ = ⌊(c·dₕ + ⌊c·dₗ / 2¹⁵⌋) / 2¹⁵⌋`,
+/// whose inner sum stays below 2³² (tested on every host).
+#[inline(always)]
+const fn shr30_by_halves(c: u32, d: u32) -> u32 {
+    let (high, low) = (d >> 15, d & 0x7FFF);
+    c.wrapping_mul(high).wrapping_add(c.wrapping_mul(low) >> 15) >> 15
+}
+
 /// `a · b` exactly for unsigned factors: [`mul_wide`]'s unsigned twin (UMULL on Cortex-M3/M4).
 #[inline(always)]
 pub(crate) const fn mul_wide_u32(a: u32, b: u32) -> u64 {
@@ -263,6 +283,28 @@ const fn mul_halves_u32(a: u32, b: u32) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Light terms by halves equal the widening product's, at the corners of their range and
+    /// at random.
+    #[test]
+    fn shr30_by_halves_equals_the_wide_product() {
+        let mut rng = crate::testing::XorShift(0xBB67_AE85_84CA_A73Bu64);
+        let corners = [
+            (0, 0),
+            (1 << 16, (1 << 31) - 1),
+            (1 << 16, 1 << 15),
+            (1, 0x7FFF),
+        ];
+        let random = (0..200_000).map(|_| {
+            let x = rng.next_u64();
+            ((x as u32) % ((1 << 16) + 1), (x >> 33) as u32)
+        });
+        for (c, d) in corners.into_iter().chain(random) {
+            let wide = ((c as u64 * d as u64) >> 30) as u32;
+            assert_eq!(shr30_by_halves(c, d), wide, "{c} {d}");
+            assert_eq!(mul_shr30_short(c, d), wide, "{c} {d}");
+        }
+    }
     use crate::math::div_round;
 
     /// The binary-search count of leading zeros is the instruction's, at every bit position.

@@ -118,6 +118,19 @@ impl Plane {
         (nx, ny)
     }
 
+    /// [`numerators`](Self::numerators) of values in [0, 2¹⁴) (and coordinates within ±2¹⁵),
+    /// in 32-bit words: each product lies within ±2³⁰, their difference within ±2³¹.
+    #[inline(always)]
+    pub(crate) fn short_numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
+        let [a, b, c] = *p;
+        let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
+        let (dx2, dy2) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
+        let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
+        let nx = dv1.wrapping_mul(dy2).wrapping_sub(dv2.wrapping_mul(dy1));
+        let ny = dv2.wrapping_mul(dx1).wrapping_sub(dv1.wrapping_mul(dx2));
+        (nx as i64, ny as i64)
+    }
+
     /// Gradient numerators `nx`, `ny` over the doubled signed area `area2`, as the same
     /// fractions over its magnitude (what a division rounding to nearest takes).
     #[inline(always)]
@@ -261,7 +274,14 @@ impl AreaWalks {
         shift: u32,
         bias: i32,
     ) -> Option<WordPlane> {
-        let (nx, ny) = Plane::numerators_given(p, v);
+        // Values below 2¹⁴ (shifted by 16 or more) give numerators within ±2³¹: their
+        // products and difference fit words, where wide products take a routine on cores
+        // without a long multiply.
+        let (nx, ny) = if shift >= 16 {
+            Plane::short_numerators(p, v)
+        } else {
+            Plane::numerators_given(p, v)
+        };
         let (sx, sy) = word_steps(nx, ny, shift, self.area, self.short.as_ref())?;
         let reference = Reference::of(p[0]);
         // Within ±2³⁶: the offset in sixteenths of the unit, rounded to the unit.
@@ -501,6 +521,30 @@ mod tests {
             );
         }
         assert_eq!(steps_over_area(5, 5, 0), None);
+    }
+
+    /// Values below 2¹⁴ give the same numerators in words, at the corners of the range and at
+    /// random.
+    #[test]
+    fn short_numerators_equal_the_wide_ones() {
+        let corners = [-(1 << 15), 1 << 15, 0, 1];
+        let values = [0, (1 << 14) - 1, 1, 255];
+        let mut rng = crate::testing::XorShift(0x6A09_E667_F3BC_C909u64);
+        for k in 0..100_000usize {
+            let (p, v) = if k < 4usize.pow(6) {
+                let c = |j: u32| corners[k / 4usize.pow(j) % 4];
+                let p = [0, 2, 4].map(|j| ScreenPoint::new(c(j), c(j + 1)));
+                (p, [0, 1, 2].map(|j| values[(k + j) % 4]))
+            } else {
+                let p = [(); 3].map(|_| ScreenPoint::new(rng.within(1 << 15), rng.within(1 << 15)));
+                (p, [(); 3].map(|_| rng.within(1 << 13) + (1 << 13) - 1))
+            };
+            assert_eq!(
+                Plane::short_numerators(&p, v),
+                Plane::numerators(&p, v),
+                "{p:?} {v:?}"
+            );
+        }
     }
 
     /// The sums of products (Cortex-M3/M4) and the differences equal the exact numerators: at

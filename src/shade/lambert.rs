@@ -3,8 +3,8 @@
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{
-    apply, cosine_unit, dot_is_positive, face_direction, map3, mul_wide, shrink, NewtonDirection,
-    Normalize, UNIT_ONE,
+    apply, cosine_unit, dot_is_positive, face_direction, map3, mul_shr30_short, mul_wide, shrink,
+    NewtonDirection, Normalize, UNIT_ONE,
 };
 #[cfg(test)]
 use crate::math::{dot_wide, normalize};
@@ -30,32 +30,9 @@ fn lambert_by<const N: usize>(
     at: &[i64; 3],
     cosine: impl Fn(&[i32; 3]) -> i32,
 ) -> Rgb888 {
-    // Grey lights beyond [0, 1] take one sum in 64 bits on x86-64 and the per-channel sums on
-    // 32-bit cores.
-    let one_sum = if cfg!(target_pointer_width = "64") {
-        lighting.is_grey()
-    } else {
-        lighting.in_words()
-    };
-    if !one_sum {
-        // Coloured or point lights, or coloured ambient: a sum per channel, from the cosines
-        // gathered here (one copy of those sums serves every way of finding them).
-        // The directional lights' cosines, then the point lights' (together at most N).
-        let mut cosines = [0; N];
-        let mut slots = cosines.iter_mut();
-        for (light, d) in lighting.lights().zip(slots.by_ref()) {
-            *d = cosine(&light.direction);
-        }
-        for (point, d) in lighting.points().zip(slots) {
-            *d = point
-                .towards(at)
-                .map_or(0, |(l, factor)| attenuate(cosine(&l), factor));
-        }
-        return lambert_colored(base, lighting, &cosines);
-    }
-    if lighting.in_words() {
+    if lighting.grey_in_words() {
         // Grey ambient and lights in [0, 1] (the usual kind): one sum in a word serves the
-        // three channels, each term below 2¹⁷ and the sum below 2³¹ (see `in_words`).
+        // three channels, each term below 2¹⁷ and the sum below 2³¹.
         let ambient = lighting.ambient().r.to_bits();
         let s = lighting.lights().fold(ambient, |s, light| {
             let d = cosine(&light.direction);
@@ -64,34 +41,52 @@ fn lambert_by<const N: usize>(
         let s = s.clamp(0, 1 << 16);
         return Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s));
     }
-    // Grey ambient and lights, some beyond [0, 1] (x86-64): one sum in 64 bits.
-    let ambient = i64::from(lighting.ambient().r.to_bits());
-    let s = lighting.lights().fold(ambient, |s, light| {
-        s.wrapping_add(term(light.color[0].into(), cosine(&light.direction)))
-    });
-    let s = intensity(s);
-    Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s))
+    // Otherwise a sum per channel, from the cosines gathered here: the directional lights',
+    // then the point lights' (together at most N).
+    let mut cosines = [0; N];
+    let mut slots = cosines.iter_mut();
+    for (light, d) in lighting.lights().zip(slots.by_ref()) {
+        *d = cosine(&light.direction);
+    }
+    for (point, d) in lighting.points().zip(slots) {
+        *d = point
+            .towards(at)
+            .map_or(0, |(l, factor)| attenuate(cosine(&l), factor));
+    }
+    lambert_sums(base, lighting, &cosines)
 }
 
-/// [`lambert_by`] for coloured or point lights: a sum per channel, from each directional
-/// light's `max(0, n·l)`, then each point light's attenuated one, in `cosines`.
+/// The lit colour from each directional light's `max(0, n·l)`, then each point light's
+/// attenuated one, in `cosines`: a sum per channel, in words where every channel lies in
+/// [0, 1] (the usual lights).
 #[inline(never)]
-fn lambert_colored<const N: usize>(
+fn lambert_sums<const N: usize>(
     base: Rgb888,
     lighting: &Lighting<N>,
     cosines: &[i32; N],
 ) -> Rgb888 {
-    let mut sum = lighting.ambient().channels();
     let colors = lighting.lights().map(|l| &l.color);
-    for (color, &d) in colors
+    let terms = colors
         .chain(lighting.points().map(|p| &p.color))
-        .zip(cosines)
-    {
-        for (s, &c) in sum.iter_mut().zip(color) {
-            *s = s.wrapping_add(term(c.into(), d));
+        .zip(cosines);
+    let [r, g, b] = if lighting.channels_in_words() {
+        // Each term below 2¹⁷, the ambient at most 2¹⁶: the sums fit words.
+        let mut sum = lighting.ambient().bits();
+        for (color, &d) in terms {
+            for (s, &c) in sum.iter_mut().zip(color) {
+                *s = s.wrapping_add(term_in_words(c as u32, d as u32) as i32);
+            }
         }
-    }
-    let [r, g, b] = sum.map(intensity);
+        sum.map(|s| s.clamp(0, 1 << 16))
+    } else {
+        let mut sum = lighting.ambient().channels();
+        for (color, &d) in terms {
+            for (s, &c) in sum.iter_mut().zip(color) {
+                *s = s.wrapping_add(term(c.into(), d));
+            }
+        }
+        sum.map(intensity)
+    };
     Rgb888::new(lit(base.r(), r), lit(base.g(), g), lit(base.b(), b))
 }
 
@@ -118,7 +113,7 @@ pub(super) fn term(channel: i64, d: i32) -> i64 {
 /// [`term`] of a channel `c ≤ 2¹⁶` and a cosine `d < 2³¹` (both non-negative), below 2¹⁷.
 #[inline(always)]
 fn term_in_words(c: u32, d: u32) -> u32 {
-    (mul_wide(c as i32, d as i32) >> 30) as u32
+    mul_shr30_short(c, d)
 }
 
 /// A channel's sum clamped to [0, 1] (Q16.16).
@@ -436,51 +431,76 @@ mod tests {
         assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &[0; 3], &hot), base);
     }
 
-    /// The grey shortcuts (one sum for three channels, in a word for lights in [0, 1]) give
-    /// what the sum per channel gives, for one to three grey lights, overbright ones included;
-    /// a coloured light or ambient turns them off.
+    /// The sums in words (every channel in [0, 1]; one sum for grey lights) equal the sums in
+    /// 64 bits, for one to three lights, grey and coloured; an overbright light takes the
+    /// 64-bit sums.
     #[test]
-    fn grey_lighting_equals_the_sum_per_channel() {
-        let gray = |v: f64| LightColor::gray(Scalar::from_num(v));
+    fn sums_in_words_equal_the_wide_sums() {
+        let color = |r: f64, g: f64, b: f64| {
+            LightColor::new(
+                Scalar::from_num(r),
+                Scalar::from_num(g),
+                Scalar::from_num(b),
+            )
+        };
+        let wide = |base: Rgb888, lighting: &Lighting<3>, cosines: &[i32; 3]| {
+            let mut sum = lighting.ambient().channels();
+            for (light, &d) in lighting.lights().zip(cosines) {
+                for (s, &c) in sum.iter_mut().zip(&light.color) {
+                    *s += (c as i64 * d as i64) >> 30;
+                }
+            }
+            let [r, g, b] = sum.map(|s| s.clamp(0, 1 << 16) as i32);
+            Rgb888::new(lit(base.r(), r), lit(base.g(), g), lit(base.b(), b))
+        };
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         let base = Rgb888::new(255, 160, 64);
-        for (k, ambient) in [0.0, 0.2, 0.9].into_iter().enumerate() {
-            let mut lighting = Lighting::<3>::new(gray(ambient));
-            for (d, c) in [((-1, 1, 1), 0.8), ((2, -1, 3), 0.5), ((0, 0, -1), 2.5)]
-                .into_iter()
-                .take(k + 1)
-            {
-                let light = DirectionalLight::new(Vec3::from_int(d.0, d.1, d.2), gray(c));
-                lighting.push(light).unwrap();
-            }
-            assert!(lighting.is_grey());
-            // The third light is overbright: one sum in 64 bits on x86-64, per channel on
-            // 32-bit cores.
-            assert_eq!(lighting.in_words(), k < 2);
-            for _ in 0..5_000 {
-                let v = [(); 3].map(|_| rng.within(1 << 20) as i64);
-                let n = normalize(v);
-                let mut cosines = [0; 3];
-                for (c, light) in cosines.iter_mut().zip(lighting.lights()) {
-                    *c = cosine(n, &light.direction);
+        let lights = [
+            ((-1, 1, 1), color(0.8, 0.8, 0.8)),
+            ((2, -1, 3), color(1.0, 0.25, 0.5)),
+            ((0, 0, -1), color(0.1, 1.0, 0.0)),
+        ];
+        for (k, ambient) in [
+            color(0.0, 0.0, 0.0),
+            color(0.2, 0.3, 0.1),
+            color(1.0, 1.0, 1.0),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            for overbright in [false, true] {
+                let mut lighting = Lighting::<3>::new(ambient);
+                for (d, c) in lights.into_iter().take(k + 1) {
+                    let c = if overbright { color(2.5, 0.5, 1.0) } else { c };
+                    let light = DirectionalLight::new(Vec3::from_int(d.0, d.1, d.2), c);
+                    lighting.push(light).unwrap();
                 }
-                assert_eq!(
-                    lambert(base, n, &[0; 3], &lighting),
-                    lambert_colored(base, &lighting, &cosines),
-                    "{v:?}"
-                );
+                assert_eq!(lighting.channels_in_words(), !overbright);
+                // The first set is grey: one sum for the three channels.
+                assert_eq!(lighting.grey_in_words(), k == 0 && !overbright);
+                for _ in 0..5_000 {
+                    let v = [(); 3].map(|_| rng.within(1 << 20) as i64);
+                    let n = normalize(v);
+                    let mut cosines = [0; 3];
+                    for (c, light) in cosines.iter_mut().zip(lighting.lights()) {
+                        *c = cosine(n, &light.direction);
+                    }
+                    assert_eq!(
+                        lambert(base, n, &[0; 3], &lighting),
+                        wide(base, &lighting, &cosines),
+                        "{v:?}"
+                    );
+                }
             }
         }
-        let mut tinted = Lighting::<1>::new(gray(0.2));
-        let warm = LightColor::new(Scalar::ONE, Scalar::ONE, Scalar::from_num(0.5));
-        tinted.push(DirectionalLight::new(Vec3::Y, warm)).unwrap();
-        assert!(!tinted.is_grey());
+        let mut tinted = Lighting::<1>::new(color(0.2, 0.2, 0.2));
+        tinted
+            .push(DirectionalLight::new(Vec3::Y, color(1.0, 1.0, 0.5)))
+            .unwrap();
         assert_eq!(
             lambert(base, Some([0, 1 << 30, 0]), &[0; 3], &tinted),
             Rgb888::new(255, 160, 44)
         );
-        let blue = LightColor::new(Scalar::ZERO, Scalar::ZERO, Scalar::ONE);
-        assert!(!Lighting::<1>::new(blue).is_grey());
     }
 
     /// Flat Lambert through [`NewtonDirection`] (no unit normal) gives the colours of the unit
@@ -507,7 +527,7 @@ mod tests {
             Vec3::X,
             LightColor::gray(Scalar::from_num(0.1)),
         ));
-        assert!(three.is_grey() && !coloured.is_grey());
+        assert!(!three.channels_in_words() && !coloured.channels_in_words());
         let (nv, nt) = torus_counts(48, 24);
         let (mut p, mut nrm, mut t) =
             (vec![Vec3::ZERO; nv], vec![Vec3::ZERO; nv], vec![[0; 3]; nt]);
