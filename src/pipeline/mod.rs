@@ -213,6 +213,14 @@ impl Frame {
             };
             let extent = object.mesh.extent();
             let points = S::PER_VERTEX && scene.lighting.points().next().is_some();
+            // Vertices lit in model space where the model matrix is a rotation times a scale
+            // (see `Lighting::in_model_space`): no product by the normal matrix per vertex.
+            // Glossy objects are lit in world space, where their viewer is.
+            let model_lighting = match (normals, object.specular) {
+                (Some(_), None) if S::PER_VERTEX => scene.lighting.in_model_space(&normal_matrix),
+                _ => None,
+            };
+            let lighting = model_lighting.as_ref().unwrap_or(&scene.lighting);
             // A glossy object's highlights, for a viewer along the camera's view axis (the
             // view matrix's third row, world space).
             let highlights = match object.specular {
@@ -270,9 +278,12 @@ impl Frame {
                         } else {
                             [0; 3]
                         };
-                        let unit =
-                            vertex_normal(n.to_bits(), &normal_matrix, self.precision.normalize());
-                        let mut lit = lambert(object.color, unit, &at, &scene.lighting);
+                        let method = self.precision.normalize();
+                        let unit = match &model_lighting {
+                            Some(_) => method.unit(n.to_bits().map(i64::from)),
+                            None => vertex_normal(n.to_bits(), &normal_matrix, method),
+                        };
+                        let mut lit = lambert(object.color, unit, &at, lighting);
                         if let (Some(h), Some(n)) = (&highlights, &unit) {
                             lit = add_highlight(lit, h.at(n, &at, &scene.lighting));
                         }
