@@ -199,10 +199,16 @@ const fn short_by_halves(a: i32, b: i32) -> i64 {
     halves_times(a >> 16, a & 0xFFFF, b)
 }
 
-/// `a · b` exactly for `|a| ≤ 2¹⁵` and `b` of any 32 bits unsigned.
+/// `a · b` exactly for `|a| ≤ 2¹⁵` and `b` of any 32 bits unsigned: on cores without a long
+/// multiply two 32-bit products, of `a` by `b`'s halves (each within ±2³¹), in line, instead
+/// of the library's 64-bit product.
 #[inline(always)]
 pub(crate) const fn mul_short_u32(a: i32, b: u32) -> i64 {
-    a as i64 * b as i64
+    if NARROW_CORE {
+        halves_times((b >> 16) as i32, (b & 0xFFFF) as i32, a)
+    } else {
+        a as i64 * b as i64
+    }
 }
 
 /// `(high·2¹⁶ + low) · b` for halves `high`, `low` (`0 ≤ low < 2¹⁶`) of a long factor and a

@@ -280,7 +280,7 @@ impl Frame {
                         };
                         let method = self.precision.normalize();
                         let unit = match &model_lighting {
-                            Some(_) => method.unit(n.to_bits().map(i64::from)),
+                            Some(_) => method.unit32(n.to_bits()),
                             None => vertex_normal(n.to_bits(), &normal_matrix, method),
                         };
                         let mut lit = lambert(object.color, unit, &at, lighting);
