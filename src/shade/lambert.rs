@@ -69,23 +69,25 @@ fn lambert_sums<const N: usize>(
     let terms = colors
         .chain(lighting.points().map(|p| &p.color))
         .zip(cosines);
+    // The channels' sums held apart (not as an array), so that they stay in registers.
     let [r, g, b] = if lighting.channels_in_words() {
         // Each term below 2¹⁷, the ambient at most 2¹⁶: the sums fit words.
-        let mut sum = lighting.ambient().bits();
-        for (color, &d) in terms {
-            for (s, &c) in sum.iter_mut().zip(color) {
-                *s = s.wrapping_add(term_in_words(c as u32, d as u32) as i32);
-            }
+        let term = |c: i32, d: i32| term_in_words(c as u32, d as u32) as i32;
+        let [mut r, mut g, mut b] = lighting.ambient().bits();
+        for (&[cr, cg, cb], &d) in terms {
+            r = r.wrapping_add(term(cr, d));
+            g = g.wrapping_add(term(cg, d));
+            b = b.wrapping_add(term(cb, d));
         }
-        sum.map(|s| s.clamp(0, 1 << 16))
+        [r, g, b].map(|s| s.clamp(0, 1 << 16))
     } else {
-        let mut sum = lighting.ambient().channels();
-        for (color, &d) in terms {
-            for (s, &c) in sum.iter_mut().zip(color) {
-                *s = s.wrapping_add(term(c.into(), d));
-            }
+        let [mut r, mut g, mut b] = lighting.ambient().channels();
+        for (&[cr, cg, cb], &d) in terms {
+            r = r.wrapping_add(term(cr.into(), d));
+            g = g.wrapping_add(term(cg.into(), d));
+            b = b.wrapping_add(term(cb.into(), d));
         }
-        sum.map(intensity)
+        [r, g, b].map(intensity)
     };
     Rgb888::new(lit(base.r(), r), lit(base.g(), g), lit(base.b(), b))
 }
