@@ -30,11 +30,13 @@ use core::fmt;
 
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{Point, Size};
-use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
+use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Drawable;
 
-use crate::buffer::{fill, BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer};
+use crate::buffer::{
+    fill, BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer, TargetColor,
+};
 use crate::camera::{Camera, CameraError};
 use crate::math::{Angle, Mat4, Number, Scalar, Vec3};
 use crate::mesh::{Mesh, Object, Specular};
@@ -442,7 +444,7 @@ pub struct Renderer<'b, C, D = u16> {
 
 impl<'b, C, D> Renderer<'b, C, D>
 where
-    C: PixelColor + From<Rgb888>,
+    C: TargetColor,
     D: DepthFormat,
 {
     /// A renderer over `storage` and the colour and depth buffers (their common length, in
@@ -725,7 +727,7 @@ impl<'f> PreparedFrame<'f> {
         depth: &mut [D],
     ) -> Result<Stats, BufferError>
     where
-        C: PixelColor + From<Rgb888>,
+        C: TargetColor,
         D: DepthFormat,
     {
         let width = self.frame.viewport().width();
@@ -895,7 +897,7 @@ trait Drawing<T> {
 impl<C, D, Q, K, S> Drawing<ColorDepth<'_, '_, C, D, Q, crate::buffer::Less, K>>
     for Prepared<'_, '_, MAX_LIGHTS, S>
 where
-    C: PixelColor + From<Rgb888>,
+    C: TargetColor,
     D: DepthFormat,
     Q: crate::buffer::Quantize<C>,
     K: crate::buffer::FragmentCount,

@@ -196,3 +196,73 @@ fn dithered_gouraud_on_one_bit_display() {
         .count();
     assert!(lit > dark, "{lit} vs {dark}");
 }
+
+/// Smooth shading into a colour of channels (RGB565, BGR565) rounds each channel once,
+/// straight to the colour's depth: every channel is a rounding of a value the 24-bit image of
+/// the same frame allows (its 8-bit channel, give or take half a step, and the vertex
+/// channels' scaling to the depth, within 1.5/64 of a step), the channels land in their places
+/// in both layouts, and some pixels differ from converting the 24-bit image (which rounds
+/// twice), none by more than one step.
+#[test]
+fn gouraud_into_rgb565_rounds_each_channel_once() {
+    let (mut p, mut n, mut t) = (
+        vec![Vec3::ZERO; 1000],
+        vec![Vec3::ZERO; 1000],
+        vec![[0u16; 3]; 2000],
+    );
+    let sphere = uv_sphere(Scalar::from_num(1.6), 32, 16, &mut p, &mut n, &mut t).unwrap();
+    let objects = [Object::new(
+        &sphere,
+        Transform::new().matrix(),
+        Rgb888::new(255, 200, 120),
+    )];
+    let scene = Scene::new(&objects, lighting());
+    let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
+    let (w, h) = (128u32, 96u32);
+    let prepared = frame(w, h).prepare(&scene, &mut cache, Gouraud).unwrap();
+    fn render<C: fixed3d::buffer::TargetColor>(
+        prepared: &fixed3d::pipeline::Prepared<'_, '_, 1, Gouraud>,
+        background: C,
+        (w, h): (u32, u32),
+    ) -> Vec<C> {
+        let cells = (w * h) as usize;
+        let (mut c, mut d) = (vec![background; cells], vec![0u16; cells]);
+        let mut color = FrameBuffer::new(&mut c, w, h).unwrap();
+        let mut depth = DepthBuffer::new(&mut d, w, h).unwrap();
+        depth.clear();
+        prepared
+            .draw(&mut ColorDepth::new(&mut color, &mut depth).unwrap())
+            .unwrap();
+        c
+    }
+    use embedded_graphics::pixelcolor::Bgr565;
+    let wide = render(&prepared, Rgb888::new(0, 0, 1), (w, h));
+    let rgb = render(&prepared, Rgb565::new(0, 0, 1), (w, h));
+    let bgr = render(&prepared, Bgr565::new(0, 0, 1), (w, h));
+    let (mut covered, mut differ) = (0, 0);
+    for ((&c8, &c), &b) in wide.iter().zip(&rgb).zip(&bgr) {
+        if c8 == Rgb888::new(0, 0, 1) {
+            continue;
+        }
+        covered += 1;
+        assert_eq!([c.r(), c.g(), c.b()], [b.r(), b.g(), b.b()]);
+        let allowed = |v: u8, max: u8, got: u8| {
+            let scaling = 1.5 / 64.0;
+            let lo = ((v as f64 - 0.5) * max as f64 / 255.0 - scaling + 0.5).floor();
+            let hi = ((v as f64 + 0.5) * max as f64 / 255.0 + scaling + 0.5).floor();
+            (lo..=hi).contains(&(got as f64))
+        };
+        assert!(allowed(c8.r(), 31, c.r()), "{c8:?} {c:?}");
+        assert!(allowed(c8.g(), 63, c.g()), "{c8:?} {c:?}");
+        assert!(allowed(c8.b(), 31, c.b()), "{c8:?} {c:?}");
+        let twice = Rgb565::from(c8);
+        let steps = [
+            c.r().abs_diff(twice.r()),
+            c.g().abs_diff(twice.g()),
+            c.b().abs_diff(twice.b()),
+        ];
+        assert!(steps.iter().all(|&s| s <= 1), "{c8:?} {c:?}");
+        differ += usize::from(steps.iter().any(|&s| s != 0));
+    }
+    assert!(covered > 3000 && differ > 0, "{covered} {differ}");
+}

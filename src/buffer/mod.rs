@@ -7,8 +7,9 @@
 //! - [`ColorDepth`] pairs the two for z-buffered filling, over a whole frame or one horizontal
 //!   band of it; [`Direct`] fills any `DrawTarget` with no depth buffer at all, one
 //!   `fill_solid` per span.
-//! - [`Nearest`] and [`OrderedDither`] turn the shaded 24-bit colour into the target's colour;
-//!   the dither keeps shading visible on 1-bit and grey displays.
+//! - [`Nearest`] and [`OrderedDither`] turn the shaded 24-bit colour into the target's colour
+//!   (a [`TargetColor`]); the dither keeps shading visible on 1-bit and grey displays. Smooth
+//!   shading into a colour of channels (RGB565 and the like) is rounded straight to its depth.
 
 mod depth;
 mod dither;
@@ -19,7 +20,7 @@ mod surface;
 pub use depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LessOrEqual, Uncounted,
 };
-pub use dither::{Nearest, OrderedDither, Quantize};
+pub use dither::{Nearest, OrderedDither, Quantize, TargetColor};
 pub use framebuffer::FrameBuffer;
 pub(crate) use grid::fill;
 pub use grid::BufferError;

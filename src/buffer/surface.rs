@@ -2,14 +2,14 @@
 
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{Point, Size};
-use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
+use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
 use embedded_graphics::primitives::Rectangle;
 
 use super::depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
     Uncounted,
 };
-use super::dither::{Nearest, OrderedDither, Quantize};
+use super::dither::{Nearest, OrderedDither, Quantize, TargetColor};
 use super::framebuffer::FrameBuffer;
 use super::grid::BufferError;
 use crate::math::SUBPIXEL_SCALE;
@@ -63,6 +63,11 @@ pub trait RasterTarget {
     type Error;
     /// The frame pixels this target receives (frame coordinates).
     fn clip(&self) -> PixelRect;
+    /// The channel depths (red, green, blue) smooth shading hands this target its colours in:
+    /// those of the colour type where the quantiser takes channels
+    /// ([`Quantize::CHANNELS`]), 8 bits otherwise.
+    #[doc(hidden)]
+    const CHANNELS: [u8; 3] = [255; 3];
     /// Fills one triangle (per-triangle set-up happens here once, not per row).
     #[doc(hidden)]
     fn fill_triangle<P: Paint>(
@@ -102,7 +107,7 @@ pub struct ColorDepth<'t, 'a, C, D, Q = Nearest, T = Less, K = Counted> {
     count: K,
 }
 
-impl<'t, 'a, C: PixelColor + From<Rgb888>, D: DepthFormat> ColorDepth<'t, 'a, C, D, Nearest> {
+impl<'t, 'a, C: TargetColor, D: DepthFormat> ColorDepth<'t, 'a, C, D, Nearest> {
     /// The whole frame: both buffers must have the same size.
     pub fn new(
         color: &'t mut FrameBuffer<'a, C>,
@@ -299,7 +304,7 @@ where
 
 impl<C, D, Q, T, K> ColorDepth<'_, '_, C, D, Q, T, K>
 where
-    C: PixelColor + From<Rgb888>,
+    C: TargetColor,
     D: DepthFormat,
     Q: Quantize<C>,
     T: DepthTest,
@@ -419,7 +424,7 @@ impl LineDepth {
 
 impl<C, D, Q, T, K> RasterTarget for ColorDepth<'_, '_, C, D, Q, T, K>
 where
-    C: PixelColor + From<Rgb888>,
+    C: TargetColor,
     D: DepthFormat,
     Q: Quantize<C>,
     T: DepthTest,
@@ -430,6 +435,11 @@ where
     fn clip(&self) -> PixelRect {
         self.clip
     }
+
+    const CHANNELS: [u8; 3] = match Q::CHANNELS {
+        Some(channels) => channels,
+        None => [255; 3],
+    };
 
     #[inline]
     fn fill_triangle<P: Paint>(
@@ -443,6 +453,17 @@ where
                 // One conversion per triangle.
                 let c = self.quantize.quantize(rgb, 0, 0);
                 self.depth_tested_spans(triangle, stats, |_| move || c);
+            }
+            _ if P::SCALED && Q::CHANNELS.is_some() => {
+                // Channels in the colour's own depths (see `CHANNELS`).
+                let q = self.quantize;
+                self.depth_tested_spans(triangle, stats, |span| {
+                    let mut cursor = paint.cursor(span);
+                    move || {
+                        let c = cursor.next().unwrap_or_default();
+                        q.channels(c.r(), c.g(), c.b())
+                    }
+                });
             }
             _ => {
                 let q = self.quantize;

@@ -3,7 +3,7 @@
 use core::cell::Cell;
 
 use embedded_graphics::draw_target::DrawTarget;
-use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
+use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::Pixel;
 
 use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
@@ -11,6 +11,7 @@ use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::buffer::{
     ColorDepth, DepthFormat, DepthTest, FragmentCount, Quantize, RasterTarget, ScreenTriangle,
+    TargetColor,
 };
 use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
 use crate::mesh::{FaceNormal, Object, Triangle};
@@ -603,6 +604,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             },
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
+            channels: T::CHANNELS,
         };
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
@@ -780,7 +782,7 @@ where
 
 impl<C, D, Q, T, K> LineSink for ColorDepth<'_, '_, C, D, Q, T, K>
 where
-    C: PixelColor + From<Rgb888>,
+    C: TargetColor,
     D: DepthFormat,
     Q: Quantize<C>,
     T: DepthTest,

@@ -262,10 +262,10 @@ impl AreaWalks {
         AreaWalks { area, short }
     }
 
-    /// The walk of the plane through `(p[i], v[i] · 2^shift)` (each of those in [0, 2³⁰]) with
-    /// `bias` added; `None` where its steps do not fit 32 bits (a triangle nearly edge-on).
-    /// Shifting the values rather than the numerators keeps those short (colour channels are
-    /// whole numbers below 2⁸, shifted by 22).
+    /// The walk of the plane through `(p[i], v[i] · 2^shift)` (each of those in [0, 2³⁰]; the
+    /// `v[i]` below 2¹⁴ where `shift` is 16 or more) with `bias` added; `None` where its steps
+    /// do not fit 32 bits (a triangle nearly edge-on). Shifting the values rather than the
+    /// numerators keeps those short (colour channels, with 6 fraction bits, are shifted by 16).
     #[inline(always)]
     pub(crate) fn walk(
         &self,
@@ -305,7 +305,7 @@ impl AreaWalks {
     ) -> WordPlane {
         match self.walk(p, v, shift, bias) {
             Some(walk) => walk,
-            None => WordPlane::wrapping(p, v.map(|v| v << shift), bias, self.area),
+            None => WordPlane::wrapping(p, v, shift, bias, self.area),
         }
     }
 }
@@ -317,19 +317,30 @@ impl WordPlane {
     /// triangles [`AreaWalks::walk`] declines.
     #[cold]
     #[inline(never)]
-    pub(crate) fn wrapping(p: &[ScreenPoint; 3], v: [i32; 3], bias: i32, area: i64) -> WordPlane {
+    pub(crate) fn wrapping(
+        p: &[ScreenPoint; 3],
+        v: [i32; 3],
+        shift: u32,
+        bias: i32,
+        area: i64,
+    ) -> WordPlane {
         let (nx, ny) = Plane::numerators(p, v);
         let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
-        // |n| < 2⁴⁸: the shifted numerators, the quotients and their products with the
-        // offsets (within ±2⁴) stay far inside i64.
+        // |n · 2^shift| < 2⁴⁸: the shifted numerators, the quotients and their products with
+        // the offsets (within ±2⁴) stay far inside i64.
         let by = DivideBy::new(den);
-        let (sx, sy) = (by.round_shifted(nx, 5), by.round_shifted(ny, 5));
+        let (sx, sy) = (
+            by.round_shifted(nx << shift, 5),
+            by.round_shifted(ny << shift, 5),
+        );
         let reference = Reference::of(p[0]);
         let offset = sx
             .wrapping_mul(reference.dx as i64)
             .wrapping_add(sy.wrapping_mul(reference.dy as i64));
         let offset = offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS;
-        let at_ref = (v[0] as i64 * 2 + bias as i64).wrapping_add(offset);
+        let at_ref = ((v[0] as i64) << (shift + 1))
+            .wrapping_add(bias as i64)
+            .wrapping_add(offset);
         reference.plane(at_ref as i32, sx as i32, sy as i32)
     }
 

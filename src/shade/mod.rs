@@ -68,9 +68,12 @@ pub struct FaceInputs<'a> {
     pub(crate) inverse_w_offset: Option<i64>,
     /// Doubled signed screen area.
     pub(crate) area2: i64,
+    /// The channel depths smooth shading hands the target
+    /// ([`RasterTarget::CHANNELS`](crate::buffer::RasterTarget::CHANNELS)).
+    pub(crate) channels: [u8; 3],
 }
 
-impl FaceInputs<'_> {
+impl<'a> FaceInputs<'a> {
     /// Model-space positions of the three vertices (raw Q16.16). `Mesh::new` checked every
     /// index against the positions; here one test of the largest bounds the three reads (the
     /// compiler drops their own tests).
@@ -106,6 +109,14 @@ impl FaceInputs<'_> {
 
     fn vertex_rgb(&self) -> [[i32; 3]; 3] {
         *self.colors
+    }
+
+    /// The same face for a paint whose colours stay in 8 bits.
+    fn in_8_bits(&self) -> FaceInputs<'a> {
+        FaceInputs {
+            channels: [255; 3],
+            ..*self
+        }
     }
 }
 
@@ -247,7 +258,8 @@ impl<'t, L: Shading> Shading for Textured<'t, L> {
     const KEPT_FACE_NORMALS: bool = L::KEPT_FACE_NORMALS;
     const TEXTURED: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> Self::Paint {
-        let light = self.light.paint(face, lighting);
+        // The light modulates 8-bit texels: in 8 bits whatever the target's depths.
+        let light = self.light.paint(&face.in_8_bits(), lighting);
         let q = Self::weights(face);
         TexturePaint::new(self.texture, &face.screen(), face.uvs, q, face.area2, light)
     }
@@ -256,7 +268,7 @@ impl<'t, L: Shading> Shading for Textured<'t, L> {
         face: &FaceInputs<'_>,
         lighting: &Lighting<N>,
     ) -> Self::Fallback {
-        let light = self.light.fallback(face, lighting);
+        let light = self.light.fallback(&face.in_8_bits(), lighting);
         let q = Self::weights(face);
         TexturePaint::new(self.texture, &face.screen(), face.uvs, q, face.area2, light)
     }
@@ -314,7 +326,7 @@ impl Shading for Gouraud {
     }
     const PER_VERTEX: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> SmoothPaint {
-        SmoothPaint::new(&face.screen(), face.vertex_rgb(), face.area2)
+        SmoothPaint::new(&face.screen(), face.vertex_rgb(), face.area2, face.channels)
     }
 }
 

@@ -11,6 +11,10 @@ use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 pub trait Paint: core::fmt::Debug {
     /// The running colour along one span.
     type Cursor: Iterator<Item = Rgb888>;
+    /// True when the colours come in the target's channel depths
+    /// ([`RasterTarget::CHANNELS`](crate::buffer::RasterTarget::CHANNELS)) rather than in 8
+    /// bits.
+    const SCALED: bool = false;
     /// `Some` when the colour is the same at every pixel (spans can then be filled at once).
     fn solid(&self) -> Option<Rgb888>;
     /// The colours of `span`'s pixels, left to right.
@@ -43,39 +47,74 @@ fn channel_ranges(channel: impl Fn(usize) -> [i64; 3]) -> ([i64; 3], [i64; 3]) {
     (lo, hi)
 }
 
-/// A whole channel value `c` (0..=255) as a [`WordPlane`] takes it: `c · 2²²`, which the walk
-/// doubles, so that a channel is its bits 23 to 30.
-const CHANNEL_SHIFT: u32 = 22;
+/// A channel value as a [`WordPlane`] takes it: in the channel's depth with 6 fraction bits
+/// (below 2¹⁴), shifted by 16, which the walk doubles, so that a channel is its bits 23 to 30.
+const CHANNEL_SHIFT: u32 = 16;
 /// Half a channel step in the walk's unit: added once, truncation then rounds to nearest.
-const HALF_CHANNEL: i32 = 1 << CHANNEL_SHIFT;
+const HALF_CHANNEL: i32 = 1 << 22;
+
+/// The 8-bit channel `c` (0..=255) in a channel whose largest value is `max`, with 6 fraction
+/// bits: `c · max / 255` to within 2⁻⁶ of a step (by a product and a shift: a division would be
+/// a library call on Cortex-M0), exact at 0 and `max`, moved down 2⁻⁶ of a step where it would
+/// lie halfway between two steps (so that no vertex value is a tie, see [`SmoothPaint`]). For
+/// `max` 255, `c` itself.
+#[inline(always)]
+fn in_depth(c: i32, max: u8) -> i32 {
+    // max · 2²² / 255 rounded: at most 2²², and times c below 2³¹.
+    let scale = (max as i32 * (1 << 22) + 127) / 255;
+    let v = (c * scale + (1 << 15)) >> 16;
+    if v & 63 == 32 {
+        v - 1
+    } else {
+        v
+    }
+}
 
 /// Vertex colours interpolated across the triangle in 32-bit words (each channel a plane walked
-/// by steps rounded once, as depth is), each channel rounded to nearest.
+/// by steps rounded once, as depth is), each channel rounded to nearest in the target's own
+/// channel depth (one rounding: an RGB565 target's channels are not rounded to 8 bits first).
 ///
-/// The vertex channels are whole numbers (clipped vertices' rounded so), and a walk
-/// errs from the exact plane by less than 2⁻¹⁰ of a channel step, so a pixel's rounded
-/// channel lies between the smallest and the largest vertex value: every pixel is a convex
-/// combination of the vertex colours (rule R8) with no clamp in the pixel loop.
+/// The vertex channels lie on a grid of 2⁻⁶ of a step with no value halfway between two steps
+/// (whole 8-bit channels, clipped vertices' rounded so, scaled to the depth), and a walk errs
+/// from the exact plane by less than 2⁻¹¹ of a step, so a pixel's rounded channel lies between
+/// the rounded smallest and largest vertex values: every pixel is a convex combination of the
+/// vertex colours (rule R8) with no clamp in the pixel loop.
 #[derive(Clone, Copy, Debug)]
 pub struct SmoothPaint {
     channels: [WordPlane; 3],
 }
 
 impl SmoothPaint {
-    /// From vertex colours (whole channels, 0..=255) at snapped screen positions.
-    pub(crate) fn new(p: &[ScreenPoint; 3], rgb: [[i32; 3]; 3], area2: i64) -> Self {
-        let [a, b, c] = rgb;
-        let values = [[a[0], b[0], c[0]], [a[1], b[1], c[1]], [a[2], b[2], c[2]]];
+    /// From vertex colours (whole 8-bit channels, 0..=255) at snapped screen positions, in
+    /// channels whose largest values are `depths` (red, green, blue).
+    pub(crate) fn new(
+        p: &[ScreenPoint; 3],
+        rgb: [[i32; 3]; 3],
+        area2: i64,
+        depths: [u8; 3],
+    ) -> Self {
         let by_area = AreaWalks::new(area2);
-        let [r, g, b] = values;
+        let [a, b, c] = rgb;
+        let [dr, dg, db] = depths;
         SmoothPaint {
             channels: [
-                by_area.walk_any(p, r, CHANNEL_SHIFT, HALF_CHANNEL),
-                by_area.walk_any(p, g, CHANNEL_SHIFT, HALF_CHANNEL),
-                by_area.walk_any(p, b, CHANNEL_SHIFT, HALF_CHANNEL),
+                channel_walk(&by_area, p, [a[0], b[0], c[0]], dr),
+                channel_walk(&by_area, p, [a[1], b[1], c[1]], dg),
+                channel_walk(&by_area, p, [a[2], b[2], c[2]], db),
             ],
         }
     }
+}
+
+/// One channel's walk, its vertex values `c` in a channel whose largest value is `max`.
+#[inline(always)]
+fn channel_walk(by_area: &AreaWalks, p: &[ScreenPoint; 3], c: [i32; 3], max: u8) -> WordPlane {
+    let v = [
+        in_depth(c[0], max),
+        in_depth(c[1], max),
+        in_depth(c[2], max),
+    ];
+    by_area.walk_any(p, v, CHANNEL_SHIFT, HALF_CHANNEL)
 }
 
 /// The running colour of a [`SmoothPaint`] along a span.
@@ -88,10 +127,10 @@ pub struct SmoothCursor {
 impl Iterator for SmoothCursor {
     type Item = Rgb888;
     /// Each channel is bits 23 to 30 of its walk's value, which lies in [0, 2³¹) (see
-    /// [`SmoothPaint`]).
+    /// [`SmoothPaint`]): at most the channel's largest value.
     #[inline(always)]
     fn next(&mut self) -> Option<Rgb888> {
-        let ch = |k: usize| (self.acc[k] >> (CHANNEL_SHIFT + 1)) as u8;
+        let ch = |k: usize| (self.acc[k] >> 23) as u8;
         let c = Rgb888::new(ch(0), ch(1), ch(2));
         let [a0, a1, a2] = self.acc;
         let [s0, s1, s2] = self.step;
@@ -106,6 +145,7 @@ impl Iterator for SmoothCursor {
 
 impl Paint for SmoothPaint {
     type Cursor = SmoothCursor;
+    const SCALED: bool = true;
     fn solid(&self) -> Option<Rgb888> {
         None
     }
@@ -217,27 +257,28 @@ impl Paint for PerspectivePaint {
 mod tests {
     use super::*;
 
-    /// The exact channel at pixel `(x, y)` of the plane through `(p[i], c[i])` (whole
-    /// channels), as `num / den` with `den > 0`.
-    fn exact(p: &[ScreenPoint; 3], c: [i32; 3], area: i64, (x, y): (i32, i32)) -> (i128, i128) {
-        let (nx, ny) = Plane::numerators(p, c);
+    /// The exact value at pixel `(x, y)` of the plane through `(p[i], v[i])`, as `num / den`
+    /// with `den > 0`.
+    fn exact(p: &[ScreenPoint; 3], v: [i32; 3], area: i64, (x, y): (i32, i32)) -> (i128, i128) {
+        let (nx, ny) = Plane::numerators(p, v);
         let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
         let (dx, dy) = (16 * x + 8 - p[0].x, 16 * y + 8 - p[0].y);
         let den = den as i128;
-        let num = c[0] as i128 * den + nx as i128 * dx as i128 + ny as i128 * dy as i128;
+        let num = v[0] as i128 * den + nx as i128 * dx as i128 + ny as i128 * dy as i128;
         (num, den)
     }
 
     /// Checks every pixel of `p`'s spans (at most `per_span` of each) against the exact planes
-    /// of the whole vertex channels `rgb`: each channel is the exact value rounded to nearest
-    /// (unless that lies within 2⁻¹⁰ of a rounding boundary) and always between the smallest
-    /// and the largest vertex value (R8). Returns the pixels checked.
-    fn check_spans(p: [ScreenPoint; 3], rgb: [[i32; 3]; 3], per_span: i32) -> u64 {
+    /// of the vertex channels `rgb` (whole 8-bit values) in channels of `depths`: each channel
+    /// is the exact value rounded to nearest (unless that lies within 2⁻¹⁰ of a rounding
+    /// boundary) and always between the smallest and the largest vertex value rounded (R8).
+    /// Returns the pixels checked.
+    fn check_spans(p: [ScreenPoint; 3], rgb: [[i32; 3]; 3], depths: [u8; 3], per_span: i32) -> u64 {
         let area = crate::raster::doubled_area(p[0], p[1], p[2]);
         if area == 0 {
             return 0;
         }
-        let paint = SmoothPaint::new(&p, rgb, area);
+        let paint = SmoothPaint::new(&p, rgb, area, depths);
         let clip = crate::raster::PixelRect::new(0, 0, 4096, 4096);
         let mut pixels = 0;
         for span in crate::raster::triangle_spans(p, clip) {
@@ -245,18 +286,22 @@ mod tests {
             for x in span.x0..span.x1.min(span.x0 + per_span) {
                 let c = cursor.next().unwrap_or_default();
                 for (k, got) in [c.r(), c.g(), c.b()].into_iter().enumerate() {
-                    let v = rgb.map(|v| v[k]);
+                    // The vertex values in the channel's depth, 6 fraction bits.
+                    let v = rgb.map(|v| in_depth(v[k], depths[k]));
                     let (num, den) = exact(&p, v, area, (x, span.y));
-                    let lo = *v.iter().min().unwrap_or(&0);
-                    let hi = *v.iter().max().unwrap_or(&0);
+                    let round = |v: i32| (v + 32) >> 6;
+                    let lo = round(*v.iter().min().unwrap_or(&0));
+                    let hi = round(*v.iter().max().unwrap_or(&0));
                     let at = (x, span.y);
                     assert!((lo..=hi).contains(&(got as i32)), "{p:?} {rgb:?} {at:?}");
-                    // Twice the value plus one, over twice den: its floor is the rounding.
-                    let twice = 2 * num + den;
-                    let near_boundary = (twice.rem_euclid(2 * den) * 1024) < 2 * den
-                        || ((2 * den - twice.rem_euclid(2 * den)) * 1024) < 2 * den;
+                    assert!(got <= depths[k], "{p:?} {rgb:?} {at:?}");
+                    // The value plus a half, over 64 den: its floor is the rounding.
+                    let (top, bottom) = (num + 32 * den, 64 * den);
+                    let fraction = top.rem_euclid(bottom);
+                    let near_boundary =
+                        fraction * 1024 < bottom || (bottom - fraction) * 1024 < bottom;
                     if !near_boundary {
-                        let rounded = twice.div_euclid(2 * den);
+                        let rounded = top.div_euclid(bottom);
                         assert_eq!(got as i128, rounded, "{p:?} {rgb:?} {at:?}");
                     }
                 }
@@ -264,6 +309,25 @@ mod tests {
             }
         }
         pixels
+    }
+
+    /// Scaled vertex values: `c · max / 255` within 2⁻⁶ of a step (6 fraction bits), none halfway
+    /// between two steps, 8-bit channels unchanged, and the extremes kept.
+    #[test]
+    fn channels_scale_to_their_depths() {
+        for max in [1u8, 3, 31, 63, 255] {
+            assert_eq!(in_depth(0, max), 0);
+            assert_eq!(in_depth(255, max), max as i32 * 64);
+            for c in 0..=255 {
+                let v = in_depth(c, max);
+                let exact = c as f64 * max as f64 / 255.0 * 64.0;
+                assert!((v as f64 - exact).abs() <= 1.5, "{c} {max}");
+                assert_ne!(v & 63, 32, "{c} {max}");
+                if max == 255 {
+                    assert_eq!(v, c * 64);
+                }
+            }
+        }
     }
 
     /// T36 and R8: colour ramps along spans up to 2048 pixels long are the exact planes
@@ -277,7 +341,9 @@ mod tests {
                 ScreenPoint::new(width * 16, 3),
                 ScreenPoint::new(5, 40 * 16),
             ];
-            assert!(check_spans(p, rgb, width) > width as u64);
+            for depths in [[255; 3], [31, 63, 31]] {
+                assert!(check_spans(p, rgb, depths, width) > width as u64);
+            }
         }
     }
 
@@ -299,10 +365,11 @@ mod tests {
             }
             let rgb = [(); 3].map(|_| [(); 3].map(|_| (rng.next_u64() % 256) as i32));
             let area = crate::raster::doubled_area(p[0], p[1], p[2]) as i128;
-            let covered = check_spans(p, rgb, 48);
+            let depths = rng.pick(&[[255; 3], [31, 63, 31], [63, 63, 63], [1, 3, 15]]);
+            let covered = check_spans(p, rgb, depths, 48);
             // Steps of 2⁵·n / area in the walk's unit (2²² per channel step).
             let steep = (0..3).any(|k| {
-                let (nx, ny) = Plane::numerators(&p, rgb.map(|c| c[k] << CHANNEL_SHIFT));
+                let (nx, ny) = Plane::numerators(&p, rgb.map(|c| c[k] << 22));
                 let big = |n: i64| area != 0 && (32 * n as i128 / area).abs() > i32::MAX as i128;
                 big(nx) || big(ny)
             });
