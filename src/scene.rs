@@ -461,6 +461,11 @@ impl<const N: usize> Lighting<N> {
         self.lights.iter().take(N)
     }
 
+    /// How many directional lights there are (at most `N`).
+    pub(crate) fn directional_count(&self) -> usize {
+        self.lights.len().min(N)
+    }
+
     /// The point lights, at most `N` (none without the `point-light` feature: then no code
     /// that lights by them is linked).
     pub(crate) fn points(&self) -> impl Iterator<Item = &PreparedPoint> + Clone {

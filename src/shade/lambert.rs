@@ -65,29 +65,51 @@ fn lambert_sums<const N: usize>(
     lighting: &Lighting<N>,
     cosines: &[i32; N],
 ) -> Rgb888 {
-    let colors = lighting.lights().map(|l| &l.color);
-    let terms = colors
-        .chain(lighting.points().map(|p| &p.color))
-        .zip(cosines);
-    // The channels' sums held apart (not as an array), so that they stay in registers.
+    // The directional lights' cosines come first, then the point lights'.
+    let directional = lighting.lights().map(|l| &l.color);
+    let (first, rest) = cosines
+        .split_at_checked(lighting.directional_count())
+        .unwrap_or((cosines, &[]));
+    let points = lighting.points().map(|p| &p.color);
+    // The channels' sums held apart (not as an array), and the two kinds of light in loops of
+    // their own, so that the sums stay in registers.
     let [r, g, b] = if lighting.channels_in_words() {
         // Each term below 2¹⁷, the ambient at most 2¹⁶: the sums fit words.
-        let term = |c: i32, d: i32| term_in_words(c as u32, d as u32) as i32;
-        let [mut r, mut g, mut b] = lighting.ambient().bits();
-        for (&[cr, cg, cb], &d) in terms {
-            r = r.wrapping_add(term(cr, d));
-            g = g.wrapping_add(term(cg, d));
-            b = b.wrapping_add(term(cb, d));
+        let add = |[r, g, b]: [i32; 3], &[cr, cg, cb]: &[i32; 3], d: i32| {
+            let term = |c: i32| term_in_words(c as u32, d as u32) as i32;
+            [
+                r.wrapping_add(term(cr)),
+                g.wrapping_add(term(cg)),
+                b.wrapping_add(term(cb)),
+            ]
+        };
+        let mut sums = lighting.ambient().bits();
+        for (color, &d) in directional.zip(first) {
+            sums = add(sums, color, d);
         }
-        [r, g, b].map(|s| s.clamp(0, 1 << 16))
+        for (color, &d) in points.zip(rest) {
+            sums = add(sums, color, d);
+        }
+        let [r, g, b] = sums;
+        let unit = |s: i32| s.clamp(0, 1 << 16);
+        [unit(r), unit(g), unit(b)]
     } else {
-        let [mut r, mut g, mut b] = lighting.ambient().channels();
-        for (&[cr, cg, cb], &d) in terms {
-            r = r.wrapping_add(term(cr.into(), d));
-            g = g.wrapping_add(term(cg.into(), d));
-            b = b.wrapping_add(term(cb.into(), d));
+        let add = |[r, g, b]: [i64; 3], &[cr, cg, cb]: &[i32; 3], d: i32| {
+            [
+                r.wrapping_add(term(cr.into(), d)),
+                g.wrapping_add(term(cg.into(), d)),
+                b.wrapping_add(term(cb.into(), d)),
+            ]
+        };
+        let mut sums = lighting.ambient().channels();
+        for (color, &d) in directional.zip(first) {
+            sums = add(sums, color, d);
         }
-        [r, g, b].map(intensity)
+        for (color, &d) in points.zip(rest) {
+            sums = add(sums, color, d);
+        }
+        let [r, g, b] = sums;
+        [intensity(r), intensity(g), intensity(b)]
     };
     Rgb888::new(lit(base.r(), r), lit(base.g(), g), lit(base.b(), b))
 }
