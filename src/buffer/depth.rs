@@ -295,7 +295,7 @@ impl<W: LoopWord> RoundedRows<W> {
     /// doubled signed area, non-zero; coordinates within the pipeline's range) on row `y`,
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
     /// nearly edge-on, which the general loop takes).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
         let walk = AreaWalks::new(area).walk(p, z, 0, LOOP_HALF_STEP)?;
         let rows = RoundedRows {

@@ -4,9 +4,7 @@
 use core::num::NonZeroU64;
 
 use super::{first_centre_from32, ScreenPoint};
-use crate::math::{
-    mul_short, mul_wide, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE,
-};
+use crate::math::{mul_wide, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels, through the first
 /// vertex `(x0, y0, v0)`, kept as its value at the centre of pixel (0, 0): the value at pixel
@@ -284,9 +282,7 @@ impl AreaWalks {
         };
         let (sx, sy) = word_steps(nx, ny, shift, self.area, self.short.as_ref())?;
         let reference = Reference::of(p[0]);
-        // Within ±2³⁶: the offset in sixteenths of the unit, rounded to the unit.
-        let offset = mul_short(sx, reference.dx).wrapping_add(mul_short(sy, reference.dy));
-        let offset = (offset.wrapping_add(SUBPIXEL_SCALE as i64 / 2) >> SUBPIXEL_BITS) as i32;
+        let offset = reference.offset(sx, sy);
         let at_ref = (v[0] << shift)
             .wrapping_mul(2)
             .wrapping_add(bias)
@@ -372,6 +368,23 @@ impl Reference {
             dx: x.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.x,
             dy: y.wrapping_mul(SUBPIXEL_SCALE) + SUBPIXEL_SCALE / 2 - a.y,
         }
+    }
+
+    /// `⌊(sx·dx + sy·dy + 8) / 16⌋` modulo 2³²: the change of a walk with steps `sx`, `sy` from
+    /// the vertex to this pixel's centre, rounded to the walk's unit. In words: with `s = 16q +
+    /// r` (`0 ≤ r < 16`) for each step, the sum is `16·(qx·dx + qy·dy) + (rx·dx + ry·dy)`, whose
+    /// first part divides exactly (and is wanted modulo 2³² only) and whose second lies within
+    /// ±2⁹.
+    #[inline(always)]
+    fn offset(&self, sx: i32, sy: i32) -> i32 {
+        let half = SUBPIXEL_SCALE / 2;
+        let (qx, rx) = (sx >> SUBPIXEL_BITS, sx & (SUBPIXEL_SCALE - 1));
+        let (qy, ry) = (sy >> SUBPIXEL_BITS, sy & (SUBPIXEL_SCALE - 1));
+        let whole = qx
+            .wrapping_mul(self.dx)
+            .wrapping_add(qy.wrapping_mul(self.dy));
+        let part = (rx * self.dx + ry * self.dy + half) >> SUBPIXEL_BITS;
+        whole.wrapping_add(part)
     }
 
     /// The walk with value `at_ref` here and steps `sx`, `sy`, as its value at pixel (0, 0).
@@ -532,6 +545,39 @@ mod tests {
             );
         }
         assert_eq!(steps_over_area(5, 5, 0), None);
+    }
+
+    /// The offset in words is the wide one modulo 2³², for steps across i32 and every offset
+    /// within a pixel.
+    #[test]
+    fn reference_offset_in_words_is_the_wide_one() {
+        let mut rng = crate::testing::XorShift(0xA54F_F53A_5F1D_36F1u64);
+        let steps = [
+            0,
+            1,
+            -1,
+            15,
+            -16,
+            i32::MAX,
+            i32::MIN,
+            i32::MAX - 7,
+            i32::MIN + 9,
+        ];
+        for k in 0..200_000usize {
+            let pick = |j: usize, r: u64| match steps.get((k + j) % 40) {
+                Some(&s) => s,
+                None => r as i32,
+            };
+            let (sx, sy) = (pick(0, rng.next_u64()), pick(3, rng.next_u64()));
+            let vertex = ScreenPoint::new(rng.within(1 << 14), rng.within(1 << 14));
+            let reference = Reference::of(vertex);
+            let wide = (sx as i64 * reference.dx as i64 + sy as i64 * reference.dy as i64 + 8) >> 4;
+            assert_eq!(
+                reference.offset(sx, sy),
+                wide as i32,
+                "{sx} {sy} {vertex:?}"
+            );
+        }
     }
 
     /// Values below 2¹⁴ give the same numerators in words, at the corners of the range and at
