@@ -9,7 +9,7 @@ use embedded_graphics::primitives::Rectangle;
 use fixed3d::buffer::{ColorDepth, DepthBuffer, Direct, FrameBuffer};
 use fixed3d::camera::LookAt;
 use fixed3d::math::{Angle, Scalar, Vec3};
-use fixed3d::mesh::{uv_sphere, Object, Transform, CUBE};
+use fixed3d::mesh::{uv_sphere, Mesh, Object, Transform, CUBE};
 use fixed3d::pipeline::{Frame, ScreenVertex};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::scene::{DirectionalLight, LightColor, Lighting, Scene};
@@ -88,6 +88,28 @@ fn lighting() -> Lighting<1> {
     l
 }
 
+/// Storage for a UV sphere of radius 1.6 (32 x 16).
+struct Sphere {
+    p: Vec<Vec3>,
+    n: Vec<Vec3>,
+    t: Vec<[u16; 3]>,
+}
+
+impl Sphere {
+    fn new() -> Self {
+        Sphere {
+            p: vec![Vec3::ZERO; 1000],
+            n: vec![Vec3::ZERO; 1000],
+            t: vec![[0u16; 3]; 2000],
+        }
+    }
+
+    fn mesh(&mut self) -> Mesh<'_> {
+        let (p, n, t) = (&mut self.p, &mut self.n, &mut self.t);
+        uv_sphere(Scalar::from_num(1.6), 32, 16, p, n, t).unwrap()
+    }
+}
+
 /// Depth-less flat filling sends each span as one `fill_solid`, never pixel by pixel.
 #[test]
 fn direct_flat_fill_is_one_fill_solid_per_span() {
@@ -135,17 +157,9 @@ fn present_is_one_fill_contiguous() {
 /// regions).
 #[test]
 fn dithered_gouraud_on_one_bit_display() {
-    let (mut p, mut n, mut t) = (
-        vec![Vec3::ZERO; 1000],
-        vec![Vec3::ZERO; 1000],
-        vec![[0u16; 3]; 2000],
-    );
-    let sphere = uv_sphere(Scalar::from_num(1.6), 32, 16, &mut p, &mut n, &mut t).unwrap();
-    let objects = [Object::new(
-        &sphere,
-        Transform::new().matrix(),
-        Rgb888::WHITE,
-    )];
+    let mut sphere = Sphere::new();
+    let mesh = sphere.mesh();
+    let objects = [Object::new(&mesh, Transform::new().matrix(), Rgb888::WHITE)];
     let scene = Scene::new(&objects, lighting());
     let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
     let prepared = frame(128, 64).prepare(&scene, &mut cache, Gouraud).unwrap();
@@ -205,17 +219,10 @@ fn dithered_gouraud_on_one_bit_display() {
 /// twice), none by more than one step.
 #[test]
 fn gouraud_into_rgb565_rounds_each_channel_once() {
-    let (mut p, mut n, mut t) = (
-        vec![Vec3::ZERO; 1000],
-        vec![Vec3::ZERO; 1000],
-        vec![[0u16; 3]; 2000],
-    );
-    let sphere = uv_sphere(Scalar::from_num(1.6), 32, 16, &mut p, &mut n, &mut t).unwrap();
-    let objects = [Object::new(
-        &sphere,
-        Transform::new().matrix(),
-        Rgb888::new(255, 200, 120),
-    )];
+    let mut sphere = Sphere::new();
+    let mesh = sphere.mesh();
+    let color = Rgb888::new(255, 200, 120);
+    let objects = [Object::new(&mesh, Transform::new().matrix(), color)];
     let scene = Scene::new(&objects, lighting());
     let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
     let (w, h) = (128u32, 96u32);

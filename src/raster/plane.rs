@@ -580,22 +580,36 @@ mod tests {
         }
     }
 
+    /// Triangles and vertex values for the numerator tests: every combination of the
+    /// coordinate range's corners with the four `corners` values, then random ones (values from
+    /// `random`).
+    fn numerator_cases(
+        corners: [i32; 4],
+        seed: u64,
+        mut random: impl FnMut(&mut crate::testing::XorShift) -> i32,
+    ) -> impl Iterator<Item = ([ScreenPoint; 3], [i32; 3])> {
+        let coordinates = [-(1 << 15), 1 << 15, 0, 1];
+        let mut rng = crate::testing::XorShift(seed);
+        (0..100_000usize).map(move |k| {
+            if k < 4usize.pow(6) {
+                let c = |j: u32| coordinates[k / 4usize.pow(j) % 4];
+                let p = [0, 2, 4].map(|j| ScreenPoint::new(c(j), c(j + 1)));
+                (p, [0, 1, 2].map(|j| corners[(k + j) % 4]))
+            } else {
+                let p = [(); 3].map(|_| ScreenPoint::new(rng.within(1 << 15), rng.within(1 << 15)));
+                (p, [(); 3].map(|_| random(&mut rng)))
+            }
+        })
+    }
+
     /// Values below 2¹⁴ give the same numerators in words, at the corners of the range and at
     /// random.
     #[test]
     fn short_numerators_equal_the_wide_ones() {
-        let corners = [-(1 << 15), 1 << 15, 0, 1];
-        let values = [0, (1 << 14) - 1, 1, 255];
-        let mut rng = crate::testing::XorShift(0x6A09_E667_F3BC_C909u64);
-        for k in 0..100_000usize {
-            let (p, v) = if k < 4usize.pow(6) {
-                let c = |j: u32| corners[k / 4usize.pow(j) % 4];
-                let p = [0, 2, 4].map(|j| ScreenPoint::new(c(j), c(j + 1)));
-                (p, [0, 1, 2].map(|j| values[(k + j) % 4]))
-            } else {
-                let p = [(); 3].map(|_| ScreenPoint::new(rng.within(1 << 15), rng.within(1 << 15)));
-                (p, [(); 3].map(|_| rng.within(1 << 13) + (1 << 13) - 1))
-            };
+        let cases = numerator_cases([0, (1 << 14) - 1, 1, 255], 0x6A09_E667_F3BC_C909, |rng| {
+            rng.within(1 << 13) + (1 << 13) - 1
+        });
+        for (p, v) in cases {
             assert_eq!(
                 Plane::short_numerators(&p, v),
                 Plane::numerators(&p, v),
@@ -608,18 +622,12 @@ mod tests {
     /// the corners of the range (coordinates ±2¹⁵, values 0 and 2³⁰) and at random.
     #[test]
     fn numerators_as_sums_equal_differences() {
-        let corners = [-(1 << 15), 1 << 15, 0, 1];
-        let values = [0, 1 << 30, 1, (1 << 30) - 1];
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        for k in 0..100_000usize {
-            let (p, v) = if k < 4usize.pow(6) {
-                let c = |j: u32| corners[k / 4usize.pow(j) % 4];
-                let p = [0, 2, 4].map(|j| ScreenPoint::new(c(j), c(j + 1)));
-                (p, [0, 1, 2].map(|j| values[(k + j) % 4]))
-            } else {
-                let p = [(); 3].map(|_| ScreenPoint::new(rng.within(1 << 15), rng.within(1 << 15)));
-                (p, [(); 3].map(|_| rng.within(1 << 29) + (1 << 29)))
-            };
+        let cases = numerator_cases(
+            [0, 1 << 30, 1, (1 << 30) - 1],
+            0x9E37_79B9_7F4A_7C15,
+            |rng| rng.within(1 << 29) + (1 << 29),
+        );
+        for (p, v) in cases {
             let exact = (
                 (v[1] - v[0]) as i64 * (p[2].y - p[0].y) as i64
                     - (v[2] - v[0]) as i64 * (p[1].y - p[0].y) as i64,

@@ -65,53 +65,52 @@ fn lambert_sums<const N: usize>(
     lighting: &Lighting<N>,
     cosines: &[i32; N],
 ) -> Rgb888 {
-    // The directional lights' cosines come first, then the point lights'.
-    let directional = lighting.lights().map(|l| &l.color);
-    let (first, rest) = cosines
-        .split_at_checked(lighting.directional_count())
-        .unwrap_or((cosines, &[]));
-    let points = lighting.points().map(|p| &p.color);
-    // The channels' sums held apart (not as an array), and the two kinds of light in loops of
-    // their own, so that the sums stay in registers.
+    // The channels' sums held apart (not as an array), so that they stay in registers.
     let [r, g, b] = if lighting.channels_in_words() {
         // Each term below 2¹⁷, the ambient at most 2¹⁶: the sums fit words.
-        let add = |[r, g, b]: [i32; 3], &[cr, cg, cb]: &[i32; 3], d: i32| {
-            let term = |c: i32| term_in_words(c as u32, d as u32) as i32;
-            [
-                r.wrapping_add(term(cr)),
-                g.wrapping_add(term(cg)),
-                b.wrapping_add(term(cb)),
-            ]
-        };
-        let mut sums = lighting.ambient().bits();
-        for (color, &d) in directional.zip(first) {
-            sums = add(sums, color, d);
-        }
-        for (color, &d) in points.zip(rest) {
-            sums = add(sums, color, d);
-        }
+        let sums = sum_lights(lighting, cosines, lighting.ambient().bits(), |s, c, d| {
+            s.wrapping_add(term_in_words(c as u32, d as u32) as i32)
+        });
         let [r, g, b] = sums;
         let unit = |s: i32| s.clamp(0, 1 << 16);
         [unit(r), unit(g), unit(b)]
     } else {
-        let add = |[r, g, b]: [i64; 3], &[cr, cg, cb]: &[i32; 3], d: i32| {
-            [
-                r.wrapping_add(term(cr.into(), d)),
-                g.wrapping_add(term(cg.into(), d)),
-                b.wrapping_add(term(cb.into(), d)),
-            ]
-        };
-        let mut sums = lighting.ambient().channels();
-        for (color, &d) in directional.zip(first) {
-            sums = add(sums, color, d);
-        }
-        for (color, &d) in points.zip(rest) {
-            sums = add(sums, color, d);
-        }
+        let sums = sum_lights(
+            lighting,
+            cosines,
+            lighting.ambient().channels(),
+            |s, c, d| s.wrapping_add(term(c.into(), d)),
+        );
         let [r, g, b] = sums;
         [intensity(r), intensity(g), intensity(b)]
     };
     Rgb888::new(lit(base.r(), r), lit(base.g(), g), lit(base.b(), b))
+}
+
+/// `ambient` with each light's terms added by `add(sum, channel, cosine)`, per channel: the
+/// directional lights' (their cosines first in `cosines`), then the point lights'. Two loops of
+/// their own, with the three sums apart, keep the sums in registers.
+#[inline(always)]
+fn sum_lights<const N: usize, T: Copy>(
+    lighting: &Lighting<N>,
+    cosines: &[i32; N],
+    ambient: [T; 3],
+    add: impl Fn(T, i32, i32) -> T,
+) -> [T; 3] {
+    let (first, rest) = cosines
+        .split_at_checked(lighting.directional_count())
+        .unwrap_or((cosines, &[]));
+    let add3 = |[r, g, b]: [T; 3], &[cr, cg, cb]: &[i32; 3], d: i32| {
+        [add(r, cr, d), add(g, cg, d), add(b, cb, d)]
+    };
+    let mut sums = ambient;
+    for (light, &d) in lighting.lights().zip(first) {
+        sums = add3(sums, &light.color, d);
+    }
+    for (point, &d) in lighting.points().zip(rest) {
+        sums = add3(sums, &point.color, d);
+    }
+    sums
 }
 
 /// `max(0, n·l)` (Q2.30) for unit normal `n` and a light's unit direction `l` (no normal: 0).
