@@ -4,10 +4,10 @@
 //! [`Unlit`] (the object's colour as is), [`Flat`] (Lambert once per triangle, from its face
 //! normal, kept in the mesh where it has them), [`Gouraud`] (Lambert, and a glossy object's
 //! Blinn-Phong highlights, once per vertex from the mesh's normals, then colours interpolated
-//! across the triangle: affine in screen space, every pixel a convex combination of the vertex
-//! colours) and
-//! [`PerspectiveGouraud`] (the same, interpolated perspective-correctly at three divisions per
-//! pixel; `docs/accuracy.md` measures the difference). [`Textured`] maps a
+//! across the triangle: affine in screen space, each channel rounded once to the target's own
+//! depth, every pixel a convex combination of the vertex colours) and [`PerspectiveGouraud`]
+//! (the same, interpolated perspective-correctly at three divisions per pixel;
+//! `docs/accuracy.md` measures the difference). [`Textured`] maps a
 //! [`Texture`] across each triangle and scales its texels by one of
 //! the others' light.
 
