@@ -347,7 +347,8 @@ pub struct Lighting<const N: usize> {
     /// there is no point light: Lambert then sums one channel for all three.
     grey: bool,
     /// True while every channel of the ambient colour and of every light lies in [0, 1] (the
-    /// usual lights): Lambert's sums then fit words (see [`channels_in_words`](Self::channels_in_words)).
+    /// usual lights): Lambert's sums then fit words (see
+    /// [`channels_in_words`](Self::channels_in_words)).
     unit: bool,
 }
 
