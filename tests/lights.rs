@@ -84,6 +84,15 @@ fn triangle_positions() -> [Vec3; 3] {
     [[0.0, 0.0, -1.0], [-s, 0.0, 0.5], [s, 0.0, 0.5]].map(Vec3::from)
 }
 
+/// The triangle of `positions`, every vertex normal +y.
+fn facing_up(positions: &[Vec3; 3]) -> Mesh<'_> {
+    static NORMALS: [Vec3; 3] = [Vec3::Y; 3];
+    static TRIANGLE: [[u16; 3]; 1] = [[0, 1, 2]];
+    Mesh::new(positions, &TRIANGLE)
+        .and_then(|m| m.with_normals(&NORMALS))
+        .unwrap()
+}
+
 fn attenuate(a: Attenuation, d: f64) -> f64 {
     match a {
         Attenuation::Linear => 1.0 / (1.0 + d),
@@ -105,11 +114,7 @@ fn expected(intensity: f64, a: Attenuation, d: f64, cos: f64) -> [i32; 3] {
 #[test]
 fn point_lights_light_faces_at_their_centre_and_vertices_where_they_are() {
     let positions = triangle_positions();
-    let normals = [Vec3::Y; 3];
-    let triangles = [[0u16, 1, 2]];
-    let mesh = Mesh::new(&positions, &triangles)
-        .and_then(|m| m.with_normals(&normals))
-        .unwrap();
+    let mesh = facing_up(&positions);
     let mut rng = common::Rng(0x9E37_79B9_7F4A_7C15);
     let mut checked = 0;
     for k in 0..60 {
@@ -242,11 +247,7 @@ fn golden_point_light_torus() {
 #[test]
 fn highlights_follow_the_camera() {
     let positions = triangle_positions();
-    let normals = [Vec3::Y; 3];
-    let triangles = [[0u16, 1, 2]];
-    let mesh = Mesh::new(&positions, &triangles)
-        .and_then(|m| m.with_normals(&normals))
-        .unwrap();
+    let mesh = facing_up(&positions);
     let mut rng = common::Rng(0x6A09_E667_F3BC_C909);
     let norm = |a: [f64; 3]| {
         let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();

@@ -62,15 +62,15 @@ pub trait Quantize<C>: Copy + core::fmt::Debug {
     const UNIFORM: bool;
     /// The colour for `rgb` at pixel `(x, y)`.
     fn quantize(&self, rgb: Rgb888, x: i32, y: i32) -> C;
-    /// Where the colour is its channels, each rounded on its own to `C`'s depth (no pattern
-    /// added), those depths ([`TargetColor::CHANNELS`]): smooth shading then hands channels in
-    /// them to [`channels`](Self::channels). `None` (the default) otherwise.
+    /// `C`'s channel depths ([`TargetColor::CHANNELS`]) where this quantiser rounds each channel
+    /// on its own to them, adding no pattern: smooth shading then hands it channels already in
+    /// those depths, through [`of_channels`](Self::of_channels). `None` (the default) otherwise.
     #[doc(hidden)]
     const CHANNELS: Option<[u8; 3]> = None;
     /// The colour of channels within [`CHANNELS`](Self::CHANNELS).
     #[doc(hidden)]
     #[inline(always)]
-    fn channels(&self, r: u8, g: u8, b: u8) -> C {
+    fn of_channels(&self, r: u8, g: u8, b: u8) -> C {
         self.quantize(Rgb888::new(r, g, b), 0, 0)
     }
 }
@@ -89,7 +89,7 @@ impl<C: TargetColor> Quantize<C> for Nearest {
     }
     const CHANNELS: Option<[u8; 3]> = C::CHANNELS;
     #[inline(always)]
-    fn channels(&self, r: u8, g: u8, b: u8) -> C {
+    fn of_channels(&self, r: u8, g: u8, b: u8) -> C {
         C::from_channels(r, g, b)
     }
 }

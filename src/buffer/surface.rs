@@ -461,7 +461,7 @@ where
                     let mut cursor = paint.cursor(span);
                     move || {
                         let c = cursor.next().unwrap_or_default();
-                        q.channels(c.r(), c.g(), c.b())
+                        q.of_channels(c.r(), c.g(), c.b())
                     }
                 });
             }
