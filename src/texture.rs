@@ -23,7 +23,9 @@
 
 use core::fmt;
 
-use embedded_graphics::pixelcolor::{Bgr565, Bgr888, Gray8, Rgb565, Rgb888, RgbColor};
+use embedded_graphics::pixelcolor::{
+    Bgr565, Bgr888, Gray8, GrayColor, IntoStorage, Rgb565, Rgb888, RgbColor,
+};
 
 /// The largest width or height of a texture, in texels.
 pub const MAX_SIDE: u16 = 4096;
@@ -91,6 +93,62 @@ impl<'a> Texels<'a> {
             }
         }
     }
+}
+
+impl Texels<'_> {
+    /// The largest value of each channel: 31, 63 and 31 for 16-bit formats, 255 for others.
+    #[inline(always)]
+    pub(crate) fn depths(&self) -> [u8; 3] {
+        match self {
+            Texels::Rgb565(_) | Texels::Bgr565(_) | Texels::Rgb565Be(_) => [31, 63, 31],
+            _ => [255; 3],
+        }
+    }
+
+    /// Texel `i`'s red, green and blue in the format's own depths ([`depths`](Self::depths)),
+    /// black past the end.
+    #[inline(always)]
+    pub(crate) fn raw(&self, i: usize) -> [u32; 3] {
+        let wide = |r: u8, g: u8, b: u8| [u32::from(r), u32::from(g), u32::from(b)];
+        let black = [0; 3];
+        match self {
+            Texels::Rgb565(s) => s.get(i).map_or(black, |&c| {
+                let v = u32::from(c.into_storage());
+                [v >> 11, v >> 5 & 63, v & 31]
+            }),
+            Texels::Bgr565(s) => s.get(i).map_or(black, |&c| wide(c.r(), c.g(), c.b())),
+            Texels::Rgb888(s) => s.get(i).map_or(black, |&c| wide(c.r(), c.g(), c.b())),
+            Texels::Bgr888(s) => s.get(i).map_or(black, |&c| wide(c.r(), c.g(), c.b())),
+            Texels::Gray8(s) => s
+                .get(i)
+                .map_or(black, |&c| wide(c.luma(), c.luma(), c.luma())),
+            Texels::Rgb565Be(s) => {
+                let at = i.wrapping_mul(2);
+                match (s.get(at), s.get(at.wrapping_add(1))) {
+                    (Some(&hi), Some(&lo)) => {
+                        let v = u32::from(u16::from_be_bytes([hi, lo]));
+                        [v >> 11, v >> 5 & 63, v & 31]
+                    }
+                    _ => black,
+                }
+            }
+        }
+    }
+}
+
+/// Raw Q16.16 UVs as texture coordinates ([`COORD_BITS`] fraction bits of the image's side;
+/// `t` runs down from the top, `1 − v`). Repeating, they are kept modulo 2³², which leaves
+/// the fraction bits (the ones read) exact; clamped, they are held within ±2³⁰ (1,024
+/// images), which leaves them beyond the same edge.
+#[inline(always)]
+pub(crate) fn texture_coords(u: i32, v: i32, repeat: bool) -> [i32; 2] {
+    let shift = COORD_BITS - 16;
+    let limit = 1i64 << (30 - shift);
+    let coord = |q: i64| {
+        let q = if repeat { q } else { q.clamp(-limit, limit) };
+        (q as i32).wrapping_shl(shift)
+    };
+    [coord(i64::from(u)), coord((1i64 << 16) - i64::from(v))]
 }
 
 /// A 5-bit channel in 8 bits, as embedded-graphics converts it (`round(v · 255 / 31)`).
@@ -320,20 +378,50 @@ impl<'a> Texture<'a> {
         self.run
     }
 
-    /// The colour at texel coordinates `(s, t)` (Q16.16 texel units: `s = u·width`,
-    /// `t = (1 − v)·height`), wrapped or clamped and filtered as the texture says: what a
-    /// textured pixel whose centre maps to `(s, t)` shows under a white light.
+    /// The colour at UV `(u, v)` (raw Q16.16), wrapped or clamped and filtered as the
+    /// texture says: what a textured pixel whose centre maps to `(u, v)` shows under a white
+    /// light.
     #[must_use]
-    pub fn sample(&self, s: i32, t: i32) -> Rgb888 {
+    pub fn sample(&self, u: i32, v: i32) -> Rgb888 {
         let sampler = Sampler::new(self);
-        let (ps, pt) = sampler.periods();
-        let (s, t) = if sampler.repeat {
-            (s.rem_euclid(ps), t.rem_euclid(pt))
-        } else {
-            (s, t)
-        };
-        sampler.texel(s, t)
+        let scale = sampler.depths().map(|d| gain(255, d) * 255);
+        let [r, g, b] = sampler.lit(texture_coords(u, v, sampler.repeats()), scale);
+        Rgb888::new(r, g, b)
     }
+}
+
+/// Texture coordinates as the paint walks them: fractions of the image's side with this many
+/// bits below the point (a coordinate of `1 << COORD_BITS` is one whole image across).
+/// Repeating wraps them with a mask, whatever the image's size; a texel column is the product
+/// of the coordinate and the side, shifted, which fits 32 bits for sides up to [`MAX_SIDE`].
+pub(crate) const COORD_BITS: u32 = 20;
+/// One image across, in texture coordinates.
+pub(crate) const COORD_ONE: i32 = 1 << COORD_BITS;
+/// The fraction bits of a light scale ([`Sampler::lit`]).
+pub(crate) const SCALE_BITS: u32 = 23;
+
+/// `⌈2³² / (255 · depth)⌉` for the texel depths there are (31, 63 and 255): a channel's gain
+/// from the target's depth by one product (see [`gain`]).
+const fn reciprocal(depth: u8) -> u32 {
+    let d = 255 * depth as u64;
+    ((1u64 << 32).div_ceil(d)) as u32
+}
+
+/// `target · 2²³ / (255 · texel)`, within 1.5 units: what a texel channel in its own depth
+/// `texel` (31, 63 or 255) is multiplied by, times an 8-bit light, to give the channel in the
+/// target's depth `target` with 23 fraction bits.
+#[inline(always)]
+pub(crate) fn gain(target: u8, texel: u8) -> u32 {
+    // The reciprocal is below 2²⁰, the product below 2²⁸.
+    const R31: u32 = reciprocal(31);
+    const R63: u32 = reciprocal(63);
+    const R255: u32 = reciprocal(255);
+    let r = match texel {
+        31 => R31,
+        63 => R63,
+        _ => R255,
+    };
+    (u32::from(target) * r) >> (32 - SCALE_BITS)
 }
 
 /// A texture as each triangle's paint reads it (copied into the paint: the texels' slice,
@@ -341,9 +429,11 @@ impl<'a> Texture<'a> {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Sampler<'a> {
     texels: Texels<'a>,
-    width: i32,
-    height: i32,
-    repeat: bool,
+    width: u32,
+    height: u32,
+    /// What a coordinate is masked with before it is clamped into one image: its fraction
+    /// bits when the texture repeats, all of them when it is clamped.
+    mask: i32,
     bilinear: bool,
     /// Pixels between exact divisions along a span (perspective, at least 1).
     pub(crate) run: u8,
@@ -354,52 +444,73 @@ impl<'a> Sampler<'a> {
     pub(crate) fn new(texture: &Texture<'a>) -> Self {
         Sampler {
             texels: texture.texels,
-            width: i32::from(texture.width).max(1),
-            height: i32::from(texture.height).max(1),
-            repeat: texture.wrap == Wrap::Repeat,
+            width: u32::from(texture.width).max(1),
+            height: u32::from(texture.height).max(1),
+            mask: if texture.wrap == Wrap::Repeat {
+                COORD_ONE - 1
+            } else {
+                -1
+            },
             bilinear: texture.filter == Filter::Bilinear,
             run: texture.run,
         }
     }
 
-    /// The sides in Q16.16 texel units (below 2³¹: sides are at most [`MAX_SIDE`]).
-    #[inline(always)]
-    pub(crate) fn periods(&self) -> (i32, i32) {
-        (self.width << 16, self.height << 16)
-    }
-
     /// Whether the texture repeats.
     #[inline(always)]
     pub(crate) fn repeats(&self) -> bool {
-        self.repeat
+        self.mask != -1
     }
 
-    /// The colour at `(s, t)` (Q16.16 texel units), each in `[0, period)` when the texture
-    /// repeats, anything when it is clamped.
+    /// The sides in texels.
     #[inline(always)]
-    pub(crate) fn texel(&self, s: i32, t: i32) -> Rgb888 {
+    pub(crate) fn sides(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// The texel depths (largest channel values) of the format.
+    #[inline(always)]
+    pub(crate) fn depths(&self) -> [u8; 3] {
+        self.texels.depths()
+    }
+
+    /// A texture coordinate in the image: wrapped or clamped into [0, 1), times `side`, with
+    /// [`COORD_BITS`] fraction bits (below 2³²: sides are at most [`MAX_SIDE`]).
+    #[inline(always)]
+    fn in_texels(&self, c: i32, side: u32) -> u32 {
+        ((c & self.mask).clamp(0, COORD_ONE - 1) as u32).wrapping_mul(side)
+    }
+
+    /// The channels at texture coordinates `c`, each scaled by `scale` (a channel's
+    /// [`gain`] times its 8-bit light) and rounded: the lit colour in the target's depths.
+    #[inline(always)]
+    pub(crate) fn lit(&self, c: [i32; 2], scale: [u32; 3]) -> [u8; 3] {
         if self.bilinear {
-            return self.bilinear(s, t);
+            return self.bilinear(c, scale);
         }
-        // Repeating, the coordinates lie in the image already: the clamps change nothing.
-        let x = (s >> 16).clamp(0, self.width - 1);
-        let y = (t >> 16).clamp(0, self.height - 1);
-        self.texels.rgb(self.index(x, y))
+        let x = self.in_texels(c[0], self.width) >> COORD_BITS;
+        let y = self.in_texels(c[1], self.height) >> COORD_BITS;
+        let raw = self.texels.raw(self.index(x as i32, y as i32));
+        // A channel is at most its depth and the scale at most 2²³ · target / depth: below 2³¹.
+        let half = 1 << (SCALE_BITS - 1);
+        let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
+        [ch(0), ch(1), ch(2)]
     }
 
     /// The index of texel `(x, y)` of the image.
     #[inline(always)]
     fn index(&self, x: i32, y: i32) -> usize {
         (y as u32 as usize)
-            .wrapping_mul(self.width as u32 as usize)
+            .wrapping_mul(self.width as usize)
             .wrapping_add(x as u32 as usize)
     }
 
     /// Texel column or row `v` of an image `side` texels across, for `v` within one side of
     /// it: wrapped round when repeating, else clamped to the edge.
     #[inline(always)]
-    fn wrapped(&self, v: i32, side: i32) -> i32 {
-        if !self.repeat {
+    fn wrapped(&self, v: i32, side: u32) -> i32 {
+        let side = side as i32;
+        if !self.repeats() {
             v.clamp(0, side - 1)
         } else if v < 0 {
             v + side
@@ -410,29 +521,30 @@ impl<'a> Sampler<'a> {
         }
     }
 
-    /// The four texels around `(s, t)` blended by 8-bit weights.
-    fn bilinear(&self, s: i32, t: i32) -> Rgb888 {
+    /// The four texels around `c` blended by 8-bit weights in their own depth, then scaled.
+    fn bilinear(&self, c: [i32; 2], scale: [u32; 3]) -> [u8; 3] {
         // Texel centres lie at half units: blend from the one up and left of the sample.
-        let (s, t) = (s.saturating_sub(1 << 15), t.saturating_sub(1 << 15));
-        let (x, y) = (s >> 16, t >> 16);
-        let (fx, fy) = ((s >> 8 & 255) as u32, (t >> 8 & 255) as u32);
+        let half = 1i64 << (COORD_BITS - 1);
+        let s = i64::from(self.in_texels(c[0], self.width)) - half;
+        let t = i64::from(self.in_texels(c[1], self.height)) - half;
+        let (x, y) = ((s >> COORD_BITS) as i32, (t >> COORD_BITS) as i32);
+        let weight = |v: i64| (v >> (COORD_BITS - 8) & 255) as u32;
+        let (fx, fy) = (weight(s), weight(t));
         let (x0, x1) = (self.wrapped(x, self.width), self.wrapped(x + 1, self.width));
         let (y0, y1) = (
             self.wrapped(y, self.height),
             self.wrapped(y + 1, self.height),
         );
-        let at = |x: i32, y: i32| self.texels.rgb(self.index(x, y));
+        let at = |x: i32, y: i32| self.texels.raw(self.index(x, y));
         let (a, b, c, d) = (at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1));
-        let mix = |a: u8, b: u8, c: u8, d: u8| {
-            let top = u32::from(a) * (256 - fx) + u32::from(b) * fx;
-            let bottom = u32::from(c) * (256 - fx) + u32::from(d) * fx;
-            ((top * (256 - fy) + bottom * fy + (1 << 15)) >> 16) as u8
+        let ch = |k: usize| {
+            let top = a[k] * (256 - fx) + b[k] * fx;
+            let bottom = c[k] * (256 - fx) + d[k] * fx;
+            // The blend, below 2²⁴ (16 fraction bits), times the scale (below 2³¹).
+            let v = u64::from(top * (256 - fy) + bottom * fy) * u64::from(scale[k]);
+            ((v + (1 << (SCALE_BITS + 15))) >> (SCALE_BITS + 16)) as u8
         };
-        Rgb888::new(
-            mix(a.r(), b.r(), c.r(), d.r()),
-            mix(a.g(), b.g(), c.g(), d.g()),
-            mix(a.b(), b.b(), c.b(), d.b()),
-        )
+        [ch(0), ch(1), ch(2)]
     }
 }
 
@@ -470,23 +582,52 @@ mod tests {
         assert_eq!(Texels::from(&[Rgb888::WHITE]).rgb(5), Rgb888::BLACK);
     }
 
+    /// A texel channel scaled by an 8-bit light into a target's depth is the exact value
+    /// `raw · light · target / (255 · texel depth)` rounded (within 2⁻⁸ of a step of a tie),
+    /// and under a white light into its own depth the texel itself.
+    #[test]
+    fn lit_channels_round_once() {
+        let half = 1u32 << (SCALE_BITS - 1);
+        for texel in [31u8, 63, 255] {
+            for target in [1u8, 3, 15, 31, 63, 255] {
+                let gain = gain(target, texel);
+                for light in 0..=255u32 {
+                    for raw in 0..=u32::from(texel) {
+                        let out = (raw * light * gain + half) >> SCALE_BITS;
+                        let exact =
+                            f64::from(raw * light * u32::from(target)) / (255.0 * f64::from(texel));
+                        let err = (f64::from(out) - exact).abs();
+                        assert!(err <= 0.5 + 1.0 / 256.0, "{raw} {light} {target} {texel}");
+                        if light == 255 && target == texel {
+                            assert_eq!(out, raw);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// Repeat wraps both ways; clamp holds the edge; bilinear at a texel's centre reads it,
     /// and half-way between two texels blends them evenly.
     #[test]
     fn addressing_and_filters() {
-        let texels = [0u8, 60, 120, 180, 240, 250].map(Gray8::new);
-        let t = Texture::new(Texels::from(&texels), 3, 2).unwrap();
-        let q = |v: f64| (v * 65536.0) as i32;
-        let luma = |c: Rgb888| c.r();
-        assert_eq!(luma(t.sample(q(0.5), q(0.5))), 0);
-        assert_eq!(luma(t.sample(q(-0.5), q(0.5))), 120);
-        assert_eq!(luma(t.sample(q(4.2), q(2.5))), 60);
+        let texels = [0u8, 60, 120, 180, 240, 250, 10, 20].map(Gray8::new);
+        let t = Texture::new(Texels::from(&texels), 4, 2).unwrap();
+        // Texel units (column, row from the top) as UVs.
+        let at = |t: &Texture, s: f64, r: f64| {
+            let q = |v: f64| (v * 65536.0).round() as i32;
+            t.sample(q(s / 4.0), q(1.0 - r / 2.0)).r()
+        };
+        assert_eq!(at(&t, 0.5, 0.5), 0);
+        assert_eq!(at(&t, -0.5, 0.5), 180);
+        assert_eq!(at(&t, 5.2, 2.5), 60);
         let clamp = t.with_wrap(Wrap::Clamp);
-        assert_eq!(luma(clamp.sample(q(-7.0), q(9.0))), 180);
+        assert_eq!(at(&clamp, -7.0, 9.0), 240);
         let bi = t.with_filter(Filter::Bilinear).with_wrap(Wrap::Clamp);
-        assert_eq!(luma(bi.sample(q(1.5), q(0.5))), 60);
-        assert_eq!(luma(bi.sample(q(1.0), q(0.5))), 30);
-        assert_eq!(luma(bi.sample(q(1.5), q(1.0))), 150);
+        assert_eq!(at(&bi, 1.5, 0.5), 60);
+        assert_eq!(at(&bi, 1.0, 0.5), 30);
+        assert_eq!(at(&bi, 1.5, 1.0), 155);
+        assert_eq!(at(&bi.with_wrap(Wrap::Repeat), 0.0, 0.5), 90);
         assert_eq!(
             Texture::new(Texels::from(&texels), 0, 1),
             Err(TextureError::Size)

@@ -17,6 +17,23 @@ mod sealed {
     pub trait Sealed {}
 }
 
+mod colors {
+    /// The colours of a span's pixels, one per pixel in order (stored where a fragment
+    /// passes): a closure, or a paint's cursor whose step the span loop takes in line.
+    pub trait SpanColors<C> {
+        /// The next pixel's colour.
+        fn next_color(&mut self) -> C;
+    }
+}
+pub(crate) use colors::SpanColors;
+
+impl<C, F: FnMut() -> C> SpanColors<C> for F {
+    #[inline(always)]
+    fn next_color(&mut self) -> C {
+        self()
+    }
+}
+
 /// A stored depth format: 0 is the near plane, `FAR` the far plane (and the cleared value).
 ///
 /// Depth reaches the buffer through one conversion from the interpolator (a Q1.44 value where
@@ -50,7 +67,7 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         colors: &mut [C],
         start: i32,
         step: i32,
-        next_color: impl FnMut() -> C,
+        colors_in: impl SpanColors<C>,
         failed: u32,
     ) -> u32 {
         // Formats without a fast path never hand out a step; this only keeps the contract.
@@ -60,13 +77,13 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
             colors,
             start,
             (step as i64) << DROPPED,
-            next_color,
+            colors_in,
             failed,
         )
     }
 
     /// Depth-tests one span: `start` and `step` are the interpolator's values at the first
-    /// pixel and from pixel to pixel. `next_color` is called once per pixel, in order; its
+    /// pixel and from pixel to pixel. `colors_in` gives a colour per pixel, in order; its
     /// colour is stored where the fragment passes. Returns `failed` (the count so far) plus
     /// how many failed: the pixel loop counts on from it, so the count needs no sum per span
     /// (and counts the fragments that fail, fewer than those that pass).
@@ -77,10 +94,10 @@ pub trait DepthFormat: Copy + Ord + sealed::Sealed + core::fmt::Debug {
         colors: &mut [C],
         start: i64,
         step: i64,
-        next_color: impl FnMut() -> C,
+        colors_in: impl SpanColors<C>,
         failed: u32,
     ) -> u32 {
-        clamped_span::<Self, C, T, K>(depths, colors, start, step, next_color, failed)
+        clamped_span::<Self, C, T, K>(depths, colors, start, step, colors_in, failed)
     }
 }
 
@@ -91,7 +108,7 @@ fn clamped_span<D: DepthFormat, C: Copy, T: DepthTest, K: FragmentCount>(
     colors: &mut [C],
     start: i64,
     step: i64,
-    mut next_color: impl FnMut() -> C,
+    mut colors_in: impl SpanColors<C>,
     mut failed: u32,
 ) -> u32 {
     let mut acc = start;
@@ -99,7 +116,7 @@ fn clamped_span<D: DepthFormat, C: Copy, T: DepthTest, K: FragmentCount>(
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = D::from_interpolated(acc);
         acc = acc.wrapping_add(step);
-        let color = next_color();
+        let color = colors_in.next_color();
         if z < *d || (le && z == *d) {
             *d = z;
             *c = color;
@@ -131,7 +148,7 @@ impl DepthFormat for u16 {
         colors: &mut [C],
         start: i64,
         step: i64,
-        next_color: impl FnMut() -> C,
+        colors_in: impl SpanColors<C>,
         failed: u32,
     ) -> u32 {
         let n = depths.len().min(colors.len());
@@ -141,11 +158,9 @@ impl DepthFormat for u16 {
         let in_range = |v: i64| (0..=i32::MAX as i64).contains(&v);
         if !(in_range(a) && in_range(last) && i32::try_from(st).is_ok()) {
             // Ends outside [0, 65536): clamp pixel by pixel.
-            return clamped_span::<u16, C, T, K>(depths, colors, start, step, next_color, failed);
+            return clamped_span::<u16, C, T, K>(depths, colors, start, step, colors_in, failed);
         }
-        Self::test_span_unclamped::<C, T, K>(
-            depths, colors, a as i32, st as i32, next_color, failed,
-        )
+        Self::test_span_unclamped::<C, T, K>(depths, colors, a as i32, st as i32, colors_in, failed)
     }
 
     /// Pixel centres inside a triangle have depths between its vertices': with every vertex
@@ -164,11 +179,11 @@ impl DepthFormat for u16 {
         colors: &mut [C],
         acc: i32,
         st: i32,
-        next_color: impl FnMut() -> C,
+        colors_in: impl SpanColors<C>,
         failed: u32,
     ) -> u32 {
         // Every value lies in [0, 2³¹) (the start too): no overflow, no clamp.
-        unclamped_u16::<C, T, K>(depths, colors, acc, st, next_color, failed)
+        unclamped_u16::<C, T, K>(depths, colors, acc, st, colors_in, failed)
     }
 }
 
@@ -180,7 +195,7 @@ fn unclamped_u16<C: Copy, T: DepthTest, K: FragmentCount>(
     colors: &mut [C],
     acc: i32,
     st: i32,
-    mut next_color: impl FnMut() -> C,
+    mut colors_in: impl SpanColors<C>,
     mut failed: u32,
 ) -> u32 {
     // Every value lies in [0, 2³¹): the depth is its bits 15 to 30.
@@ -188,7 +203,7 @@ fn unclamped_u16<C: Copy, T: DepthTest, K: FragmentCount>(
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = (acc >> (U16_STEP_BITS - DROPPED)) as Compared;
         acc = acc.wrapping_add(st);
-        let color = next_color();
+        let color = colors_in.next_color();
         let old = Compared::from(*d);
         if z < old || (T::OR_EQUAL && z == old) {
             *d = z as u16;

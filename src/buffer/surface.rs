@@ -7,7 +7,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
-    Uncounted,
+    SpanColors, Uncounted,
 };
 use super::dither::{Nearest, OrderedDither, Quantize, TargetColor};
 use super::framebuffer::FrameBuffer;
@@ -209,7 +209,7 @@ where
     /// Depth-tests the spans of one triangle; `colors_for(span)` gives the colour of each of
     /// the span's pixels in turn.
     #[inline(always)]
-    fn depth_tested_spans<G: FnMut() -> C>(
+    fn depth_tested_spans<G: SpanColors<C>>(
         &mut self,
         triangle: &ScreenTriangle,
         stats: &mut Stats,
@@ -258,7 +258,7 @@ where
     /// through the pixel loops, with no sum after each span, costs less than a count of
     /// writes from zero for each span.
     #[inline(always)]
-    fn each_span<G: FnMut() -> C, R: RowStarts>(
+    fn each_span<G: SpanColors<C>, R: RowStarts>(
         &mut self,
         spans: TriangleWalk<PipelineEdge>,
         mut depth: R,
@@ -456,29 +456,58 @@ where
             }
             _ if P::SCALED && Q::CHANNELS.is_some() => {
                 // Channels in the colour's own depths (see `CHANNELS`).
-                let q = self.quantize;
-                self.depth_tested_spans(triangle, stats, |span| {
-                    let mut cursor = paint.cursor(span);
-                    move || {
-                        let c = cursor.next().unwrap_or_default();
-                        q.of_channels(c.r(), c.g(), c.b())
-                    }
+                let quantize = self.quantize;
+                self.depth_tested_spans(triangle, stats, |span| InDepths {
+                    cursor: paint.cursor(span),
+                    quantize,
                 });
             }
             _ => {
-                let q = self.quantize;
-                self.depth_tested_spans(triangle, stats, |span| {
-                    let mut cursor = paint.cursor(span);
-                    let (mut x, y) = (span.x0, span.y);
-                    move || {
-                        let c = q.quantize(cursor.next().unwrap_or_default(), x, y);
-                        x = x.wrapping_add(1);
-                        c
-                    }
+                let quantize = self.quantize;
+                self.depth_tested_spans(triangle, stats, |span| Quantized {
+                    cursor: paint.cursor(span),
+                    quantize,
+                    x: span.x0,
+                    y: span.y,
                 });
             }
         }
         Ok(())
+    }
+}
+
+/// A paint's colours along a span, already in the target colour's channel depths, packed.
+struct InDepths<P, Q> {
+    cursor: P,
+    quantize: Q,
+}
+
+impl<C, P: Iterator<Item = Rgb888>, Q: Quantize<C>> SpanColors<C> for InDepths<P, Q> {
+    // In the span loop: a call per pixel would cost more than the paint's own step.
+    #[inline(always)]
+    fn next_color(&mut self) -> C {
+        let c = self.cursor.next().unwrap_or_default();
+        self.quantize.of_channels(c.r(), c.g(), c.b())
+    }
+}
+
+/// A paint's 8-bit colours along a span, quantised pixel by pixel (the pixel's position
+/// chooses a dither's threshold).
+struct Quantized<P, Q> {
+    cursor: P,
+    quantize: Q,
+    x: i32,
+    y: i32,
+}
+
+impl<C, P: Iterator<Item = Rgb888>, Q: Quantize<C>> SpanColors<C> for Quantized<P, Q> {
+    #[inline(always)]
+    fn next_color(&mut self) -> C {
+        let c = self
+            .quantize
+            .quantize(self.cursor.next().unwrap_or_default(), self.x, self.y);
+        self.x = self.x.wrapping_add(1);
+        c
     }
 }
 

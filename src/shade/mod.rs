@@ -261,7 +261,14 @@ impl<'t, L: Shading> Shading for Textured<'t, L> {
         // The light modulates 8-bit texels: in 8 bits whatever the target's depths.
         let light = self.light.paint(&face.in_8_bits(), lighting);
         let q = Self::weights(face);
-        TexturePaint::new(self.texture, &face.screen(), face.uvs, q, face.area2, light)
+        TexturePaint::new(
+            self.texture,
+            &face.screen(),
+            face.uvs,
+            q,
+            face.area2,
+            (light, face.channels),
+        )
     }
     fn fallback<const N: usize>(
         &self,
@@ -270,7 +277,14 @@ impl<'t, L: Shading> Shading for Textured<'t, L> {
     ) -> Self::Fallback {
         let light = self.light.fallback(&face.in_8_bits(), lighting);
         let q = Self::weights(face);
-        TexturePaint::new(self.texture, &face.screen(), face.uvs, q, face.area2, light)
+        TexturePaint::new(
+            self.texture,
+            &face.screen(),
+            face.uvs,
+            q,
+            face.area2,
+            (light, face.channels),
+        )
     }
 }
 

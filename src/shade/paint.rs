@@ -9,16 +9,20 @@ use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 
 /// A source of colours along a span, started at its first pixel.
 pub trait Paint: core::fmt::Debug {
-    /// The running colour along one span.
-    type Cursor: Iterator<Item = Rgb888>;
+    /// The running colour along one span (which may read the paint).
+    type Cursor<'p>: Iterator<Item = Rgb888> + core::fmt::Debug
+    where
+        Self: 'p;
     /// True when the colours come in the target's channel depths
     /// ([`RasterTarget::CHANNELS`](crate::buffer::RasterTarget::CHANNELS)) rather than in 8
     /// bits.
     const SCALED: bool = false;
+    /// True when [`solid`](Self::solid) always gives `Some` (a paint that has one colour).
+    const SOLID: bool = false;
     /// `Some` when the colour is the same at every pixel (spans can then be filled at once).
     fn solid(&self) -> Option<Rgb888>;
     /// The colours of `span`'s pixels, left to right.
-    fn cursor(&self, span: Span) -> Self::Cursor;
+    fn cursor(&self, span: Span) -> Self::Cursor<'_>;
 }
 
 /// One colour for the whole triangle.
@@ -26,13 +30,14 @@ pub trait Paint: core::fmt::Debug {
 pub struct SolidPaint(pub Rgb888);
 
 impl Paint for SolidPaint {
-    type Cursor = core::iter::Repeat<Rgb888>;
+    type Cursor<'p> = core::iter::Repeat<Rgb888>;
+    const SOLID: bool = true;
     #[inline]
     fn solid(&self) -> Option<Rgb888> {
         Some(self.0)
     }
     #[inline]
-    fn cursor(&self, _: Span) -> Self::Cursor {
+    fn cursor(&self, _: Span) -> Self::Cursor<'_> {
         core::iter::repeat(self.0)
     }
 }
@@ -141,7 +146,7 @@ impl Iterator for SmoothCursor {
 }
 
 impl Paint for SmoothPaint {
-    type Cursor = SmoothCursor;
+    type Cursor<'p> = SmoothCursor;
     const SCALED: bool = true;
     fn solid(&self) -> Option<Rgb888> {
         None
@@ -235,7 +240,7 @@ impl Iterator for PerspectiveCursor {
 }
 
 impl Paint for PerspectivePaint {
-    type Cursor = PerspectiveCursor;
+    type Cursor<'p> = PerspectiveCursor;
     fn solid(&self) -> Option<Rgb888> {
         None
     }

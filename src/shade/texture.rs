@@ -1,126 +1,124 @@
-//! Textured paint: UVs mapped across a triangle to texels, modulated by a light paint.
+//! Textured paint: texture coordinates walked across a triangle to texels, each texel's
+//! channels scaled by a light paint's colour into the target's channel depths.
+
+use core::cell::Cell;
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{magnitude_bits, DivideBy};
-use crate::raster::{Plane, ScreenPoint, Span};
-use crate::texture::{Mapping, Sampler, Texture};
+use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
+use crate::texture::{gain, texture_coords, Mapping, Sampler, Texture, COORD_BITS};
 
 use super::Paint;
 
-/// A triangle's texel coordinates, less vertex 0's, are held within ±2¹² texels (this many
-/// bits in Q16.16): with the weights below, the planes' values stay below 2⁴⁵.
-const SPREAD_BITS: u32 = 28;
+/// A triangle's texture coordinates, less vertex 0's, are held within ±2²⁹ (512 images
+/// across): the perspective planes' values then stay below 2⁴⁶, and the walks' values, with
+/// vertex 0's added, within ±2³¹ where a clamped texture needs them to be.
+const SPREAD: i64 = 1 << 29;
 /// Vertex weights `q ∝ 1/w` are scaled so that the largest lies in [2¹⁶, 2¹⁷).
 const Q_BITS: u32 = 16;
 /// The denominator plane carries `q` shifted by this (its values below 2⁴¹).
 const Q_PLANE_SHIFT: u32 = 24;
+/// A coordinate walk's values are twice a [`WordPlane`]'s values, shifted by this: UV
+/// differences in Q16.16 become texture coordinates.
+const WALK_SHIFT: u32 = COORD_BITS - 17;
 
 /// A texture across one triangle, lit by `light` (a [`SolidPaint`](super::SolidPaint) or a
-/// [`SmoothPaint`](super::SmoothPaint) of light colours: white shows the texel as it is).
-#[derive(Clone, Copy, Debug)]
+/// [`SmoothPaint`](super::SmoothPaint) of 8-bit light colours: white shows the texel as it
+/// is), in the target's channel depths.
+#[derive(Clone, Debug)]
 pub struct TexturePaint<'t, L> {
     sampler: Sampler<'t>,
     light: L,
-    /// Vertex 0's texel coordinates (Q16.16), reduced into the image when it repeats.
+    /// Per channel, the gain from the texels' depth to the target's (see [`gain`]).
+    gains: [u32; 3],
+    /// A solid light's scales (see [`Sampler::lit`]).
+    scale: [u32; 3],
+    /// Vertex 0's texture coordinates.
     base: [i32; 2],
-    /// Affine: `s − s₀`, `t − t₀` in Q16.32 (the third plane unused). Perspective:
-    /// `(s − s₀)·q`, `(t − t₀)·q` and `q << Q_PLANE_SHIFT`.
-    planes: [Plane; 3],
-    perspective: bool,
-    /// Affine: the steps along a row in Q16.16, reduced into the period when repeating
-    /// (perspective: found for each run).
-    step: [i32; 2],
+    coords: Coords,
+    /// The perspective span being drawn (one at a time: its cursor borrows the paint).
+    runs: Cell<Runs>,
 }
 
-/// `v` into [0, period) when repeating, else clamped to ±2²⁹ (so that a span's steps cannot
-/// wrap it).
-#[inline(always)]
-fn reduce(v: i64, period: i32, repeat: bool) -> i32 {
-    if repeat {
-        // The pipeline's values fit 32 bits (see `TextureCursor::exact_at`).
-        let v = v.clamp(i32::MIN as i64, i32::MAX as i64) as i32;
-        v.rem_euclid(period.max(1))
-    } else {
-        v.clamp(-(1 << 29), 1 << 29) as i32
-    }
+/// How a [`TexturePaint`]'s coordinates run across its triangle.
+#[derive(Clone, Copy, Debug)]
+enum Coords {
+    /// Affine: each coordinate walked in 32-bit words, as depth is.
+    Walks([WordPlane; 2]),
+    /// Perspective: `(c − c₀)·q` for each coordinate, and `q << Q_PLANE_SHIFT`.
+    Perspective([Plane; 3]),
 }
 
-/// A step along a row: into [0, period) when repeating (a whole period is no change), else
-/// clamped to ±2¹⁹ (2048 of them stay within ±2³⁰).
-#[inline(always)]
-fn reduce_step(v: i64, period: i32, repeat: bool) -> i32 {
-    if repeat {
-        reduce(v, period, true)
-    } else {
-        v.clamp(-(1 << 19), 1 << 19) as i32
-    }
-}
-
-impl<'t, L> TexturePaint<'t, L> {
+impl<'t, L: Paint> TexturePaint<'t, L> {
     /// `texture` across the triangle `p` (doubled signed area `area2`) with raw Q16.16 UVs
-    /// `uv` and weights `q ∝ 1/w` (positive; `None` for an orthographic projection).
+    /// `uv` and weights `q ∝ 1/w` (positive; `None` for an orthographic projection), in
+    /// channels whose largest values are `depths`.
     pub(crate) fn new(
         texture: &Texture<'t>,
         p: &[ScreenPoint; 3],
         uv: &[[i32; 2]; 3],
         q: Option<[i64; 3]>,
         area2: i64,
-        light: L,
+        (light, depths): (L, [u8; 3]),
     ) -> Self {
         let sampler = Sampler::new(texture);
-        let (width, height) = (i64::from(texture.width()), i64::from(texture.height()));
-        // s = u·width, t = (1 − v)·height, Q16.16 texel units.
-        let st = uv.map(|[u, v]| [i64::from(u) * width, ((1i64 << 16) - i64::from(v)) * height]);
-        let [s0, t0] = st[0];
-        let limit = 1i64 << SPREAD_BITS;
-        let spread =
-            st.map(|[s, t]| [(s - s0).clamp(-limit, limit), (t - t0).clamp(-limit, limit)]);
-        let (periods, repeat) = (sampler.periods(), sampler.repeats());
-        let base = [reduce(s0, periods.0, repeat), reduce(t0, periods.1, repeat)];
+        let [u0, v0] = uv[0];
+        let base = texture_coords(u0, v0, sampler.repeats());
+        // Differences from vertex 0 in texture coordinates (t runs down: 1 − v), in words.
+        let shift = COORD_BITS - 16;
+        let limit = (SPREAD >> shift) as i32;
+        let d = |from: i32, to: i32| to.saturating_sub(from).clamp(-limit, limit) << shift;
+        let spread = uv.map(|[u, v]| [d(u0, u), d(v, v0)]);
         let q = match (texture.mapping(), q) {
-            (Mapping::Perspective, Some(q)) => scaled_weights(q),
+            (Mapping::Perspective, Some(q)) if !nearly_affine(&q, extent(&spread, &sampler)) => {
+                scaled_weights(q)
+            }
             _ => None,
         };
-        let extent = spread
-            .iter()
-            .flat_map(|v| v.iter())
-            .fold(0i64, |m, v| m.max(v.abs()));
-        let q = q.filter(|q| !nearly_affine(q, extent));
-        let ds = |k: usize| spread.map(|v| v.get(k).copied().unwrap_or(0));
-        let (planes, perspective) = match q {
+        let ds = |k: usize| spread.map(|v| i64::from(v.get(k).copied().unwrap_or(0)));
+        let coords = match q {
             Some(q) => {
                 let times_q = |v: [i64; 3]| [v[0] * q[0], v[1] * q[1], v[2] * q[2]];
                 let den = q.map(|q| q << Q_PLANE_SHIFT);
-                let planes = Plane::new_each(p, [times_q(ds(0)), times_q(ds(1)), den], area2);
-                (planes, true)
+                Coords::Perspective(Plane::new_each(
+                    p,
+                    [times_q(ds(0)), times_q(ds(1)), den],
+                    area2,
+                ))
             }
             None => {
-                let [a, b] =
-                    Plane::new_each(p, [ds(0).map(|v| v << 16), ds(1).map(|v| v << 16)], area2);
-                ([a, b, Plane::default()], false)
+                let by_area = AreaWalks::new(area2);
+                // Differences in Q16.16 made positive (within [0, 2²⁶]), walked doubled and
+                // shifted: vertex 0's walk value is its own coordinate.
+                let walk = |k: usize| {
+                    let v = ds(k).map(|d| ((d >> shift) as i32).wrapping_add(limit));
+                    let bias = base
+                        .get(k)
+                        .copied()
+                        .unwrap_or(0)
+                        .wrapping_sub(SPREAD as i32);
+                    by_area.walk_any(p, v, WALK_SHIFT, bias)
+                };
+                Coords::Walks([walk(0), walk(1)])
             }
         };
-        let step = |k: usize, period: i32| match planes.get(k) {
-            Some(p) if !perspective => {
-                reduce_step(p.step_x().saturating_add(1 << 15) >> 16, period, repeat)
-            }
-            _ => 0,
-        };
+        let texel_depths = sampler.depths();
+        let gains = [0, 1, 2].map(|k| gain(depths[k], texel_depths[k]));
         TexturePaint {
             sampler,
+            scale: scales(light.solid().unwrap_or(Rgb888::WHITE), gains),
             light,
+            gains,
             base,
-            step: [step(0, periods.0), step(1, periods.1)],
-            planes,
-            perspective,
+            coords,
+            runs: Cell::new(Runs::default()),
         }
     }
 }
 
 /// The weights scaled so that the largest lies in [2^[`Q_BITS`], 2^([`Q_BITS`] + 1)) (each at
-/// least 1); `None` when
-/// they are all equal (nothing to correct).
+/// least 1); `None` when they are all equal (nothing to correct).
 fn scaled_weights(q: [i64; 3]) -> Option<[i64; 3]> {
     let q = q.map(|v| v.max(1));
     if q[0] == q[1] && q[1] == q[2] {
@@ -137,121 +135,142 @@ fn scaled_weights(q: [i64; 3]) -> Option<[i64; 3]> {
     }))
 }
 
-/// True when mapping the triangle linearly errs by less than 1/8 texel anywhere in it. The
-/// perspective map's value is `Σλᵢqᵢsᵢ / Q` with `Q = Σλᵢqᵢ`, the linear map's `Σλᵢsᵢ`; with
-/// vertex 0's coordinates taken as 0 (each `|sᵢ| ≤ extent`) they differ by
+/// The largest of a triangle's texture coordinate differences from vertex 0 (`spread`), in
+/// texels (Q16.16), saturated to 32 bits.
+fn extent(spread: &[[i32; 2]; 3], sampler: &Sampler<'_>) -> u32 {
+    let (width, height) = sampler.sides();
+    let most = |k: usize| {
+        spread
+            .iter()
+            .map(|v| v.get(k).map_or(0, |d| d.unsigned_abs()))
+            .max()
+            .unwrap_or(0)
+    };
+    // Below 2²⁹ times a side below 2¹³.
+    let texels = (u64::from(most(0)) * u64::from(width))
+        .max(u64::from(most(1)) * u64::from(height))
+        >> (COORD_BITS - 16);
+    u32::try_from(texels).unwrap_or(u32::MAX)
+}
+
+/// True when mapping the triangle linearly errs by less than 1/8 texel anywhere in it, for
+/// weights `q ∝ 1/w` (positive) and coordinates at most `extent` texels (Q16.16) from vertex
+/// 0's. The perspective map's value is `Σλᵢqᵢsᵢ / Q` with `Q = Σλᵢqᵢ`, the linear map's
+/// `Σλᵢsᵢ`; with vertex 0's coordinates taken as 0 they differ by
 /// `|Σλᵢsᵢ(qᵢ − Q)| / Q ≤ extent · Σλᵢ|qᵢ − Q| / Q`, and the mean deviation `Σλᵢ|qᵢ − Q|` of
 /// values between `q_min` and `q_max` is at most `(q_max − q_min) / 2`.
-fn nearly_affine(q: &[i64; 3], extent: i64) -> bool {
+fn nearly_affine(q: &[i64; 3], extent: u32) -> bool {
     let lo = q.iter().copied().min().unwrap_or(1).max(1);
     let hi = q.iter().copied().max().unwrap_or(1);
-    // extent ≤ 2²⁸ (Q16.16), hi − lo < 2¹⁷: the product stays below 2⁴⁸.
-    extent.saturating_mul(hi - lo).saturating_mul(4) < lo << 16
+    // The weights differ by a depth difference (below 2³¹); far apart, they are not affine.
+    let Ok(spread) = u32::try_from(hi - lo) else {
+        return false;
+    };
+    // extent · (hi − lo) · 4 < lo · 2¹⁶, both sides divided by 4 (the left below 2⁶⁴).
+    u64::from(extent) * u64::from(spread) < (lo.min(1 << 48) as u64) << 14
 }
 
-/// The running texel coordinates of a [`TexturePaint`] along a span, and its light.
-#[derive(Clone, Copy, Debug)]
-pub struct TextureCursor<'t, C> {
-    sampler: Sampler<'t>,
-    light: C,
-    /// Texel coordinates (Q16.16) and their steps: `s` in [0, period) when repeating.
-    s: [i32; 2],
-    step: [i32; 2],
-    /// What a coordinate is brought back below: the period when repeating, else a bound
-    /// that a clamped coordinate (below 2³¹ in magnitude, see `reduce`) never reaches.
-    wrap: [i32; 2],
-    /// Pixels left before the next exact point (perspective), or of the whole span.
-    left: u32,
-    /// Perspective: the planes at the next exact point, their steps, and the pixels after it.
+/// A perspective span's state: the planes at the next exact point, their steps, the pixels
+/// after it, and the coordinates there.
+#[derive(Clone, Copy, Debug, Default)]
+struct Runs {
     acc: [i64; 3],
-    acc_step: [i64; 3],
+    step: [i64; 3],
     rest: u32,
-    base: [i32; 2],
-    /// The exact coordinates at the current point, before reduction.
-    exact: [i64; 2],
+    exact: [i32; 2],
 }
 
-impl<C> TextureCursor<'_, C> {
-    /// The exact texel coordinates at the planes' values `acc` (Q16.16).
+/// The running texture coordinates of a [`TexturePaint`] along a span, and its light.
+#[derive(Debug)]
+pub struct TextureCursor<'p, 't, L: Paint> {
+    paint: &'p TexturePaint<'t, L>,
+    light: L::Cursor<'p>,
+    /// Texture coordinates and their steps (wrapping: a repeating texture reads the
+    /// fraction bits).
+    c: [i32; 2],
+    step: [i32; 2],
+    /// Pixels left before the next exact point (perspective), or more than any span has.
+    left: u32,
+}
+
+impl<L: Paint> TextureCursor<'_, '_, L> {
+    /// The texture coordinates at the planes' values `acc`.
     #[inline]
-    fn exact_at(&self, acc: [i64; 3]) -> [i64; 2] {
+    fn exact_at(&self, acc: [i64; 3]) -> [i32; 2] {
+        let paint = self.paint;
         let [u, v, q] = acc;
-        // (s − s₀) = U / q = U·2¹² / (Q >> 12), Q = q·2²⁴: every value below 2⁵⁹.
+        // (c − c₀) = U / q = U·2¹² / (Q >> 12), Q = q·2²⁴: every value below 2⁵⁹.
         let by = DivideBy::new((q >> 12).max(1));
         let limit = 1i64 << 46;
+        let repeat = paint.sampler.repeats();
         let at = |n: i64, base: i32| {
-            by.round(n.clamp(-limit, limit) << 12)
-                .clamp(-(1 << 30), 1 << 30)
-                .wrapping_add(i64::from(base))
+            let d = by
+                .round(n.clamp(-limit, limit) << 12)
+                .clamp(-SPREAD, SPREAD);
+            if repeat {
+                (d as i32).wrapping_add(base)
+            } else {
+                // Within ±(2³⁰ + 2²⁹): beyond the same edge as the exact value.
+                (d + i64::from(base)) as i32
+            }
         };
-        [at(u, self.base[0]), at(v, self.base[1])]
+        [at(u, paint.base[0]), at(v, paint.base[1])]
+    }
+
+    /// Starts a perspective span (out of line: the usual span is affine, and its start is
+    /// then a few instructions the span loop takes in line).
+    #[inline(never)]
+    fn start_runs(&mut self, [ps, pt, pq]: &[Plane; 3], span: Span) {
+        let Span { y, x0, x1 } = span;
+        let acc = [ps.at(x0, y), pt.at(x0, y), pq.at(x0, y)];
+        self.paint.runs.set(Runs {
+            acc,
+            step: [ps.step_x(), pt.step_x(), pq.step_x()],
+            rest: x1.wrapping_sub(x0).max(0) as u32,
+            exact: self.exact_at(acc),
+        });
+        self.left = 0;
     }
 
     /// Starts the next run of at most the texture's run of pixels (see
     /// [`Texture::with_run`]): exact at both its ends, linear between.
     #[inline(never)]
     fn next_run(&mut self) {
-        let n = self.rest.clamp(1, u32::from(self.sampler.run).max(1));
-        self.rest = self.rest.saturating_sub(n);
-        let [a0, a1, a2] = self.acc;
-        let [s0, s1, s2] = self.acc_step;
+        let mut runs = self.paint.runs.get();
+        let n = runs.rest.clamp(1, u32::from(self.paint.sampler.run).max(1));
+        runs.rest = runs.rest.saturating_sub(n);
         let k = i64::from(n);
-        self.acc = [
+        let [a0, a1, a2] = runs.acc;
+        let [s0, s1, s2] = runs.step;
+        runs.acc = [
             a0.wrapping_add(s0.wrapping_mul(k)),
             a1.wrapping_add(s1.wrapping_mul(k)),
             a2.wrapping_add(s2.wrapping_mul(k)),
         ];
-        let start = self.exact;
-        let end = self.exact_at(self.acc);
-        self.exact = end;
-        let (periods, repeat) = (self.sampler.periods(), self.sampler.repeats());
-        let step = |k: usize, period: i32| {
-            let d = end[k]
-                .wrapping_sub(start[k])
-                .clamp(-i32::MAX as i64, i32::MAX as i64);
-            reduce_step(i64::from(d as i32 / n.max(1) as i32), period, repeat)
-        };
-        self.step = [step(0, periods.0), step(1, periods.1)];
-        self.s = [
-            reduce(start[0], periods.0, repeat),
-            reduce(start[1], periods.1, repeat),
-        ];
+        let start = runs.exact;
+        let end = self.exact_at(runs.acc);
+        runs.exact = end;
+        self.paint.runs.set(runs);
+        // The change along a run lies within ±2³⁰ (twice the spread at most).
+        let step = |k: usize| end[k].wrapping_sub(start[k]) / n as i32;
+        self.step = [step(0), step(1)];
+        self.c = start;
         self.left = n;
     }
-
-    /// Moves to the next pixel: a repeating coordinate and its step both lie in
-    /// [0, period), so one subtraction brings their sum back into it.
-    #[inline(always)]
-    fn advance(&mut self) {
-        let [s, t] = self.s;
-        let [ds, dt] = self.step;
-        let [ws, wt] = self.wrap;
-        let (mut s, mut t) = (s.wrapping_add(ds), t.wrapping_add(dt));
-        if s >= ws {
-            s = s.wrapping_sub(ws);
-        }
-        if t >= wt {
-            t = t.wrapping_sub(wt);
-        }
-        self.s = [s, t];
-    }
 }
 
-/// `texel · light`, each channel scaled by `light / 255` (so white leaves it as it is).
+/// An 8-bit light's scales: its channels times the gains.
 #[inline(always)]
-fn modulate(texel: Rgb888, light: Rgb888) -> Rgb888 {
-    let ch = |t: u8, l: u8| {
-        let l = u32::from(l) + (u32::from(l) >> 7);
-        ((u32::from(t) * l) >> 8) as u8
-    };
-    Rgb888::new(
-        ch(texel.r(), light.r()),
-        ch(texel.g(), light.g()),
-        ch(texel.b(), light.b()),
-    )
+fn scales(light: Rgb888, [r, g, b]: [u32; 3]) -> [u32; 3] {
+    // 8-bit lights times gains below 2²⁹ · target / texel depth: see `Sampler::lit`.
+    [
+        u32::from(light.r()) * r,
+        u32::from(light.g()) * g,
+        u32::from(light.b()) * b,
+    ]
 }
 
-impl<C: Iterator<Item = Rgb888>> Iterator for TextureCursor<'_, C> {
+impl<L: Paint> Iterator for TextureCursor<'_, '_, L> {
     type Item = Rgb888;
 
     #[inline(always)]
@@ -260,57 +279,47 @@ impl<C: Iterator<Item = Rgb888>> Iterator for TextureCursor<'_, C> {
             self.next_run();
         }
         self.left = self.left.wrapping_sub(1);
-        let [s, t] = self.s;
-        let texel = self.sampler.texel(s, t);
-        self.advance();
-        let light = self.light.next().unwrap_or(Rgb888::WHITE);
-        Some(modulate(texel, light))
+        let paint = self.paint;
+        let scale = if L::SOLID {
+            paint.scale
+        } else {
+            scales(self.light.next().unwrap_or(Rgb888::WHITE), paint.gains)
+        };
+        let [r, g, b] = paint.sampler.lit(self.c, scale);
+        let [s, t] = self.c;
+        let [ds, dt] = self.step;
+        self.c = [s.wrapping_add(ds), t.wrapping_add(dt)];
+        Some(Rgb888::new(r, g, b))
     }
 }
 
 impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
-    type Cursor = TextureCursor<'t, L::Cursor>;
+    type Cursor<'p>
+        = TextureCursor<'p, 't, L>
+    where
+        Self: 'p;
+    const SCALED: bool = true;
 
     fn solid(&self) -> Option<Rgb888> {
         None
     }
 
     #[inline(always)]
-    fn cursor(&self, span: Span) -> Self::Cursor {
-        let Span { y, x0, x1 } = span;
-        let (periods, repeat) = (self.sampler.periods(), self.sampler.repeats());
+    fn cursor(&self, span: Span) -> Self::Cursor<'_> {
         let mut cursor = TextureCursor {
-            sampler: self.sampler,
+            paint: self,
             light: self.light.cursor(span),
-            s: [0; 2],
-            step: self.step,
-            wrap: if repeat {
-                [periods.0, periods.1]
-            } else {
-                [i32::MAX; 2]
-            },
+            c: [0; 2],
+            step: [0; 2],
             left: u32::MAX,
-            acc: [0; 3],
-            acc_step: [0; 3],
-            rest: 0,
-            base: self.base,
-            exact: [0; 2],
         };
-        let [ps, pt, pq] = self.planes;
-        if self.perspective {
-            cursor.acc = [ps.at(x0, y), pt.at(x0, y), pq.at(x0, y)];
-            cursor.acc_step = [ps.step_x(), pt.step_x(), pq.step_x()];
-            cursor.rest = x1.wrapping_sub(x0).max(0) as u32;
-            cursor.exact = cursor.exact_at(cursor.acc);
-            cursor.left = 0;
-        } else {
-            let at = |p: Plane, base: i32| {
-                i64::from(base).wrapping_add(p.at(x0, y).saturating_add(1 << 15) >> 16)
-            };
-            cursor.s = [
-                reduce(at(ps, self.base[0]), periods.0, repeat),
-                reduce(at(pt, self.base[1]), periods.1, repeat),
-            ];
+        match &self.coords {
+            Coords::Walks([s, t]) => {
+                let Span { y, x0, .. } = span;
+                cursor.c = [s.at(x0, y), t.at(x0, y)];
+                cursor.step = [s.sx, t.sx];
+            }
+            Coords::Perspective(planes) => cursor.start_runs(planes, span),
         }
         cursor
     }

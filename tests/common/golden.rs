@@ -60,11 +60,21 @@ pub fn check(name: &str, w: u32, h: u32, pixels: &[Rgb888]) {
     };
     assert_eq!((gw, gh), (w, h), "golden image {name} has another size");
     let differ = golden.iter().zip(pixels).filter(|(a, b)| a != b).count();
+    let largest = golden
+        .iter()
+        .zip(pixels)
+        .map(|(a, b)| {
+            let d = |x: u8, y: u8| x.abs_diff(y);
+            d(a.r(), b.r()).max(d(a.g(), b.g())).max(d(a.b(), b.b()))
+        })
+        .max()
+        .unwrap_or(0);
     if differ != 0 {
         let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}.actual.png"));
         write_png(&out, w, h, pixels);
         panic!(
-            "{differ} pixels differ from golden image {name}; actual image: {}",
+            "{differ} pixels differ from golden image {name} (by up to {largest} in a \
+             channel); actual image: {}",
             out.display()
         );
     }
