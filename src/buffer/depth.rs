@@ -23,6 +23,12 @@ mod colors {
     pub trait SpanColors<C> {
         /// The next pixel's colour.
         fn next_color(&mut self) -> C;
+        /// Moves past a pixel whose fragment failed. In line, a source whose colour has no
+        /// side effects leaves it uncomputed (a textured pixel unread).
+        #[inline(always)]
+        fn skip(&mut self) {
+            let _ = self.next_color();
+        }
     }
 }
 pub(crate) use colors::SpanColors;
@@ -116,12 +122,14 @@ fn clamped_span<D: DepthFormat, C: Copy, T: DepthTest, K: FragmentCount>(
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = D::from_interpolated(acc);
         acc = acc.wrapping_add(step);
-        let color = colors_in.next_color();
         if z < *d || (le && z == *d) {
             *d = z;
-            *c = color;
-        } else if K::COUNTED {
-            failed = failed.wrapping_add(1);
+            *c = colors_in.next_color();
+        } else {
+            colors_in.skip();
+            if K::COUNTED {
+                failed = failed.wrapping_add(1);
+            }
         }
     }
     failed
@@ -203,13 +211,15 @@ fn unclamped_u16<C: Copy, T: DepthTest, K: FragmentCount>(
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
         let z = (acc >> (U16_STEP_BITS - DROPPED)) as Compared;
         acc = acc.wrapping_add(st);
-        let color = colors_in.next_color();
         let old = Compared::from(*d);
         if z < old || (T::OR_EQUAL && z == old) {
             *d = z as u16;
-            *c = color;
-        } else if K::COUNTED {
-            failed = failed.wrapping_add(1);
+            *c = colors_in.next_color();
+        } else {
+            colors_in.skip();
+            if K::COUNTED {
+                failed = failed.wrapping_add(1);
+            }
         }
     }
     failed

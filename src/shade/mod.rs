@@ -241,10 +241,11 @@ pub struct Textured<'t, L> {
 }
 
 impl<L: Shading> Textured<'_, L> {
-    /// `1/w` weights of the face's vertices for a perspective projection.
-    fn weights(face: &FaceInputs<'_>) -> Option<[i64; 3]> {
+    /// For a perspective projection, what `1/w` at each vertex comes from: the offset and the
+    /// vertex depths.
+    fn depths_for_q(face: &FaceInputs<'_>) -> Option<(i64, [i32; 3])> {
         face.inverse_w_offset
-            .map(|offset| map3(*face.vertices, |v| offset.saturating_sub(v.1 as i64)))
+            .map(|offset| (offset, map3(*face.vertices, |v| v.1)))
     }
 }
 
@@ -260,7 +261,7 @@ impl<'t, L: Shading> Shading for Textured<'t, L> {
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> Self::Paint {
         // The light modulates 8-bit texels: in 8 bits whatever the target's depths.
         let light = self.light.paint(&face.in_8_bits(), lighting);
-        let q = Self::weights(face);
+        let q = Self::depths_for_q(face);
         TexturePaint::new(
             self.texture,
             &face.screen(),
@@ -276,7 +277,7 @@ impl<'t, L: Shading> Shading for Textured<'t, L> {
         lighting: &Lighting<N>,
     ) -> Self::Fallback {
         let light = self.light.fallback(&face.in_8_bits(), lighting);
-        let q = Self::weights(face);
+        let q = Self::depths_for_q(face);
         TexturePaint::new(
             self.texture,
             &face.screen(),

@@ -52,13 +52,15 @@ enum Coords {
 
 impl<'t, L: Paint> TexturePaint<'t, L> {
     /// `texture` across the triangle `p` (doubled signed area `area2`) with raw Q16.16 UVs
-    /// `uv` and weights `q ∝ 1/w` (positive; `None` for an orthographic projection), in
-    /// channels whose largest values are `depths`.
+    /// `uv`, in channels whose largest values are `depths`. For a perspective projection,
+    /// `depths_for_q` gives the vertex depths (Q1.30) and the offset `1/w` is proportional to
+    /// after subtracting them (see `FaceInputs::inverse_w_offset`); `None` for an orthographic
+    /// one.
     pub(crate) fn new(
         texture: &Texture<'t>,
         p: &[ScreenPoint; 3],
         uv: &[[i32; 2]; 3],
-        q: Option<[i64; 3]>,
+        depths_for_q: Option<(i64, [i32; 3])>,
         area2: i64,
         (light, depths): (L, [u8; 3]),
     ) -> Self {
@@ -70,37 +72,29 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         let limit = (SPREAD >> shift) as i32;
         let d = |from: i32, to: i32| to.saturating_sub(from).clamp(-limit, limit) << shift;
         let spread = uv.map(|[u, v]| [d(u0, u), d(v, v0)]);
-        let q = match (texture.mapping(), q) {
-            (Mapping::Perspective, Some(q)) if !nearly_affine(&q, extent(&spread, &sampler)) => {
-                scaled_weights(q)
-            }
-            _ => None,
-        };
-        let ds = |k: usize| spread.map(|v| i64::from(v.get(k).copied().unwrap_or(0)));
-        let coords = match q {
-            Some(q) => {
-                let times_q = |v: [i64; 3]| [v[0] * q[0], v[1] * q[1], v[2] * q[2]];
+        let [[s0, t0], [s1, t1], [s2, t2]] = spread;
+        let coords = match (texture.mapping(), depths_for_q) {
+            (Mapping::Perspective, Some((offset, z)))
+                if !nearly_affine(offset, z, extent(&spread, &sampler)) =>
+            {
+                let q = weights(offset, z);
+                let times_q = |v: [i32; 3]| [0, 1, 2].map(|i| i64::from(v[i]) * q[i]);
                 let den = q.map(|q| q << Q_PLANE_SHIFT);
                 Coords::Perspective(Plane::new_each(
                     p,
-                    [times_q(ds(0)), times_q(ds(1)), den],
+                    [times_q([s0, s1, s2]), times_q([t0, t1, t2]), den],
                     area2,
                 ))
             }
-            None => {
+            _ => {
                 let by_area = AreaWalks::new(area2);
                 // Differences in Q16.16 made positive (within [0, 2²⁶]), walked doubled and
                 // shifted: vertex 0's walk value is its own coordinate.
-                let walk = |k: usize| {
-                    let v = ds(k).map(|d| ((d >> shift) as i32).wrapping_add(limit));
-                    let bias = base
-                        .get(k)
-                        .copied()
-                        .unwrap_or(0)
-                        .wrapping_sub(SPREAD as i32);
-                    by_area.walk_any(p, v, WALK_SHIFT, bias)
+                let walk = |d: [i32; 3], base: i32| {
+                    let v = d.map(|d| (d >> shift).wrapping_add(limit));
+                    by_area.walk_any(p, v, WALK_SHIFT, base.wrapping_sub(SPREAD as i32))
                 };
-                Coords::Walks([walk(0), walk(1)])
+                Coords::Walks([walk([s0, s1, s2], base[0]), walk([t0, t1, t2], base[1])])
             }
         };
         let texel_depths = sampler.depths();
@@ -117,22 +111,19 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
     }
 }
 
-/// The weights scaled so that the largest lies in [2^[`Q_BITS`], 2^([`Q_BITS`] + 1)) (each at
-/// least 1); `None` when they are all equal (nothing to correct).
-fn scaled_weights(q: [i64; 3]) -> Option<[i64; 3]> {
-    let q = q.map(|v| v.max(1));
-    if q[0] == q[1] && q[1] == q[2] {
-        return None;
-    }
+/// The weights `q ∝ 1/w` of vertices at depths `z` (`offset − z`, positive), scaled so that
+/// the largest lies in [2^[`Q_BITS`], 2^([`Q_BITS`] + 1)) (each at least 1).
+fn weights(offset: i64, z: [i32; 3]) -> [i64; 3] {
+    let q = z.map(|z| offset.saturating_sub(i64::from(z)).max(1));
     let shift = magnitude_bits(&q) as i32 - Q_BITS as i32 - 1;
-    Some(q.map(|v| {
+    q.map(|v| {
         let v = if shift > 0 {
             v >> shift
         } else {
             v << (-shift) as u32
         };
         v.max(1)
-    }))
+    })
 }
 
 /// The largest of a triangle's texture coordinate differences from vertex 0 (`spread`), in
@@ -154,20 +145,19 @@ fn extent(spread: &[[i32; 2]; 3], sampler: &Sampler<'_>) -> u32 {
 }
 
 /// True when mapping the triangle linearly errs by less than 1/8 texel anywhere in it, for
-/// weights `q ∝ 1/w` (positive) and coordinates at most `extent` texels (Q16.16) from vertex
-/// 0's. The perspective map's value is `Σλᵢqᵢsᵢ / Q` with `Q = Σλᵢqᵢ`, the linear map's
-/// `Σλᵢsᵢ`; with vertex 0's coordinates taken as 0 they differ by
-/// `|Σλᵢsᵢ(qᵢ − Q)| / Q ≤ extent · Σλᵢ|qᵢ − Q| / Q`, and the mean deviation `Σλᵢ|qᵢ − Q|` of
-/// values between `q_min` and `q_max` is at most `(q_max − q_min) / 2`.
-fn nearly_affine(q: &[i64; 3], extent: u32) -> bool {
-    let lo = q.iter().copied().min().unwrap_or(1).max(1);
-    let hi = q.iter().copied().max().unwrap_or(1);
-    // The weights differ by a depth difference (below 2³¹); far apart, they are not affine.
-    let Ok(spread) = u32::try_from(hi - lo) else {
-        return false;
-    };
-    // extent · (hi − lo) · 4 < lo · 2¹⁶, both sides divided by 4 (the left below 2⁶⁴).
-    u64::from(extent) * u64::from(spread) < (lo.min(1 << 48) as u64) << 14
+/// vertices at depths `z` (weights `q = offset − z ∝ 1/w`) and coordinates at most `extent`
+/// texels (Q16.16) from vertex 0's. The perspective map's value is `Σλᵢqᵢsᵢ / Q` with
+/// `Q = Σλᵢqᵢ`, the linear map's `Σλᵢsᵢ`; with vertex 0's coordinates taken as 0 they differ
+/// by `|Σλᵢsᵢ(qᵢ − Q)| / Q ≤ extent · Σλᵢ|qᵢ − Q| / Q`, and the mean deviation `Σλᵢ|qᵢ − Q|`
+/// of values between `q_min` and `q_max` is at most `(q_max − q_min) / 2`. Equal weights (a
+/// triangle facing the camera) are affine.
+fn nearly_affine(offset: i64, z: [i32; 3], extent: u32) -> bool {
+    let (near, far) = (z[0].min(z[1]).min(z[2]), z[0].max(z[1]).max(z[2]));
+    // q_max − q_min is the depth range (below 2³²), q_min = offset − far.
+    let range = far.wrapping_sub(near) as u32;
+    let least = offset.saturating_sub(i64::from(far)).clamp(1, 1 << 48) as u64;
+    // extent · range · 4 < q_min · 2¹⁶, both sides divided by 4 (the left below 2⁶⁴).
+    u64::from(extent) * u64::from(range) < least << 14
 }
 
 /// A perspective span's state: the planes at the next exact point, their steps, the pixels
