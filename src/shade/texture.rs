@@ -5,7 +5,7 @@ use core::cell::Cell;
 
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-use crate::math::{magnitude_bits, DivideBy};
+use crate::math::{magnitude_bits, mul_short_u32, mul_wide_u32, DivideBy};
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 use crate::texture::{gain, texture_coords, Mapping, Sampler, Texture, COORD_BITS};
 
@@ -88,13 +88,10 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
             }
             _ => {
                 let by_area = AreaWalks::new(area2);
-                // Differences in Q16.16 made positive (within [0, 2²⁶]), walked doubled and
-                // shifted: vertex 0's walk value is its own coordinate.
-                let walk = |d: [i32; 3], base: i32| {
-                    let v = d.map(|d| (d >> shift).wrapping_add(limit));
-                    by_area.walk_any(p, v, WALK_SHIFT, base.wrapping_sub(SPREAD as i32))
-                };
-                Coords::Walks([walk([s0, s1, s2], base[0]), walk([t0, t1, t2], base[1])])
+                Coords::Walks([
+                    coordinate_walk(&by_area, p, [s0, s1, s2], base[0]),
+                    coordinate_walk(&by_area, p, [t0, t1, t2], base[1]),
+                ])
             }
         };
         let texel_depths = sampler.depths();
@@ -109,6 +106,17 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
             runs: Cell::new(Runs::default()),
         }
     }
+}
+
+/// The walk of one texture coordinate whose vertex values are `base` plus `d` (differences
+/// from vertex 0's, within ±[`SPREAD`]): the differences in Q16.16 made positive (within
+/// [0, 2²⁶]), walked doubled and shifted, with a bias that makes vertex 0's walk value its own
+/// coordinate.
+#[inline(always)]
+fn coordinate_walk(by_area: &AreaWalks, p: &[ScreenPoint; 3], d: [i32; 3], base: i32) -> WordPlane {
+    let shift = COORD_BITS - 16;
+    let v = d.map(|d| (d >> shift).wrapping_add((SPREAD >> shift) as i32));
+    by_area.walk_any(p, v, WALK_SHIFT, base.wrapping_sub(SPREAD as i32))
 }
 
 /// The weights `q ∝ 1/w` of vertices at depths `z` (`offset − z`, positive), scaled so that
@@ -137,9 +145,8 @@ fn extent(spread: &[[i32; 2]; 3], sampler: &Sampler<'_>) -> u32 {
             .max()
             .unwrap_or(0)
     };
-    // Below 2²⁹ times a side below 2¹³.
-    let texels = (u64::from(most(0)) * u64::from(width))
-        .max(u64::from(most(1)) * u64::from(height))
+    // Below 2²⁹ times a side of at most 2¹²: two short products.
+    let texels = mul_short_u32(width as i32, most(0)).max(mul_short_u32(height as i32, most(1)))
         >> (COORD_BITS - 16);
     u32::try_from(texels).unwrap_or(u32::MAX)
 }
@@ -157,7 +164,7 @@ fn nearly_affine(offset: i64, z: [i32; 3], extent: u32) -> bool {
     let range = far.wrapping_sub(near) as u32;
     let least = offset.saturating_sub(i64::from(far)).clamp(1, 1 << 48) as u64;
     // extent · range · 4 < q_min · 2¹⁶, both sides divided by 4 (the left below 2⁶⁴).
-    u64::from(extent) * u64::from(range) < least << 14
+    mul_wide_u32(extent, range) < least << 14
 }
 
 /// A perspective span's state: the planes at the next exact point, their steps, the pixels
