@@ -89,7 +89,14 @@ fuzz_target!(|data: &[u8]| {
     let mesh = if with & 2 != 0 { mesh.with_uvs(&uvs).unwrap_or(mesh) } else { mesh };
     let texels: Vec<Rgb888> = (0..12).map(|_| Rgb888::new(b.u8(), b.u8(), b.u8())).collect();
     let (tw, th) = (1 + u16::from(b.u8() % 4), 1 + u16::from(b.u8() % 3));
-    let Ok(texture) = Texture::new(Texels::Rgb888(&texels), tw, th) else {
+    // Texels in 8-bit channels or in 5/6/5 (the two depth families the paint lights).
+    let texels565: Vec<Rgb565> = texels.iter().map(|&c| c.into()).collect();
+    let format = if b.u8() % 2 == 0 {
+        Texels::Rgb888(&texels)
+    } else {
+        Texels::Rgb565(&texels565)
+    };
+    let Ok(texture) = Texture::new(format, tw, th) else {
         return;
     };
     let texture = texture

@@ -37,17 +37,16 @@ pub struct TexturePaint<'t, L> {
     /// Vertex 0's texture coordinates.
     base: [i32; 2],
     coords: Coords,
-    /// The perspective span being drawn (one at a time: its cursor borrows the paint).
-    runs: Cell<Runs>,
 }
 
 /// How a [`TexturePaint`]'s coordinates run across its triangle.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 enum Coords {
     /// Affine: each coordinate walked in 32-bit words, as depth is.
     Walks([WordPlane; 2]),
-    /// Perspective: `(c − c₀)·q` for each coordinate, and `q << Q_PLANE_SHIFT`.
-    Perspective([Plane; 3]),
+    /// Perspective: `(c − c₀)·q` for each coordinate, and `q << Q_PLANE_SHIFT`; and the span
+    /// being drawn (one at a time: its cursor borrows the paint).
+    Perspective([Plane; 3], Cell<Runs>),
 }
 
 impl<'t, L: Paint> TexturePaint<'t, L> {
@@ -80,11 +79,14 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
                 let q = weights(offset, z);
                 let times_q = |v: [i32; 3]| [0, 1, 2].map(|i| i64::from(v[i]) * q[i]);
                 let den = q.map(|q| q << Q_PLANE_SHIFT);
-                Coords::Perspective(Plane::new_each(
-                    p,
-                    [times_q([s0, s1, s2]), times_q([t0, t1, t2]), den],
-                    area2,
-                ))
+                Coords::Perspective(
+                    Plane::new_each(
+                        p,
+                        [times_q([s0, s1, s2]), times_q([t0, t1, t2]), den],
+                        area2,
+                    ),
+                    Cell::new(Runs::default()),
+                )
             }
             _ => {
                 let by_area = AreaWalks::new(area2);
@@ -103,7 +105,6 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
             gains,
             base,
             coords,
-            runs: Cell::new(Runs::default()),
         }
     }
 }
@@ -217,10 +218,10 @@ impl<L: Paint> TextureCursor<'_, '_, L> {
     /// Starts a perspective span (out of line: the usual span is affine, and its start is
     /// then a few instructions the span loop takes in line).
     #[inline(never)]
-    fn start_runs(&mut self, [ps, pt, pq]: &[Plane; 3], span: Span) {
+    fn start_runs(&mut self, [ps, pt, pq]: &[Plane; 3], runs: &Cell<Runs>, span: Span) {
         let Span { y, x0, x1 } = span;
         let acc = [ps.at(x0, y), pt.at(x0, y), pq.at(x0, y)];
-        self.paint.runs.set(Runs {
+        runs.set(Runs {
             acc,
             step: [ps.step_x(), pt.step_x(), pq.step_x()],
             rest: x1.wrapping_sub(x0).max(0) as u32,
@@ -233,7 +234,11 @@ impl<L: Paint> TextureCursor<'_, '_, L> {
     /// [`Texture::with_run`]): exact at both its ends, linear between.
     #[inline(never)]
     fn next_run(&mut self) {
-        let mut runs = self.paint.runs.get();
+        let Coords::Perspective(_, cell) = &self.paint.coords else {
+            self.left = u32::MAX;
+            return;
+        };
+        let mut runs = cell.get();
         let n = runs.rest.clamp(1, u32::from(self.paint.sampler.run).max(1));
         runs.rest = runs.rest.saturating_sub(n);
         let k = i64::from(n);
@@ -247,7 +252,7 @@ impl<L: Paint> TextureCursor<'_, '_, L> {
         let start = runs.exact;
         let end = self.exact_at(runs.acc);
         runs.exact = end;
-        self.paint.runs.set(runs);
+        cell.set(runs);
         // The change along a run lies within ±2³⁰ (twice the spread at most).
         let step = |k: usize| end[k].wrapping_sub(start[k]) / n as i32;
         self.step = [step(0), step(1)];
@@ -316,7 +321,7 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
                 cursor.c = [s.at(x0, y), t.at(x0, y)];
                 cursor.step = [s.sx, t.sx];
             }
-            Coords::Perspective(planes) => cursor.start_runs(planes, span),
+            Coords::Perspective(planes, runs) => cursor.start_runs(planes, runs, span),
         }
         cursor
     }
