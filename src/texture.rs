@@ -491,7 +491,8 @@ impl<'a> Sampler<'a> {
         let x = self.in_texels(c[0], self.width) >> COORD_BITS;
         let y = self.in_texels(c[1], self.height) >> COORD_BITS;
         let raw = self.texels.raw(self.index(x as i32, y as i32));
-        // A channel is at most its depth and the scale at most 2²³ · target / depth: below 2³¹.
+        // A channel is at most its depth `d` and its scale at most 255 times its gain, within
+        // 1.5 of 2²³ · target / (255 · d): the product and the half below 2³².
         let half = 1 << (SCALE_BITS - 1);
         let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
         [ch(0), ch(1), ch(2)]

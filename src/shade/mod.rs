@@ -240,7 +240,20 @@ pub struct Textured<'t, L> {
     pub light: L,
 }
 
-impl<L: Shading> Textured<'_, L> {
+impl<'t, L: Shading> Textured<'t, L> {
+    /// The texture across the face, lit by `light` (in 8 bits: the paint scales each texel by
+    /// it into the target's depths).
+    fn across<P: Paint>(&self, face: &FaceInputs<'_>, light: P) -> TexturePaint<'t, P> {
+        TexturePaint::new(
+            self.texture,
+            &face.screen(),
+            face.uvs,
+            Self::depths_for_q(face),
+            face.area2,
+            (light, face.channels),
+        )
+    }
+
     /// For a perspective projection, what `1/w` at each vertex comes from: the offset and the
     /// vertex depths.
     fn depths_for_q(face: &FaceInputs<'_>) -> Option<(i64, [i32; 3])> {
@@ -259,33 +272,14 @@ impl<'t, L: Shading> Shading for Textured<'t, L> {
     const KEPT_FACE_NORMALS: bool = L::KEPT_FACE_NORMALS;
     const TEXTURED: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, lighting: &Lighting<N>) -> Self::Paint {
-        // The light modulates 8-bit texels: in 8 bits whatever the target's depths.
-        let light = self.light.paint(&face.in_8_bits(), lighting);
-        let q = Self::depths_for_q(face);
-        TexturePaint::new(
-            self.texture,
-            &face.screen(),
-            face.uvs,
-            q,
-            face.area2,
-            (light, face.channels),
-        )
+        self.across(face, self.light.paint(&face.in_8_bits(), lighting))
     }
     fn fallback<const N: usize>(
         &self,
         face: &FaceInputs<'_>,
         lighting: &Lighting<N>,
     ) -> Self::Fallback {
-        let light = self.light.fallback(&face.in_8_bits(), lighting);
-        let q = Self::depths_for_q(face);
-        TexturePaint::new(
-            self.texture,
-            &face.screen(),
-            face.uvs,
-            q,
-            face.area2,
-            (light, face.channels),
-        )
+        self.across(face, self.light.fallback(&face.in_8_bits(), lighting))
     }
 }
 

@@ -77,7 +77,9 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
                 if !nearly_affine(offset, z, extent(&spread, &sampler)) =>
             {
                 let q = weights(offset, z);
-                let times_q = |v: [i32; 3]| [0, 1, 2].map(|i| i64::from(v[i]) * q[i]);
+                let [q0, q1, q2] = q;
+                let times_q =
+                    |[a, b, c]: [i32; 3]| [i64::from(a) * q0, i64::from(b) * q1, i64::from(c) * q2];
                 let den = q.map(|q| q << Q_PLANE_SHIFT);
                 Coords::Perspective(
                     Plane::new_each(
@@ -254,8 +256,8 @@ impl<L: Paint> TextureCursor<'_, '_, L> {
         runs.exact = end;
         cell.set(runs);
         // The change along a run lies within ±2³⁰ (twice the spread at most).
-        let step = |k: usize| end[k].wrapping_sub(start[k]) / n as i32;
-        self.step = [step(0), step(1)];
+        let step = |end: i32, start: i32| end.wrapping_sub(start) / n as i32;
+        self.step = [step(end[0], start[0]), step(end[1], start[1])];
         self.c = start;
         self.left = n;
     }
@@ -264,7 +266,7 @@ impl<L: Paint> TextureCursor<'_, '_, L> {
 /// An 8-bit light's scales: its channels times the gains.
 #[inline(always)]
 fn scales(light: Rgb888, [r, g, b]: [u32; 3]) -> [u32; 3] {
-    // 8-bit lights times gains below 2²⁹ · target / texel depth: see `Sampler::lit`.
+    // A gain is at most 2²³ · 255 / 31 / 255 + 2 (see `gain`): times 255, below 2²⁷.
     [
         u32::from(light.r()) * r,
         u32::from(light.g()) * g,
