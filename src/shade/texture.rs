@@ -194,54 +194,37 @@ pub struct TextureCursor<'p, 't, L: Paint> {
 }
 
 impl<L: Paint> TextureCursor<'_, '_, L> {
-    /// The texture coordinates at the planes' values `acc`.
-    #[inline]
-    fn exact_at(&self, acc: [i64; 3]) -> [i32; 2] {
-        let paint = self.paint;
-        let [u, v, q] = acc;
-        // (c − c₀) = U / q = U·2¹² / (Q >> 12), Q = q·2²⁴: every value below 2⁵⁹.
-        let by = DivideBy::new((q >> 12).max(1));
-        let limit = 1i64 << 46;
-        let repeat = paint.sampler.repeats();
-        let at = |n: i64, base: i32| {
-            let d = by
-                .round(n.clamp(-limit, limit) << 12)
-                .clamp(-SPREAD, SPREAD);
-            if repeat {
-                (d as i32).wrapping_add(base)
-            } else {
-                // Within ±(2³⁰ + 2²⁹): beyond the same edge as the exact value.
-                (d + i64::from(base)) as i32
-            }
-        };
-        [at(u, paint.base[0]), at(v, paint.base[1])]
-    }
-
     /// Starts a perspective span (out of line: the usual span is affine, and its start is
-    /// then a few instructions the span loop takes in line).
+    /// then a few instructions the span loop takes in line). Takes no reference to the cursor,
+    /// which the span loop then keeps in registers.
     #[inline(never)]
-    fn start_runs(&mut self, [ps, pt, pq]: &[Plane; 3], runs: &Cell<Runs>, span: Span) {
+    fn start_runs(
+        paint: &TexturePaint<'_, L>,
+        [ps, pt, pq]: &[Plane; 3],
+        runs: &Cell<Runs>,
+        span: Span,
+    ) {
         let Span { y, x0, x1 } = span;
         let acc = [ps.at(x0, y), pt.at(x0, y), pq.at(x0, y)];
         runs.set(Runs {
             acc,
             step: [ps.step_x(), pt.step_x(), pq.step_x()],
             rest: x1.wrapping_sub(x0).max(0) as u32,
-            exact: self.exact_at(acc),
+            exact: exact_at(paint, acc),
         });
-        self.left = 0;
     }
 
-    /// Starts the next run of at most the texture's run of pixels (see
-    /// [`Texture::with_run`]): exact at both its ends, linear between.
+    /// The next run of at most the texture's run of pixels (see [`Texture::with_run`]):
+    /// exact at both its ends, linear between. Returns the coordinates at its start, their
+    /// steps and its length; takes no reference to the cursor, which the span loop then keeps
+    /// in registers.
     #[inline(never)]
-    fn next_run(&mut self) {
-        let Coords::Perspective(_, cell) = &self.paint.coords else {
-            self.left = u32::MAX;
-            return;
+    fn next_run(paint: &TexturePaint<'_, L>) -> ([i32; 2], [i32; 2], u32) {
+        let Coords::Perspective(_, cell) = &paint.coords else {
+            return ([0; 2], [0; 2], u32::MAX);
         };
         let mut runs = cell.get();
-        let n = runs.rest.clamp(1, u32::from(self.paint.sampler.run).max(1));
+        let n = runs.rest.clamp(1, u32::from(paint.sampler.run).max(1));
         runs.rest = runs.rest.saturating_sub(n);
         let k = i64::from(n);
         let [a0, a1, a2] = runs.acc;
@@ -252,15 +235,35 @@ impl<L: Paint> TextureCursor<'_, '_, L> {
             a2.wrapping_add(s2.wrapping_mul(k)),
         ];
         let start = runs.exact;
-        let end = self.exact_at(runs.acc);
+        let end = exact_at(paint, runs.acc);
         runs.exact = end;
         cell.set(runs);
         // The change along a run lies within ±2³⁰ (twice the spread at most).
         let step = |end: i32, start: i32| end.wrapping_sub(start) / n as i32;
-        self.step = [step(end[0], start[0]), step(end[1], start[1])];
-        self.c = start;
-        self.left = n;
+        (start, [step(end[0], start[0]), step(end[1], start[1])], n)
     }
+}
+
+/// The texture coordinates at the perspective planes' values `acc`.
+#[inline]
+fn exact_at<L>(paint: &TexturePaint<'_, L>, acc: [i64; 3]) -> [i32; 2] {
+    let [u, v, q] = acc;
+    // (c − c₀) = U / q = U·2¹² / (Q >> 12), Q = q·2²⁴: every value below 2⁵⁹.
+    let by = DivideBy::new((q >> 12).max(1));
+    let limit = 1i64 << 46;
+    let repeat = paint.sampler.repeats();
+    let at = |n: i64, base: i32| {
+        let d = by
+            .round(n.clamp(-limit, limit) << 12)
+            .clamp(-SPREAD, SPREAD);
+        if repeat {
+            (d as i32).wrapping_add(base)
+        } else {
+            // Within ±(2³⁰ + 2²⁹): beyond the same edge as the exact value.
+            (d + i64::from(base)) as i32
+        }
+    };
+    [at(u, paint.base[0]), at(v, paint.base[1])]
 }
 
 /// An 8-bit light's scales: its channels times the gains.
@@ -280,7 +283,7 @@ impl<L: Paint> Iterator for TextureCursor<'_, '_, L> {
     #[inline(always)]
     fn next(&mut self) -> Option<Rgb888> {
         if self.left == 0 {
-            self.next_run();
+            (self.c, self.step, self.left) = Self::next_run(self.paint);
         }
         self.left = self.left.wrapping_sub(1);
         let paint = self.paint;
@@ -323,7 +326,10 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
                 cursor.c = [s.at(x0, y), t.at(x0, y)];
                 cursor.step = [s.sx, t.sx];
             }
-            Coords::Perspective(planes, runs) => cursor.start_runs(planes, runs, span),
+            Coords::Perspective(planes, runs) => {
+                TextureCursor::start_runs(self, planes, runs, span);
+                cursor.left = 0;
+            }
         }
         cursor
     }
