@@ -384,7 +384,7 @@ impl<'a> Texture<'a> {
     #[must_use]
     pub fn sample(&self, u: i32, v: i32) -> Rgb888 {
         let sampler = Sampler::new(self);
-        let scale = sampler.depths().map(|d| gain(255, d) * 255);
+        let scale = sampler.gains([255; 3]).map(|g| g * 255);
         let [r, g, b] = sampler.lit(texture_coords(u, v, sampler.repeats()), scale);
         Rgb888::new(r, g, b)
     }
@@ -468,10 +468,15 @@ impl<'a> Sampler<'a> {
         (self.width, self.height)
     }
 
-    /// The texel depths (largest channel values) of the format.
+    /// Per channel, the [`gain`] from the texels' depth to `target`'s (largest channel
+    /// values): what a channel times an 8-bit light is scaled by.
     #[inline(always)]
-    pub(crate) fn depths(&self) -> [u8; 3] {
-        self.texels.depths()
+    pub(crate) fn gains(&self, target: [u8; 3]) -> [u32; 3] {
+        let [r, g, b] = target;
+        match self.texels.depths() {
+            [31, 63, 31] => [gain(r, 31), gain(g, 63), gain(b, 31)],
+            _ => [gain(r, 255), gain(g, 255), gain(b, 255)],
+        }
     }
 
     /// A texture coordinate in the image: wrapped or clamped into [0, 1), times `side`, with

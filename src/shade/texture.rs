@@ -7,7 +7,7 @@ use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 use crate::math::{magnitude_bits, mul_short_u32, mul_wide_u32, DivideBy};
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
-use crate::texture::{gain, texture_coords, Mapping, Sampler, Texture, COORD_BITS};
+use crate::texture::{texture_coords, Mapping, Sampler, Texture, COORD_BITS};
 
 use super::Paint;
 
@@ -30,7 +30,7 @@ const WALK_SHIFT: u32 = COORD_BITS - 17;
 pub struct TexturePaint<'t, L> {
     sampler: Sampler<'t>,
     light: L,
-    /// Per channel, the gain from the texels' depth to the target's (see [`gain`]).
+    /// Per channel, the gain from the texels' depth to the target's (see [`Sampler::gains`]).
     gains: [u32; 3],
     /// A solid light's scales (see [`Sampler::lit`]).
     scale: [u32; 3],
@@ -66,15 +66,29 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         let sampler = Sampler::new(texture);
         let [u0, v0] = uv[0];
         let base = texture_coords(u0, v0, sampler.repeats());
-        // Differences from vertex 0 in texture coordinates (t runs down: 1 − v), in words.
+        // Differences from vertex 0 (t runs down: 1 − v), Q16.16, and the largest of each.
+        let d = |from: i32, to: i32| to.saturating_sub(from);
+        let differences = uv.map(|[u, v]| [d(u0, u), d(v, v0)]);
+        let most = |k: usize| {
+            differences
+                .iter()
+                .map(|v| v.get(k).map_or(0, |d| d.unsigned_abs()))
+                .max()
+                .unwrap_or(0)
+        };
+        let (most_s, most_t) = (most(0), most(1));
+        // In texture coordinates, held within the spread (clamped only where one is beyond it).
         let shift = COORD_BITS - 16;
         let limit = (SPREAD >> shift) as i32;
-        let d = |from: i32, to: i32| to.saturating_sub(from).clamp(-limit, limit) << shift;
-        let spread = uv.map(|[u, v]| [d(u0, u), d(v, v0)]);
+        let spread = if most_s.max(most_t) > limit as u32 {
+            differences.map(|v| v.map(|d| d.clamp(-limit, limit) << shift))
+        } else {
+            differences.map(|v| v.map(|d| d << shift))
+        };
         let [[s0, t0], [s1, t1], [s2, t2]] = spread;
         let coords = match (texture.mapping(), depths_for_q) {
             (Mapping::Perspective, Some((offset, z)))
-                if !nearly_affine(offset, z, extent(&spread, &sampler)) =>
+                if !nearly_affine(offset, z, extent((most_s, most_t), &sampler)) =>
             {
                 let q = weights(offset, z);
                 let [q0, q1, q2] = q;
@@ -98,8 +112,7 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
                 ])
             }
         };
-        let texel_depths = sampler.depths();
-        let gains = [0, 1, 2].map(|k| gain(depths[k], texel_depths[k]));
+        let gains = sampler.gains(depths);
         TexturePaint {
             sampler,
             scale: scales(light.solid().unwrap_or(Rgb888::WHITE), gains),
@@ -137,20 +150,12 @@ fn weights(offset: i64, z: [i32; 3]) -> [i64; 3] {
     })
 }
 
-/// The largest of a triangle's texture coordinate differences from vertex 0 (`spread`), in
-/// texels (Q16.16), saturated to 32 bits.
-fn extent(spread: &[[i32; 2]; 3], sampler: &Sampler<'_>) -> u32 {
+/// The largest of a triangle's texture coordinate differences from vertex 0, in texels
+/// (Q16.16), saturated to 32 bits, from the largest UV differences (Q16.16) along each axis.
+fn extent((most_s, most_t): (u32, u32), sampler: &Sampler<'_>) -> u32 {
     let (width, height) = sampler.sides();
-    let most = |k: usize| {
-        spread
-            .iter()
-            .map(|v| v.get(k).map_or(0, |d| d.unsigned_abs()))
-            .max()
-            .unwrap_or(0)
-    };
-    // Below 2²⁹ times a side of at most 2¹²: two short products.
-    let texels = mul_short_u32(width as i32, most(0)).max(mul_short_u32(height as i32, most(1)))
-        >> (COORD_BITS - 16);
+    // A side is at most 2¹²: two short products.
+    let texels = mul_short_u32(width as i32, most_s).max(mul_short_u32(height as i32, most_t));
     u32::try_from(texels).unwrap_or(u32::MAX)
 }
 
