@@ -1,7 +1,7 @@
 //! Fuzzes the renderer: random meshes (any coordinates, invalid indices among them, with or
 //! without vertex normals and UVs), cameras, ambient, directional and point lights, viewports,
-//! band heights, storage sizes, shadings, styles, textures (every wrap, filter, mapping and
-//! run) and highlights. It must never panic (overflow checks and debug assertions are on),
+//! band heights, storage sizes, shadings, styles, textures (24-bit and 5/6/5 texels, every
+//! wrap, filter, mapping and run) and highlights. It must never panic (overflow checks and debug assertions are on),
 //! never write outside its buffers (canary cells after them) or the display, and draw a frame
 //! in bands as it draws it in one pass.
 #![no_main]
