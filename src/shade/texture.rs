@@ -196,6 +196,8 @@ pub struct TextureCursor<'p, 't, L: Paint> {
     step: [i32; 2],
     /// Pixels left before the next exact point (perspective), or more than any span has.
     left: u32,
+    /// The paint's solid light's scales, copied once a span (read at every pixel).
+    scale: [u32; 3],
 }
 
 impl<L: Paint> TextureCursor<'_, '_, L> {
@@ -293,7 +295,7 @@ impl<L: Paint> Iterator for TextureCursor<'_, '_, L> {
         self.left = self.left.wrapping_sub(1);
         let paint = self.paint;
         let scale = if L::SOLID {
-            paint.scale
+            self.scale
         } else {
             scales(self.light.next().unwrap_or(Rgb888::WHITE), paint.gains)
         };
@@ -324,6 +326,7 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
             c: [0; 2],
             step: [0; 2],
             left: u32::MAX,
+            scale: self.scale,
         };
         match &self.coords {
             Coords::Walks([s, t]) => {
