@@ -194,7 +194,8 @@ pub struct TextureCursor<'p, 't, L: Paint> {
     /// fraction bits).
     c: [i32; 2],
     step: [i32; 2],
-    /// Pixels left before the next exact point (perspective), or more than any span has.
+    /// Pixels the current run has left (perspective: at none, the next pixel starts the next
+    /// run), or more than any span has.
     left: u32,
     /// The paint's solid light's scales, copied once a span (read at every pixel).
     scale: [u32; 3],
@@ -289,10 +290,13 @@ impl<L: Paint> Iterator for TextureCursor<'_, '_, L> {
 
     #[inline(always)]
     fn next(&mut self) -> Option<Rgb888> {
-        if self.left == 0 {
-            (self.c, self.step, self.left) = Self::next_run(self.paint);
+        // One subtraction, whose borrow starts the next run (perspective only).
+        let (left, ended) = self.left.overflowing_sub(1);
+        self.left = left;
+        if ended {
+            let (c, step, n) = Self::next_run(self.paint);
+            (self.c, self.step, self.left) = (c, step, n.wrapping_sub(1));
         }
-        self.left = self.left.wrapping_sub(1);
         let paint = self.paint;
         let scale = if L::SOLID {
             self.scale
