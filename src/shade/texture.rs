@@ -66,72 +66,79 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         let sampler = Sampler::new(texture);
         let [u0, v0] = uv[0];
         let base = texture_coords(u0, v0, sampler.repeats());
-        // Differences from vertex 0 (t runs down: 1 − v), Q16.16, and the largest of each.
+        // Differences from vertex 0 (t runs down: 1 − v), Q16.16, held within the spread
+        // (clamped only where one is beyond it). Written out: at the firmware's opt-level "s"
+        // an array's `map` stays a loop.
+        let [_, [ua, va], [ub, vb]] = *uv;
         let d = |from: i32, to: i32| to.saturating_sub(from);
-        let differences = uv.map(|[u, v]| [d(u0, u), d(v, v0)]);
-        let most = |k: usize| {
-            differences
-                .iter()
-                .map(|v| v.get(k).map_or(0, |d| d.unsigned_abs()))
-                .max()
-                .unwrap_or(0)
-        };
-        let (most_s, most_t) = (most(0), most(1));
-        // In texture coordinates, held within the spread (clamped only where one is beyond it).
-        let shift = COORD_BITS - 16;
-        let limit = (SPREAD >> shift) as i32;
-        let spread = if most_s.max(most_t) > limit as u32 {
-            differences.map(|v| v.map(|d| d.clamp(-limit, limit) << shift))
-        } else {
-            differences.map(|v| v.map(|d| d << shift))
-        };
-        let [[s0, t0], [s1, t1], [s2, t2]] = spread;
-        let coords = match (texture.mapping(), depths_for_q) {
+        let (mut s1, mut s2, mut t1, mut t2) = (d(u0, ua), d(u0, ub), d(va, v0), d(vb, v0));
+        let (most_s, most_t) = (
+            s1.unsigned_abs().max(s2.unsigned_abs()),
+            t1.unsigned_abs().max(t2.unsigned_abs()),
+        );
+        let limit = (SPREAD >> (COORD_BITS - 16)) as i32;
+        if most_s.max(most_t) > limit as u32 {
+            let held = |d: i32| d.clamp(-limit, limit);
+            (s1, s2, t1, t2) = (held(s1), held(s2), held(t1), held(t2));
+        }
+        let gains = sampler.gains(depths);
+        let perspective = match (texture.mapping(), depths_for_q) {
             (Mapping::Perspective, Some((offset, z)))
                 if !nearly_affine(offset, z, extent((most_s, most_t), &sampler)) =>
             {
-                let q = weights(offset, z);
-                let [q0, q1, q2] = q;
-                let times_q =
-                    |[a, b, c]: [i32; 3]| [i64::from(a) * q0, i64::from(b) * q1, i64::from(c) * q2];
-                let den = q.map(|q| q << Q_PLANE_SHIFT);
-                Coords::Perspective(
-                    Plane::new_each(
-                        p,
-                        [times_q([s0, s1, s2]), times_q([t0, t1, t2]), den],
-                        area2,
-                    ),
-                    Cell::new(Runs::default()),
-                )
+                Some((offset, z))
             }
-            _ => {
-                let by_area = AreaWalks::new(area2);
-                Coords::Walks([
-                    coordinate_walk(&by_area, p, [s0, s1, s2], base[0]),
-                    coordinate_walk(&by_area, p, [t0, t1, t2], base[1]),
-                ])
-            }
+            _ => None,
         };
-        let gains = sampler.gains(depths);
-        TexturePaint {
+        // Built in place: the perspective variant, far larger, is written only where needed.
+        let mut paint = TexturePaint {
             sampler,
             scale: scales(light.solid().unwrap_or(Rgb888::WHITE), gains),
             light,
             gains,
             base,
-            coords,
+            coords: Coords::Walks([WordPlane::default(); 2]),
+        };
+        match perspective {
+            Some((offset, z)) => {
+                let q = weights(offset, z);
+                let [q0, q1, q2] = q;
+                // In texture coordinates, times the weights (vertex 0's difference is 0).
+                let shift = COORD_BITS - 16;
+                let times_q = |d1: i32, d2: i32| {
+                    [0, i64::from(d1 << shift) * q1, i64::from(d2 << shift) * q2]
+                };
+                let den = [q0, q1, q2].map(|q| q << Q_PLANE_SHIFT);
+                paint.coords = Coords::Perspective(
+                    Plane::new_each(p, [times_q(s1, s2), times_q(t1, t2), den], area2),
+                    Cell::new(Runs::default()),
+                );
+            }
+            None => {
+                let by_area = AreaWalks::new(area2);
+                paint.coords = Coords::Walks([
+                    coordinate_walk(&by_area, p, (s1, s2), base[0]),
+                    coordinate_walk(&by_area, p, (t1, t2), base[1]),
+                ]);
+            }
         }
+        paint
     }
 }
 
-/// The walk of one texture coordinate whose vertex values are `base` plus `d` (differences
-/// from vertex 0's, within ±[`SPREAD`]): the differences in Q16.16 made positive (within
-/// [0, 2²⁶]), walked doubled and shifted, with a bias that makes vertex 0's walk value its own
-/// coordinate.
+/// The walk of one texture coordinate whose vertex values are `base` plus `0`, `d1` and `d2`
+/// (differences from vertex 0's, Q16.16, within ±2²⁵): the differences made positive (within
+/// [0, 2²⁶]), walked doubled and shifted into texture coordinates, with a bias that makes
+/// vertex 0's walk value its own coordinate.
 #[inline(always)]
-fn coordinate_walk(by_area: &AreaWalks, p: &[ScreenPoint; 3], d: [i32; 3], base: i32) -> WordPlane {
-    let shift = COORD_BITS - 16;
-    let v = d.map(|d| (d >> shift).wrapping_add((SPREAD >> shift) as i32));
+fn coordinate_walk(
+    by_area: &AreaWalks,
+    p: &[ScreenPoint; 3],
+    (d1, d2): (i32, i32),
+    base: i32,
+) -> WordPlane {
+    let up = (SPREAD >> (COORD_BITS - 16)) as i32;
+    let v = [up, d1.wrapping_add(up), d2.wrapping_add(up)];
     by_area.walk_any(p, v, WALK_SHIFT, base.wrapping_sub(SPREAD as i32))
 }
 
@@ -170,9 +177,11 @@ fn nearly_affine(offset: i64, z: [i32; 3], extent: u32) -> bool {
     let (near, far) = (z[0].min(z[1]).min(z[2]), z[0].max(z[1]).max(z[2]));
     // q_max − q_min is the depth range (below 2³²), q_min = offset − far.
     let range = far.wrapping_sub(near) as u32;
-    let least = offset.saturating_sub(i64::from(far)).clamp(1, 1 << 48) as u64;
-    // extent · range · 4 < q_min · 2¹⁶, both sides divided by 4 (the left below 2⁶⁴).
-    mul_wide_u32(extent, range) < least << 14
+    // A projection's offset and a depth are far inside i64: no wrap.
+    let least = offset.wrapping_sub(i64::from(far)).max(1) as u64;
+    // extent · range · 4 < q_min · 2¹⁶: both sides divided by 4, then by 2¹⁴ (the left below
+    // 2⁶⁴, floored: for a whole q_min, the same test).
+    mul_wide_u32(extent, range) >> 14 < least
 }
 
 /// A perspective span's state: the planes at the next exact point, their steps, the pixels
