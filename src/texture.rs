@@ -424,17 +424,30 @@ pub(crate) fn gain(target: u8, texel: u8) -> u32 {
     (u32::from(target) * r) >> (32 - SCALE_BITS)
 }
 
+/// How a pixel reads a texture: its nearest texel, in the texture's format, or (`Bilinear`)
+/// the four nearest blended. One tag for both, so that one match a pixel decides them.
+#[derive(Clone, Copy, Debug)]
+enum Read<'a> {
+    Rgb565(&'a [Rgb565]),
+    Bgr565(&'a [Bgr565]),
+    Rgb888(&'a [Rgb888]),
+    Bgr888(&'a [Bgr888]),
+    Gray8(&'a [Gray8]),
+    Rgb565Be(&'a [u8]),
+    Bilinear,
+}
+
 /// A texture as each triangle's paint reads it (copied into the paint: the texels' slice,
 /// the sides and how they are read).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Sampler<'a> {
     texels: Texels<'a>,
+    read: Read<'a>,
     width: u32,
     height: u32,
     /// What a coordinate is masked with before it is clamped into one image: its fraction
     /// bits when the texture repeats, all of them when it is clamped.
     mask: i32,
-    bilinear: bool,
     /// Pixels between exact divisions along a span (perspective, at least 1).
     pub(crate) run: u8,
 }
@@ -451,7 +464,15 @@ impl<'a> Sampler<'a> {
             } else {
                 -1
             },
-            bilinear: texture.filter == Filter::Bilinear,
+            read: match (texture.filter, texture.texels) {
+                (Filter::Bilinear, _) => Read::Bilinear,
+                (_, Texels::Rgb565(s)) => Read::Rgb565(s),
+                (_, Texels::Bgr565(s)) => Read::Bgr565(s),
+                (_, Texels::Rgb888(s)) => Read::Rgb888(s),
+                (_, Texels::Bgr888(s)) => Read::Bgr888(s),
+                (_, Texels::Gray8(s)) => Read::Gray8(s),
+                (_, Texels::Rgb565Be(s)) => Read::Rgb565Be(s),
+            },
             run: texture.run,
         }
     }
@@ -490,12 +511,20 @@ impl<'a> Sampler<'a> {
     /// [`gain`] times its 8-bit light) and rounded: the lit colour in the target's depths.
     #[inline(always)]
     pub(crate) fn lit(&self, c: [i32; 2], scale: [u32; 3]) -> [u8; 3] {
-        if self.bilinear {
-            return self.bilinear(c, scale);
-        }
         let x = self.in_texels(c[0], self.width) >> COORD_BITS;
         let y = self.in_texels(c[1], self.height) >> COORD_BITS;
-        let raw = self.texels.raw(self.index(x as i32, y as i32));
+        let i = self.index(x as i32, y as i32);
+        // Each arm's format is known, so the read's own match folds into this one.
+        let texels = match self.read {
+            Read::Rgb565(s) => Texels::Rgb565(s),
+            Read::Bgr565(s) => Texels::Bgr565(s),
+            Read::Rgb888(s) => Texels::Rgb888(s),
+            Read::Bgr888(s) => Texels::Bgr888(s),
+            Read::Gray8(s) => Texels::Gray8(s),
+            Read::Rgb565Be(s) => Texels::Rgb565Be(s),
+            Read::Bilinear => return self.bilinear(c, scale),
+        };
+        let raw = texels.raw(i);
         // A channel is at most its depth `d` and its scale at most 255 times its gain, within
         // 1.5 of 2²³ · target / (255 · d): the product and the half below 2³².
         let half = 1 << (SCALE_BITS - 1);
