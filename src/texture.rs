@@ -76,8 +76,8 @@ impl<'a> Texels<'a> {
     pub fn rgb(&self, i: usize) -> Rgb888 {
         let black = Rgb888::BLACK;
         match self {
-            Texels::Rgb565(s) => s.get(i).map_or(black, |&c| widened(c.r(), c.g(), c.b())),
-            Texels::Bgr565(s) => s.get(i).map_or(black, |&c| widened(c.r(), c.g(), c.b())),
+            Texels::Rgb565(s) => s.get(i).map_or(black, |&c| c.into()),
+            Texels::Bgr565(s) => s.get(i).map_or(black, |&c| c.into()),
             Texels::Rgb888(s) => s.get(i).copied().unwrap_or(black),
             Texels::Bgr888(s) => s.get(i).map_or(black, |&c| c.into()),
             Texels::Gray8(s) => s.get(i).map_or(black, |&c| c.into()),
@@ -86,7 +86,9 @@ impl<'a> Texels<'a> {
                 match (s.get(at), s.get(at.wrapping_add(1))) {
                     (Some(&hi), Some(&lo)) => {
                         let raw = u16::from_be_bytes([hi, lo]);
-                        widened((raw >> 11) as u8, (raw >> 5 & 63) as u8, raw as u8 & 31)
+                        let c =
+                            Rgb565::new((raw >> 11) as u8, (raw >> 5 & 63) as u8, raw as u8 & 31);
+                        c.into()
                     }
                     _ => black,
                 }
@@ -149,31 +151,6 @@ pub(crate) fn texture_coords(u: i32, v: i32, repeat: bool) -> [i32; 2] {
         (q as i32).wrapping_shl(shift)
     };
     [coord(i64::from(u)), coord((1i64 << 16) - i64::from(v))]
-}
-
-/// A 5-bit channel in 8 bits, as embedded-graphics converts it (`round(v · 255 / 31)`).
-const WIDE5: [u8; 32] = widening_table::<32>();
-/// A 6-bit channel in 8 bits, as embedded-graphics converts it (`round(v · 255 / 63)`).
-const WIDE6: [u8; 64] = widening_table::<64>();
-
-/// Each `N`-level channel value in 8 bits by embedded-graphics' own formula.
-const fn widening_table<const N: usize>() -> [u8; N] {
-    let scale = (255u32 << 24) / (N as u32 - 1);
-    let mut table = [0; N];
-    let mut v = 0;
-    while v < N {
-        table[v] = ((v as u32 * scale + (1 << 23)) >> 24) as u8;
-        v += 1;
-    }
-    table
-}
-
-/// A 5/6/5-bit colour's channels in 24-bit colour, by table (what `Rgb888::from` gives, with
-/// no product per channel).
-#[inline(always)]
-fn widened(r: u8, g: u8, b: u8) -> Rgb888 {
-    let wide5 = |v: u8| WIDE5[usize::from(v & 31)];
-    Rgb888::new(wide5(r), WIDE6[usize::from(g & 63)], wide5(b))
 }
 
 macro_rules! texels_from {
@@ -586,15 +563,6 @@ impl<'a> Sampler<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// 16-bit texels widen to what embedded-graphics' conversion gives, for every colour.
-    #[test]
-    fn widened_565_is_the_conversion() {
-        for raw in 0..=u16::MAX {
-            let c = Rgb565::new((raw >> 11) as u8, (raw >> 5 & 63) as u8, raw as u8 & 31);
-            assert_eq!(widened(c.r(), c.g(), c.b()), Rgb888::from(c), "{raw:#06x}");
-        }
-    }
 
     /// Every format reads the colour it stores, and Rgb565 bytes read as the colour does.
     #[test]
