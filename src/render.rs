@@ -569,11 +569,6 @@ where
 /// any band of it can then be drawn, in any order, from any thread (it is only read), into
 /// buffers of the caller's. What [`Renderer::render`] does band by band.
 ///
-/// Each band reads only the bins of its own rows (a model's bins are sorted by their top
-/// rows), and draws them in that order: a model's triangles that cover a pixel at exactly
-/// the same depth may then show the other one than a single pass over the mesh would. Models
-/// are drawn in the order given, in bands as in one pass.
-///
 /// ```
 /// use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 /// use fixed3d::mesh::CUBE;

@@ -99,9 +99,6 @@ pub struct Bin {
     object: u16,
     top: u16,
     bottom: u16,
-    /// The last row that this bin or one before it in its object's run reaches (see
-    /// [`sort_by_rows`]): a band starts reading where this gets to its first row.
-    reach: u16,
 }
 
 impl Bin {
@@ -111,117 +108,12 @@ impl Bin {
         object: 0,
         top: 0,
         bottom: 0,
-        reach: 0,
     };
 
     /// The tag of the objects whose triangle this is (see `Prepared::bin`).
     pub(crate) fn object(&self) -> u16 {
         self.object
     }
-
-    /// The rows of a triangle that crosses a clip plane: all of them (its screen rows are
-    /// known only once it is clipped). No other bin's bottom row is `u16::MAX`.
-    const EVERY_ROW: (u16, u16) = (0, u16::MAX);
-
-    /// Which of the [`ROW_GROUPS`] its run is sorted into: 0 for a triangle that crosses a
-    /// clip plane, otherwise 1 plus its top row shifted right by `shift` (see [`row_shift`]).
-    #[inline(always)]
-    fn group(&self, shift: u32) -> usize {
-        if self.bottom == Self::EVERY_ROW.1 {
-            0
-        } else {
-            (1 + usize::from(self.top >> shift)).min(ROW_GROUPS - 1)
-        }
-    }
-}
-
-/// The groups of rows an object's bins are sorted into, so that a band finds its triangles
-/// by two binary searches instead of reading every bin.
-const ROW_GROUPS: usize = 64;
-
-/// The shift from a row to its group: the least that puts every row of a viewport `height`
-/// rows high into one of [`ROW_GROUPS`]` − 1` groups.
-fn row_shift(height: u32) -> u32 {
-    let mut shift = 0;
-    while (height.saturating_sub(1) >> shift) as usize >= ROW_GROUPS - 1 {
-        shift += 1;
-    }
-    shift
-}
-
-/// How many of an object's bins each group holds: binning counts them as it goes.
-type GroupCounts = [usize; ROW_GROUPS];
-
-/// Counts `bin` into `counts` (see [`sort_by_rows`]).
-#[inline(always)]
-fn count_group(counts: &mut GroupCounts, bin: &Bin, shift: u32) {
-    if let Some(n) = counts.get_mut(bin.group(shift)) {
-        *n += 1;
-    }
-}
-
-/// Sorts one object's bins by [`Bin::group`] in place, given how many each group holds (a
-/// counting sort: each bin moved once, to its group's next free place), and sets their
-/// `reach`. Within a group the order is the sort's: where two triangles of an object have
-/// equal depths at a pixel, a band may show the other one than a single pass does.
-fn sort_by_rows(bins: &mut [Bin], counts: &GroupCounts, shift: u32) {
-    // `next[g]`: where group g's next bin goes.
-    let mut next = [0usize; ROW_GROUPS];
-    let mut start = 0;
-    for (n, &count) in next.iter_mut().zip(counts) {
-        (*n, start) = (start, start + count);
-    }
-    // Where the group being filled ends.
-    let mut e = 0;
-    for (g, &count) in counts.iter().enumerate() {
-        e += count;
-        let mut i = next.get(g).copied().unwrap_or(e);
-        while i < e {
-            let Some(&here) = bins.get(i) else {
-                break;
-            };
-            let h = here.group(shift);
-            if h == g {
-                i += 1;
-                continue;
-            }
-            // The bin goes to its group's next free place, and the bin that was there comes
-            // here to be looked at in turn. Copied, not swapped: `swap` calls the block move
-            // routine for each bin.
-            let Some(j) = next.get_mut(h).map(|n| {
-                *n += 1;
-                *n - 1
-            }) else {
-                break;
-            };
-            let Some(there) = bins.get_mut(j).map(|to| core::mem::replace(to, here)) else {
-                break;
-            };
-            if let Some(from) = bins.get_mut(i) {
-                *from = there;
-            }
-        }
-    }
-    let mut reach = 0;
-    for bin in bins.iter_mut() {
-        if bin.group(shift) > 0 {
-            reach = reach.max(bin.bottom);
-        }
-        bin.reach = reach;
-    }
-}
-
-/// The bins of one object's run (sorted by [`sort_by_rows`]) that a band of rows
-/// `[y0, y1)` must look at: those crossing a clip plane, then those of the groups up to
-/// row `y1 − 1`'s from the first whose reach gets to `y0`.
-fn bins_for_rows(run: &[Bin], y0: u16, y1: u16, shift: u32) -> (&[Bin], &[Bin]) {
-    let (clipped, rest) = run.split_at(run.partition_point(|b| b.group(shift) == 0));
-    let last = 1 + usize::from(y1.saturating_sub(1) >> shift);
-    let rest = rest
-        .get(..rest.partition_point(|b| b.group(shift) <= last))
-        .unwrap_or(&[]);
-    let first = rest.partition_point(|b| b.reach < y0);
-    (clipped, rest.get(first..).unwrap_or(&[]))
 }
 
 /// Per-object constants for drawing.
@@ -320,26 +212,11 @@ impl<const N: usize> ObjectSetup<'_, N> {
     }
 }
 
-/// The rows `[first, end)` a triangle may cover: row py is sampled at 16·py + 8, so it can be
-/// covered only if min y ≤ 16·py + 8 < max y, that is for rows
-/// `[ceil((min−8)/16), ceil((max−8)/16))`.
-#[inline(always)]
-fn row_range(p: &[ScreenPoint; 3]) -> (i64, i64) {
-    // Written out: at the firmware's opt-level "s" an iterator's `min` stays a loop.
-    let ymin = p[0].y.min(p[1].y).min(p[2].y);
-    let ymax = p[0].y.max(p[1].y).max(p[2].y);
-    (
-        crate::raster::first_centre_from(ymin as i64),
-        crate::raster::first_centre_from(ymax as i64),
-    )
-}
-
-/// The rows a triangle may cover ([`row_range`]) overlap the clip's rows. Its iterators stay:
-/// `fill_face`, which every frame runs, holds this test for bands, and with `row_range`
-/// written out in it the compiler lays out `fill_face` worse (measured on the Cortex-M4F).
+/// Rows `[ceil((min−8)/16), ceil((max−8)/16))` of a triangle overlap the clip's rows.
 fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
     let ymin = p.iter().map(|q| q.y).min().unwrap_or(0);
     let ymax = p.iter().map(|q| q.y).max().unwrap_or(0);
+    // Row py is sampled at 16·py + 8; it can be covered only if ymin ≤ 16·py + 8 < ymax.
     let first = crate::raster::first_centre_from(ymin as i64);
     let end = crate::raster::first_centre_from(ymax as i64);
     first < clip.y1 as i64 && end > clip.y0 as i64
@@ -511,9 +388,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// with the rows it may touch, tagged `tag` plus its object's index in the scene; invalid,
     /// outside, culled and degenerate ones and those that cover no pixel row are counted in
     /// `stats` instead. A triangle that crosses a clip plane is binned for every row (its
-    /// clipping and culling wait for the draw). Each object's bins are then sorted by rows
-    /// ([`sort_by_rows`]). False when `bins` is full: the frame must then be drawn by
-    /// [`draw`](Self::draw) for every band.
+    /// clipping and culling wait for the draw). False when `bins` is full: the frame must then
+    /// be drawn by [`draw`](Self::draw) for every band.
     pub(crate) fn bin(
         &self,
         tag: u16,
@@ -522,10 +398,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         stats: &mut Stats,
     ) -> bool {
         let cull = self.frame.cull;
-        let shift = row_shift(self.frame.viewport.height());
         for (j, setup) in self.objects(false).enumerate() {
             let object = tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX));
-            let (start, mut counts) = (*len, [0; ROW_GROUPS]);
             let triangles = setup.object.mesh.triangles();
             add_count(&mut stats.primitives, triangles.len());
             for (k, tri) in triangles.iter().enumerate() {
@@ -538,10 +412,13 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     if !kept(cull, inside_area2(&p), stats) {
                         continue;
                     }
-                    let (first, end) = row_range(&p);
-                    // Below `u16::MAX`, the bottom row of clipped triangles alone.
-                    let row = |r: i64| r.clamp(0, u16::MAX as i64 - 1) as u16;
-                    if end <= first.max(0) || first >= u16::MAX as i64 {
+                    // Rows whose centres (16·row + 8) lie in [min y, max y): see `rows_overlap`.
+                    let ymin = p.iter().map(|q| q.y).min().unwrap_or(0);
+                    let ymax = p.iter().map(|q| q.y).max().unwrap_or(0);
+                    let first = crate::raster::first_centre_from(ymin as i64);
+                    let end = crate::raster::first_centre_from(ymax as i64);
+                    let row = |r: i64| r.clamp(0, u16::MAX as i64) as u16;
+                    if end <= first.max(0) || first > u16::MAX as i64 {
                         continue;
                     }
                     (row(first), row(end - 1))
@@ -550,7 +427,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     continue;
                 } else {
                     bump(&mut stats.clipped);
-                    Bin::EVERY_ROW
+                    (0, u16::MAX)
                 };
                 let Some(slot) = bins.get_mut(*len) else {
                     return false;
@@ -560,21 +437,15 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     object,
                     top: rows.0,
                     bottom: rows.1,
-                    reach: 0,
                 };
-                count_group(&mut counts, slot, shift);
                 *len += 1;
-            }
-            if let Some(run) = bins.get_mut(start..*len) {
-                sort_by_rows(run, &counts, shift);
             }
         }
         true
     }
 
     /// Fills the triangles of `bins` tagged for this frame (`tag` plus an object's index, as
-    /// [`bin`](Self::bin) wrote and sorted them) whose rows meet the target's, reading only
-    /// the bins of the target's rows ([`bins_for_rows`]). Counts only what it draws
+    /// [`bin`](Self::bin) wrote them) whose rows meet the target's. Counts only what it draws
     /// (`drawn`, `fragments`, `written`): the rest was counted when binning.
     pub(crate) fn draw_binned<T: RasterTarget>(
         &self,
@@ -583,46 +454,42 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         bins: &[Bin],
     ) -> Result<Stats, T::Error> {
         let clip = target.clip();
-        let row = |y: i32| y.clamp(0, i32::from(u16::MAX)) as u16;
-        let (y0, y1) = (row(clip.y0), row(clip.y1));
-        let shift = row_shift(self.frame.viewport.height());
+        let (y0, y1) = (clip.y0, clip.y1);
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
-        let band = clip.y0 > 0 || clip.y1 < self.frame.viewport.height() as i32;
+        let band = y0 > 0 || y1 < self.frame.viewport.height() as i32;
         let mut stats = Stats::default();
         // Counts of a triangle's second look (clipped again, culled after clipping) go here.
         let mut again = Stats::default();
-        let mut rest = bins;
-        while let Some(object) = rest.first().map(Bin::object) {
-            // Each object's bins are a run, sorted by rows.
-            let (run, after) = rest.split_at(rest.partition_point(|b| b.object == object));
-            rest = after;
-            let (clipped, sorted) = bins_for_rows(run, y0, y1, shift);
-            // Sorted bins touch the band's rows by their own: only the pieces of a clipped
-            // triangle are tested again when they are shaded.
-            let Some(setup) = object
-                .checked_sub(tag)
-                .and_then(|j| self.objects(band && !clipped.is_empty()).nth(j as usize))
-            else {
+        let mut current: Option<(u16, ObjectSetup<'_, N>)> = None;
+        for bin in bins {
+            if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
+                continue;
+            }
+            let Some(j) = bin.object.checked_sub(tag) else {
                 continue;
             };
-            for bin in clipped.iter().chain(sorted) {
-                if bin.top >= y1 || bin.bottom < y0 {
-                    continue;
-                }
-                let k = bin.triangle as usize;
-                let Some(tri) = setup.object.mesh.triangles().get(k) else {
-                    continue;
-                };
-                self.triangle(
-                    target,
-                    &setup,
-                    (k, tri),
-                    setup.inside,
-                    self.frame.cull,
-                    &map,
-                    &mut again,
-                )?;
+            if current.as_ref().is_none_or(|(o, _)| *o != bin.object) {
+                current = self
+                    .objects(band)
+                    .nth(j as usize)
+                    .map(|setup| (bin.object, setup));
             }
+            let Some((_, setup)) = &current else {
+                continue;
+            };
+            let k = bin.triangle as usize;
+            let Some(tri) = setup.object.mesh.triangles().get(k) else {
+                continue;
+            };
+            self.triangle(
+                target,
+                setup,
+                (k, tri),
+                setup.inside,
+                self.frame.cull,
+                &map,
+                &mut again,
+            )?;
         }
         stats.drawn = again.drawn;
         stats.fragments = again.fragments;
@@ -987,80 +854,6 @@ mod tests {
     use crate::raster::short_sides_area;
     use crate::scene::{LightColor, Scene};
     use crate::shade::Flat;
-
-    /// Sorting an object's bins by rows keeps every bin, orders them by group, sets each
-    /// reach to the last row of the unclipped bins up to it, and a band of any rows then finds
-    /// every bin that touches them (and every clipped one): random bins for viewports of every
-    /// kind of height, random bands.
-    #[test]
-    fn bins_sorted_by_rows_give_each_band_its_triangles() {
-        let mut x = 0x9E37_79B9u32;
-        let mut random = move |n: u32| {
-            x ^= x << 13;
-            x ^= x >> 17;
-            x ^= x << 5;
-            x % n
-        };
-        for height in [1, 2, 12, 62, 63, 64, 240, 241, 1000, 2048] {
-            let shift = row_shift(height);
-            assert!(((height - 1) >> shift) < ROW_GROUPS as u32 - 1, "{height}");
-            for len in [0, 1, 2, 7, 100, 600] {
-                let mut bins: vec::Vec<Bin> = (0..len)
-                    .map(|k| {
-                        let (top, bottom) = if random(10) == 0 {
-                            Bin::EVERY_ROW
-                        } else {
-                            let top = random(height) as u16;
-                            (top, top + random(height - u32::from(top)) as u16)
-                        };
-                        let reach = random(100) as u16;
-                        Bin {
-                            triangle: k,
-                            object: 3,
-                            top,
-                            bottom,
-                            reach,
-                        }
-                    })
-                    .collect();
-                let mut before = bins.clone();
-                let mut counts = [0; ROW_GROUPS];
-                bins.iter().for_each(|b| count_group(&mut counts, b, shift));
-                sort_by_rows(&mut bins, &counts, shift);
-                let mut after = bins.clone();
-                let key = |b: &Bin| (b.triangle, b.top, b.bottom);
-                before.sort_by_key(key);
-                after.sort_by_key(key);
-                assert!(before.iter().zip(&after).all(|(a, b)| key(a) == key(b)));
-                assert_eq!(before.len(), after.len());
-                assert!(bins
-                    .windows(2)
-                    .all(|w| w[0].group(shift) <= w[1].group(shift)));
-                let mut reach = 0;
-                for bin in &bins {
-                    if bin.bottom != u16::MAX {
-                        reach = reach.max(bin.bottom);
-                    }
-                    assert_eq!(bin.reach, reach);
-                }
-                for _ in 0..50 {
-                    let y0 = random(height) as u16;
-                    let y1 = y0 + 1 + random(height - u32::from(y0)) as u16;
-                    let (clipped, rows) = bins_for_rows(&bins, y0, y1, shift);
-                    let found = |b: &Bin| clipped.iter().chain(rows).any(|f| f == b);
-                    for bin in &bins {
-                        let touches = bin.top < y1 && bin.bottom >= y0;
-                        assert!(!touches || found(bin), "{height} {len} {y0}..{y1} {bin:?}");
-                    }
-                    assert!(clipped.iter().all(|b| b.bottom == u16::MAX));
-                    assert_eq!(
-                        clipped.len(),
-                        bins.iter().filter(|b| b.bottom == u16::MAX).count()
-                    );
-                }
-            }
-        }
-    }
 
     /// The cross product in words of triangles whose vertices lie within `GUARD` of a screen
     /// centre (every vertex inside every clip plane) is the exact doubled area: at random
