@@ -99,6 +99,9 @@ pub struct Bin {
     object: u16,
     top: u16,
     bottom: u16,
+    /// For the first bin of a block ([`BLOCK`]), the block's top row; for the second, its
+    /// bottom row (see [`summarize_blocks`]).
+    block: u16,
 }
 
 impl Bin {
@@ -108,11 +111,37 @@ impl Bin {
         object: 0,
         top: 0,
         bottom: 0,
+        block: 0,
     };
 
     /// The tag of the objects whose triangle this is (see `Prepared::bin`).
     pub(crate) fn object(&self) -> u16 {
         self.object
+    }
+}
+
+/// Bins a band skips at once when their rows are all outside its own. Each band still reads
+/// the bins it draws in the order binning wrote them (the mesh's): triangles at equal depths
+/// then cover each other as in one pass.
+const BLOCK: usize = 32;
+
+/// Writes into each block of `bins` the rows its bins span: the least top row into the
+/// first bin, the greatest bottom row into the second (a block of one bin has none).
+fn summarize_blocks(bins: &mut [Bin]) {
+    for block in bins.chunks_mut(BLOCK) {
+        let top = block.iter().map(|b| b.top).min().unwrap_or(0);
+        let bottom = block.iter().map(|b| b.bottom).max().unwrap_or(u16::MAX);
+        if let [first, second, ..] = block {
+            (first.block, second.block) = (top, bottom);
+        }
+    }
+}
+
+/// Whether a block of bins summarized by [`summarize_blocks`] may touch rows `[y0, y1)`.
+fn block_touches(block: &[Bin], y0: i32, y1: i32) -> bool {
+    match block {
+        [first, second, ..] => i32::from(first.block) < y1 && i32::from(second.block) >= y0,
+        _ => true,
     }
 }
 
@@ -397,7 +426,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         len: &mut usize,
         stats: &mut Stats,
     ) -> bool {
-        let cull = self.frame.cull;
+        let (cull, first) = (self.frame.cull, *len);
         for (j, setup) in self.objects(false).enumerate() {
             let object = tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX));
             let triangles = setup.object.mesh.triangles();
@@ -413,8 +442,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                         continue;
                     }
                     // Rows whose centres (16·row + 8) lie in [min y, max y): see `rows_overlap`.
-                    let ymin = p.iter().map(|q| q.y).min().unwrap_or(0);
-                    let ymax = p.iter().map(|q| q.y).max().unwrap_or(0);
+                    // Written out: at the firmware's opt-level "s" an iterator's `min` over
+                    // three stays a loop.
+                    let ymin = p[0].y.min(p[1].y).min(p[2].y);
+                    let ymax = p[0].y.max(p[1].y).max(p[2].y);
                     let first = crate::raster::first_centre_from(ymin as i64);
                     let end = crate::raster::first_centre_from(ymax as i64);
                     let row = |r: i64| r.clamp(0, u16::MAX as i64) as u16;
@@ -437,9 +468,13 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     object,
                     top: rows.0,
                     bottom: rows.1,
+                    block: 0,
                 };
                 *len += 1;
             }
+        }
+        if let Some(run) = bins.get_mut(first..*len) {
+            summarize_blocks(run);
         }
         true
     }
@@ -461,7 +496,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Counts of a triangle's second look (clipped again, culled after clipping) go here.
         let mut again = Stats::default();
         let mut current: Option<(u16, ObjectSetup<'_, N>)> = None;
-        for bin in bins {
+        let blocks = bins.chunks(BLOCK).filter(|b| block_touches(b, y0, y1));
+        for bin in blocks.flatten() {
             if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
                 continue;
             }
@@ -854,6 +890,50 @@ mod tests {
     use crate::raster::short_sides_area;
     use crate::scene::{LightColor, Scene};
     use crate::shade::Flat;
+
+    /// A band skips a block of bins only when none of them touches its rows: random bins
+    /// (some binned for every row) in runs of every length around a block, random bands.
+    #[test]
+    fn skipped_blocks_hold_no_bin_of_the_band() {
+        let mut random = crate::testing::XorShift(7);
+        for len in [0, 1, 2, BLOCK - 1, BLOCK, BLOCK + 1, 5 * BLOCK + 3] {
+            let mut bins: vec::Vec<Bin> = (0..len)
+                .map(|_| {
+                    let top = (random.next_u64() % 240) as u16;
+                    let (top, bottom) = if random.next_u64().is_multiple_of(16) {
+                        (0, u16::MAX)
+                    } else {
+                        (top, top + (random.next_u64() % 30) as u16)
+                    };
+                    Bin {
+                        top,
+                        bottom,
+                        ..Bin::EMPTY
+                    }
+                })
+                .collect();
+            summarize_blocks(&mut bins);
+            for _ in 0..200 {
+                let y0 = (random.next_u64() % 250) as i32;
+                let y1 = y0 + 1 + (random.next_u64() % 20) as i32;
+                for block in bins.chunks(BLOCK) {
+                    let touched = block
+                        .iter()
+                        .any(|b| i32::from(b.top) < y1 && i32::from(b.bottom) >= y0);
+                    assert!(!touched || block_touches(block, y0, y1), "{len} {y0}..{y1}");
+                }
+            }
+        }
+        // A block of bins in rows 3 to 9 is skipped by the bands that miss those rows.
+        let mut bins = [Bin {
+            top: 3,
+            bottom: 9,
+            ..Bin::EMPTY
+        }; BLOCK];
+        summarize_blocks(&mut bins);
+        assert!(!block_touches(&bins, 0, 3) && !block_touches(&bins, 10, 20));
+        assert!(block_touches(&bins, 9, 10) && block_touches(&bins, 0, 4));
+    }
 
     /// The cross product in words of triangles whose vertices lie within `GUARD` of a screen
     /// centre (every vertex inside every clip plane) is the exact doubled area: at random
