@@ -118,6 +118,10 @@ impl Bin {
     pub(crate) fn object(&self) -> u16 {
         self.object
     }
+
+    /// The rows of a triangle that crosses a clip plane: all of them (its screen rows are
+    /// known only once it is clipped).
+    const EVERY_ROW: (u16, u16) = (0, u16::MAX);
 }
 
 /// Bins a band skips at once when their rows are all outside its own. Each band still reads
@@ -458,7 +462,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     continue;
                 } else {
                     bump(&mut stats.clipped);
-                    (0, u16::MAX)
+                    Bin::EVERY_ROW
                 };
                 let Some(slot) = bins.get_mut(*len) else {
                     return false;
@@ -510,9 +514,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     .nth(j as usize)
                     .map(|setup| (bin.object, setup));
             }
-            let Some((_, setup)) = &current else {
+            let Some((_, setup)) = &mut current else {
                 continue;
             };
+            // A bin's rows are the triangle's own: only the pieces of a clipped one (binned
+            // for every row) are tested against the band's rows again.
+            setup.band = band && (bin.top, bin.bottom) == Bin::EVERY_ROW;
             let k = bin.triangle as usize;
             let Some(tri) = setup.object.mesh.triangles().get(k) else {
                 continue;
