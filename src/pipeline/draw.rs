@@ -120,7 +120,7 @@ impl Bin {
     }
 
     /// The rows of a triangle that crosses a clip plane: all of them (its screen rows are
-    /// known only once it is clipped).
+    /// known only once it is clipped). No other bin's bottom row is `u16::MAX`.
     const EVERY_ROW: (u16, u16) = (0, u16::MAX);
 }
 
@@ -452,8 +452,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     let ymax = p[0].y.max(p[1].y).max(p[2].y);
                     let first = crate::raster::first_centre_from(ymin as i64);
                     let end = crate::raster::first_centre_from(ymax as i64);
-                    let row = |r: i64| r.clamp(0, u16::MAX as i64) as u16;
-                    if end <= first.max(0) || first > u16::MAX as i64 {
+                    // Below `u16::MAX`, the bottom row of clipped triangles alone.
+                    let row = |r: i64| r.clamp(0, u16::MAX as i64 - 1) as u16;
+                    if end <= first.max(0) || first >= u16::MAX as i64 {
                         continue;
                     }
                     (row(first), row(end - 1))
@@ -500,8 +501,11 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Counts of a triangle's second look (clipped again, culled after clipping) go here.
         let mut again = Stats::default();
         let mut current: Option<(u16, ObjectSetup<'_, N>)> = None;
-        let blocks = bins.chunks(BLOCK).filter(|b| block_touches(b, y0, y1));
-        for bin in blocks.flatten() {
+        for bin in bins
+            .chunks(BLOCK)
+            .filter(|b| block_touches(b, y0, y1))
+            .flatten()
+        {
             if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
                 continue;
             }
@@ -519,7 +523,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             };
             // A bin's rows are the triangle's own: only the pieces of a clipped one (binned
             // for every row) are tested against the band's rows again.
-            setup.band = band && (bin.top, bin.bottom) == Bin::EVERY_ROW;
+            setup.band = band && bin.bottom == Bin::EVERY_ROW.1;
             let k = bin.triangle as usize;
             let Some(tri) = setup.object.mesh.triangles().get(k) else {
                 continue;
