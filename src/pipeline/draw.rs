@@ -20,18 +20,17 @@ use crate::scene::{LightColor, Lighting};
 use crate::shade::{FaceInputs, Paint, Shading};
 
 /// What a triangle's vertices carry to its shading: lit colours (per-vertex shading) and UVs
-/// (textured shading).
-#[derive(Clone, Copy, Debug, Default)]
-struct Varyings {
-    rgb: [[i32; 3]; 3],
-    uv: [[i32; 2]; 3],
+/// (textured shading), each borrowed, so that a shading that reads one builds only that one.
+#[derive(Clone, Copy, Debug)]
+struct Varyings<'v> {
+    rgb: &'v [[i32; 3]; 3],
+    uv: &'v [[i32; 2]; 3],
 }
 
-/// The varyings handed to shadings that read none: one array of zeros, which no triangle
-/// stores.
-const NO_VARYINGS: Varyings = Varyings {
-    rgb: [[0; 3]; 3],
-    uv: [[0; 2]; 3],
+/// The varyings handed to shadings that read none: arrays of zeros, which no triangle stores.
+const NO_VARYINGS: Varyings<'static> = Varyings {
+    rgb: &[[0; 3]; 3],
+    uv: &[[0; 2]; 3],
 };
 
 /// Doubled signed area, y down: negative for front faces.
@@ -383,20 +382,21 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             // Written out: at the firmware's opt-level "s" `array::map` stays a loop.
             let v = [(a.point(), a.z), (b.point(), b.z), (c.point(), c.z)];
             // Vertex colours matter only to per-vertex shading, UVs to textures.
-            let carried;
-            let varyings = if S::PER_VERTEX || S::TEXTURED {
-                let rgb = |v: &ScreenVertex| map3(v.rgb, |c| c as i32);
-                let mut both = NO_VARYINGS;
-                if S::PER_VERTEX {
-                    both.rgb = [rgb(a), rgb(b), rgb(c)];
-                }
-                if S::TEXTURED {
-                    both.uv = tri.map(|i| setup.uv(i));
-                }
-                carried = both;
-                &carried
-            } else {
-                &NO_VARYINGS
+            let (rgb, uv);
+            let varyings = Varyings {
+                rgb: if S::PER_VERTEX {
+                    let lit = |v: &ScreenVertex| map3(v.rgb, |c| c as i32);
+                    rgb = [lit(a), lit(b), lit(c)];
+                    &rgb
+                } else {
+                    NO_VARYINGS.rgb
+                },
+                uv: if S::TEXTURED {
+                    uv = tri.map(|i| setup.uv(i));
+                    &uv
+                } else {
+                    NO_VARYINGS.uv
+                },
             };
             self.fill_face(
                 target,
@@ -590,11 +590,11 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 let area = area2(&[v[0].0, v[1].0, v[2].0]);
                 if kept(facing, area, stats) {
                     let varyings = Varyings {
-                        rgb: [first.2, v1.2, v2.2],
-                        uv: [first.3, v1.3, v2.3],
+                        rgb: &[first.2, v1.2, v2.2],
+                        uv: &[first.3, v1.3, v2.3],
                     };
                     let face = (Self::face_normal(setup, k), tri);
-                    self.fill_face(target, setup, face, &v, &varyings, area, stats)?;
+                    self.fill_face(target, setup, face, &v, varyings, area, stats)?;
                 }
             }
         }
@@ -613,7 +613,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         setup: &ObjectSetup<'_, N>,
         (kept, tri): (Option<&FaceNormal>, &Triangle),
         v: &[(ScreenPoint, i32); 3],
-        varyings: &Varyings,
+        varyings: Varyings<'_>,
         area: i64,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
@@ -640,14 +640,14 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             // Read by per-vertex shading only: for the others the argument is dead, and the
             // compiler drops it from the call.
             colors: if S::PER_VERTEX {
-                &varyings.rgb
+                varyings.rgb
             } else {
-                &NO_VARYINGS.rgb
+                NO_VARYINGS.rgb
             },
             uvs: if S::TEXTURED {
-                &varyings.uv
+                varyings.uv
             } else {
-                &NO_VARYINGS.uv
+                NO_VARYINGS.uv
             },
             inverse_w_offset: self.frame.inverse_w_offset,
             area2: area,
