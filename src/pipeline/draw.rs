@@ -485,8 +485,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     }
 
     /// Fills the triangles of `bins` tagged for this frame (`tag` plus an object's index, as
-    /// [`bin`](Self::bin) wrote them) whose rows meet the target's. Counts only what it draws
-    /// (`drawn`, `fragments`, `written`): the rest was counted when binning.
+    /// [`bin`](Self::bin) wrote them) whose rows meet the target's. `bins` must be all that
+    /// one call of `bin` wrote, from its first: its blocks ([`BLOCK`]) are read from there.
+    /// Counts only what it draws (`drawn`, `fragments`, `written`): the rest was counted when
+    /// binning.
     pub(crate) fn draw_binned<T: RasterTarget>(
         &self,
         target: &mut T,
