@@ -126,7 +126,7 @@ impl Bin {
 /// Bins a band skips at once when their rows are all outside its own. Each band still reads
 /// the bins it draws in the order binning wrote them (the mesh's): triangles at equal depths
 /// then cover each other as in one pass.
-const BLOCK: usize = 32;
+const BLOCK: usize = 64;
 
 /// Writes into each block of `bins` the rows its bins span: the least top row into the
 /// first bin, the greatest bottom row into the second (a block of one bin has none).
@@ -503,42 +503,43 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Counts of a triangle's second look (clipped again, culled after clipping) go here.
         let mut again = Stats::default();
         let mut current: Option<(u16, ObjectSetup<'_, N>)> = None;
-        for bin in bins
-            .chunks(BLOCK)
-            .filter(|b| block_touches(b, y0, y1))
-            .flatten()
-        {
-            if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
+        for block in bins.chunks(BLOCK) {
+            if !block_touches(block, y0, y1) {
                 continue;
             }
-            let Some(j) = bin.object.checked_sub(tag) else {
-                continue;
-            };
-            if current.as_ref().is_none_or(|(o, _)| *o != bin.object) {
-                current = self
-                    .objects(band)
-                    .nth(j as usize)
-                    .map(|setup| (bin.object, setup));
+            for bin in block {
+                if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
+                    continue;
+                }
+                let Some(j) = bin.object.checked_sub(tag) else {
+                    continue;
+                };
+                if current.as_ref().is_none_or(|(o, _)| *o != bin.object) {
+                    current = self
+                        .objects(band)
+                        .nth(j as usize)
+                        .map(|setup| (bin.object, setup));
+                }
+                let Some((_, setup)) = &mut current else {
+                    continue;
+                };
+                // A bin's rows are the triangle's own: only the pieces of a clipped one
+                // (binned for every row) are tested against the band's rows again.
+                setup.band = band && bin.bottom == Bin::EVERY_ROW.1;
+                let k = bin.triangle as usize;
+                let Some(tri) = setup.object.mesh.triangles().get(k) else {
+                    continue;
+                };
+                self.triangle(
+                    target,
+                    setup,
+                    (k, tri),
+                    setup.inside,
+                    self.frame.cull,
+                    &map,
+                    &mut again,
+                )?;
             }
-            let Some((_, setup)) = &mut current else {
-                continue;
-            };
-            // A bin's rows are the triangle's own: only the pieces of a clipped one (binned
-            // for every row) are tested against the band's rows again.
-            setup.band = band && bin.bottom == Bin::EVERY_ROW.1;
-            let k = bin.triangle as usize;
-            let Some(tri) = setup.object.mesh.triangles().get(k) else {
-                continue;
-            };
-            self.triangle(
-                target,
-                setup,
-                (k, tri),
-                setup.inside,
-                self.frame.cull,
-                &map,
-                &mut again,
-            )?;
         }
         stats.drawn = again.drawn;
         stats.fragments = again.fragments;
