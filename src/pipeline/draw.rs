@@ -132,8 +132,9 @@ const BLOCK: usize = 64;
 /// first bin, the greatest bottom row into the second (a block of one bin has none).
 fn summarize_blocks(bins: &mut [Bin]) {
     for block in bins.chunks_mut(BLOCK) {
-        let top = block.iter().map(|b| b.top).min().unwrap_or(0);
-        let bottom = block.iter().map(|b| b.bottom).max().unwrap_or(u16::MAX);
+        let (top, bottom) = block.iter().fold((u16::MAX, 0), |(top, bottom), b| {
+            (top.min(b.top), bottom.max(b.bottom))
+        });
         if let [first, second, ..] = block {
             (first.block, second.block) = (top, bottom);
         }
@@ -450,11 +451,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     // three stays a loop.
                     let ymin = p[0].y.min(p[1].y).min(p[2].y);
                     let ymax = p[0].y.max(p[1].y).max(p[2].y);
-                    let first = crate::raster::first_centre_from(ymin as i64);
-                    let end = crate::raster::first_centre_from(ymax as i64);
+                    // Inside every clip plane: coordinates within the guard band, words.
+                    let first = crate::raster::first_centre_from32(ymin);
+                    let end = crate::raster::first_centre_from32(ymax);
                     // Below `u16::MAX`, the bottom row of clipped triangles alone.
-                    let row = |r: i64| r.clamp(0, u16::MAX as i64 - 1) as u16;
-                    if end <= first.max(0) || first >= u16::MAX as i64 {
+                    let row = |r: i32| r.clamp(0, i32::from(u16::MAX) - 1) as u16;
+                    if end <= first.max(0) || first >= i32::from(u16::MAX) {
                         continue;
                     }
                     (row(first), row(end - 1))
