@@ -141,11 +141,13 @@ fn summarize_blocks(bins: &mut [Bin]) {
     }
 }
 
-/// Whether a block of bins summarized by [`summarize_blocks`] may touch rows `[y0, y1)`.
-fn block_touches(block: &[Bin], y0: i32, y1: i32) -> bool {
+/// The top and bottom rows of a block of bins summarized by [`summarize_blocks`] (a block of
+/// one bin, its own).
+fn block_rows(block: &[Bin]) -> (u16, u16) {
     match block {
-        [first, second, ..] => i32::from(first.block) < y1 && i32::from(second.block) >= y0,
-        _ => true,
+        [first, second, ..] => (first.block, second.block),
+        [only] => (only.top, only.bottom),
+        [] => (u16::MAX, 0),
     }
 }
 
@@ -431,9 +433,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         len: &mut usize,
         stats: &mut Stats,
     ) -> bool {
-        let (cull, first) = (self.frame.cull, *len);
+        let cull = self.frame.cull;
         for (j, setup) in self.objects(false).enumerate() {
-            let object = tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX));
+            let (object, first) = (
+                tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX)),
+                *len,
+            );
             let triangles = setup.object.mesh.triangles();
             add_count(&mut stats.primitives, triangles.len());
             for (k, tri) in triangles.iter().enumerate() {
@@ -479,16 +484,17 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 };
                 *len += 1;
             }
-        }
-        if let Some(run) = bins.get_mut(first..*len) {
-            summarize_blocks(run);
+            if let Some(run) = bins.get_mut(first..*len) {
+                summarize_blocks(run);
+            }
         }
         true
     }
 
     /// Fills the triangles of `bins` tagged for this frame (`tag` plus an object's index, as
     /// [`bin`](Self::bin) wrote them) whose rows meet the target's. `bins` must be all that
-    /// one call of `bin` wrote, from its first: its blocks ([`BLOCK`]) are read from there.
+    /// one call of `bin` wrote: each object's run is read in blocks ([`BLOCK`]) from its first
+    /// bin, as `bin` summarized them.
     /// Counts only what it draws (`drawn`, `fragments`, `written`): the rest was counted when
     /// binning.
     pub(crate) fn draw_binned<T: RasterTarget>(
@@ -504,43 +510,45 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let mut stats = Stats::default();
         // Counts of a triangle's second look (clipped again, culled after clipping) go here.
         let mut again = Stats::default();
-        let mut current: Option<(u16, ObjectSetup<'_, N>)> = None;
-        for block in bins.chunks(BLOCK) {
-            if !block_touches(block, y0, y1) {
+        let mut rest = bins;
+        while let Some(object) = rest.first().map(Bin::object) {
+            // An object's bins are a run, in blocks from its first.
+            let (run, after) = rest.split_at(rest.partition_point(|b| b.object == object));
+            rest = after;
+            let Some(mut setup) = object
+                .checked_sub(tag)
+                .and_then(|j| self.objects(band).nth(j.into()))
+            else {
                 continue;
-            }
-            for bin in block {
-                if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
+            };
+            let triangles = setup.object.mesh.triangles();
+            for block in run.chunks(BLOCK) {
+                let (top, bottom) = block_rows(block);
+                if i32::from(top) >= y1 || i32::from(bottom) < y0 {
                     continue;
                 }
-                let Some(j) = bin.object.checked_sub(tag) else {
-                    continue;
-                };
-                if current.as_ref().is_none_or(|(o, _)| *o != bin.object) {
-                    current = self
-                        .objects(band)
-                        .nth(j as usize)
-                        .map(|setup| (bin.object, setup));
+                // A bin's rows are its triangle's own: only the pieces of a clipped one
+                // (binned for every row, the block's bottom) are tested against the band's
+                // rows again.
+                setup.band = band && bottom == Bin::EVERY_ROW.1;
+                for bin in block {
+                    if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
+                        continue;
+                    }
+                    let k = bin.triangle as usize;
+                    let Some(tri) = triangles.get(k) else {
+                        continue;
+                    };
+                    self.triangle(
+                        target,
+                        &setup,
+                        (k, tri),
+                        setup.inside,
+                        self.frame.cull,
+                        &map,
+                        &mut again,
+                    )?;
                 }
-                let Some((_, setup)) = &mut current else {
-                    continue;
-                };
-                // A bin's rows are the triangle's own: only the pieces of a clipped one
-                // (binned for every row) are tested against the band's rows again.
-                setup.band = band && bin.bottom == Bin::EVERY_ROW.1;
-                let k = bin.triangle as usize;
-                let Some(tri) = setup.object.mesh.triangles().get(k) else {
-                    continue;
-                };
-                self.triangle(
-                    target,
-                    setup,
-                    (k, tri),
-                    setup.inside,
-                    self.frame.cull,
-                    &map,
-                    &mut again,
-                )?;
             }
         }
         stats.drawn = again.drawn;
@@ -908,9 +916,14 @@ mod tests {
     use crate::shade::Flat;
 
     /// A band skips a block of bins only when none of them touches its rows: random bins
-    /// (some binned for every row) in runs of every length around a block, random bands.
+    /// (some binned for every row) in runs of every length around a block, random bands; a
+    /// block holds a clipped triangle exactly when its bottom row is every row's.
     #[test]
     fn skipped_blocks_hold_no_bin_of_the_band() {
+        let touches = |block: &[Bin], y0: i32, y1: i32| {
+            let (top, bottom) = block_rows(block);
+            i32::from(top) < y1 && i32::from(bottom) >= y0
+        };
         let mut random = crate::testing::XorShift(7);
         for len in [0, 1, 2, BLOCK - 1, BLOCK, BLOCK + 1, 5 * BLOCK + 3] {
             let mut bins: vec::Vec<Bin> = (0..len)
@@ -936,7 +949,9 @@ mod tests {
                     let touched = block
                         .iter()
                         .any(|b| i32::from(b.top) < y1 && i32::from(b.bottom) >= y0);
-                    assert!(!touched || block_touches(block, y0, y1), "{len} {y0}..{y1}");
+                    assert!(!touched || touches(block, y0, y1), "{len} {y0}..{y1}");
+                    let clipped = block.iter().any(|b| b.bottom == u16::MAX);
+                    assert_eq!(clipped, block_rows(block).1 == u16::MAX);
                 }
             }
         }
@@ -947,8 +962,8 @@ mod tests {
             ..Bin::EMPTY
         }; BLOCK];
         summarize_blocks(&mut bins);
-        assert!(!block_touches(&bins, 0, 3) && !block_touches(&bins, 10, 20));
-        assert!(block_touches(&bins, 9, 10) && block_touches(&bins, 0, 4));
+        assert!(!touches(&bins, 0, 3) && !touches(&bins, 10, 20));
+        assert!(touches(&bins, 9, 10) && touches(&bins, 0, 4));
     }
 
     /// The cross product in words of triangles whose vertices lie within `GUARD` of a screen
