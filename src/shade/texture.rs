@@ -90,37 +90,36 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
             }
             _ => None,
         };
-        // Built in place: the perspective variant, far larger, is written only where needed.
+        // Built in place: the affine walks (most triangles') written where they go, and the
+        // perspective variant, far larger, only where needed.
         let mut paint = TexturePaint {
             sampler,
             scale: scales(light.solid().unwrap_or(Rgb888::WHITE), gains),
             light,
             gains,
             base,
-            coords: Coords::Walks([WordPlane::default(); 2]),
-        };
-        match perspective {
-            Some((offset, z)) => {
-                let q = weights(offset, z);
-                let [q0, q1, q2] = q;
-                // In texture coordinates, times the weights (vertex 0's difference is 0).
-                let shift = COORD_BITS - 16;
-                let times_q = |d1: i32, d2: i32| {
-                    [0, i64::from(d1 << shift) * q1, i64::from(d2 << shift) * q2]
-                };
-                let den = [q0, q1, q2].map(|q| q << Q_PLANE_SHIFT);
-                paint.coords = Coords::Perspective(
-                    Plane::new_each(p, [times_q(s1, s2), times_q(t1, t2), den], area2),
-                    Cell::new(Runs::default()),
-                );
-            }
-            None => {
+            coords: Coords::Walks(if perspective.is_none() {
                 let by_area = AreaWalks::new(area2);
-                paint.coords = Coords::Walks([
+                [
                     coordinate_walk(&by_area, p, (s1, s2), base[0]),
                     coordinate_walk(&by_area, p, (t1, t2), base[1]),
-                ]);
-            }
+                ]
+            } else {
+                [WordPlane::default(); 2]
+            }),
+        };
+        if let Some((offset, z)) = perspective {
+            let q = weights(offset, z);
+            let [q0, q1, q2] = q;
+            // In texture coordinates, times the weights (vertex 0's difference is 0).
+            let shift = COORD_BITS - 16;
+            let times_q =
+                |d1: i32, d2: i32| [0, i64::from(d1 << shift) * q1, i64::from(d2 << shift) * q2];
+            let den = [q0, q1, q2].map(|q| q << Q_PLANE_SHIFT);
+            paint.coords = Coords::Perspective(
+                Plane::new_each(p, [times_q(s1, s2), times_q(t1, t2), den], area2),
+                Cell::new(Runs::default()),
+            );
         }
         paint
     }
