@@ -1,7 +1,7 @@
 //! The common path (`render::Renderer`): the reference torus through it equals its golden
 //! image in one pass and in bands of any height, with bins and without; a prepared frame drawn
 //! from two threads gives the image of one pass; wire and solid models occlude each other;
-//! each setup error is reported, never a panic.
+//! each setup error is reported, never a panic; a band draws a model in mesh order.
 
 mod common;
 
@@ -379,4 +379,44 @@ fn a_display_whose_box_is_off_the_origin_gets_the_same_frame() {
         .render(&models, &lights(), &camera(), &mut view)
         .unwrap();
     assert!(screen.pixels == direct.pixels);
+}
+
+/// Two coplanar triangles of one model, overlapping, lit differently (Gouraud, each with its
+/// own vertex normals): where their depths tie, the first in the mesh shows, as in one pass,
+/// in bands whose first holds the second triangle's top row and not the first's. Their order
+/// matters (swapped, one pass differs), so bands that drew by rows would differ.
+#[test]
+#[cfg(feature = "gouraud")]
+fn bands_draw_a_model_in_mesh_order() {
+    use fixed3d::math::Vec3;
+    let v = |x: f64, y: f64| Vec3::from([x, y, 0.0]);
+    let positions = [
+        v(-0.8, -0.6),
+        v(0.8, -0.6),
+        v(0.0, 0.3),
+        v(-0.6, -0.3),
+        v(0.6, -0.3),
+        v(0.0, 0.7),
+    ];
+    let (front, tilted) = (Vec3::from([0, 0, 1]), Vec3::from([0.8, 0.0, 0.6]));
+    let normals = [front, front, front, tilted, tilted, tilted];
+    let image = |triangles: &[[u16; 3]], rows: u32| {
+        let mesh = Mesh::new(&positions, triangles)
+            .unwrap()
+            .with_normals(&normals)
+            .unwrap();
+        let models = [Model::new(&mesh, BASE).shaded(Shade::Gouraud)];
+        let (screen, stats) = render(&models, rows, 2);
+        assert!(stats.drawn >= 2, "{stats:?}");
+        screen.pixels
+    };
+    let (first, second) = ([0, 1, 2], [3, 4, 5]);
+    let one_pass = image(&[first, second], 240);
+    assert!(one_pass != image(&[second, first], 240), "no pixel ties");
+    for rows in [4, 13, 16, 40] {
+        assert!(
+            image(&[first, second], rows) == one_pass,
+            "bands of {rows} rows"
+        );
+    }
 }
