@@ -386,9 +386,9 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 /// size.
 ///
 /// Bins are what make bands cheap: each band skips the blocks of bins whose rows miss its own
-/// and fetches, shades and sets up only the triangles that touch them, in the mesh's order. A frame whose visible triangles do not fit
-/// is still drawn right, by walking every triangle for every band; one drawn in a single pass
-/// needs none (`TRIANGLES` may then be 0).
+/// and fetches, shades and sets up only the triangles that touch them, in the mesh's order.
+/// A frame whose visible triangles do not fit is still drawn right, by walking every triangle
+/// for every band; one drawn in a single pass needs none (`TRIANGLES` may then be 0).
 ///
 /// ```
 /// use fixed3d::render::Storage;

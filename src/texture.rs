@@ -402,7 +402,9 @@ pub(crate) fn gain(target: u8, texel: u8) -> u32 {
 }
 
 /// How a pixel reads a texture: its nearest texel, in the texture's format, or (`Bilinear`)
-/// the four nearest blended. One tag for both, so that one match a pixel decides them.
+/// the four nearest blended. It repeats [`Texels`]' variants on purpose: one flat tag for
+/// format and filter, so that one match a pixel decides both (a flag beside `Texels`, or an
+/// `Option<Texels>`, measured slower in the span loop).
 #[derive(Clone, Copy, Debug)]
 enum Read<'a> {
     Rgb565(&'a [Rgb565]),

@@ -1,9 +1,9 @@
 //! Fuzzes the renderer: random meshes (any coordinates, invalid indices among them, with or
 //! without vertex normals and UVs), cameras, ambient, directional and point lights, viewports,
 //! band heights, storage sizes, shadings, styles, textures (24-bit and 5/6/5 texels, every
-//! wrap, filter, mapping and run) and highlights. It must never panic (overflow checks and debug assertions are on),
-//! never write outside its buffers (canary cells after them) or the display, and draw a frame
-//! in bands as it draws it in one pass.
+//! wrap, filter, mapping and run) and highlights. It must never panic (overflow checks and
+//! debug assertions are on), never write outside its buffers (canary cells after them) or the
+//! display, and draw a frame in bands as it draws it in one pass.
 #![no_main]
 
 use embedded_graphics::draw_target::DrawTarget;

@@ -15,6 +15,8 @@ use super::Paint;
 /// across): the perspective planes' values then stay below 2⁴⁶, and the walks' values, with
 /// vertex 0's added, within ±2³¹ where a clamped texture needs them to be.
 const SPREAD: i64 = 1 << 29;
+/// [`SPREAD`] as a UV difference (Q16.16).
+const SPREAD_UV: i32 = (SPREAD >> (COORD_BITS - 16)) as i32;
 /// Vertex weights `q ∝ 1/w` are scaled so that the largest lies in [2¹⁶, 2¹⁷).
 const Q_BITS: u32 = 16;
 /// The denominator plane carries `q` shifted by this (its values below 2⁴¹).
@@ -76,9 +78,8 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
             s1.unsigned_abs().max(s2.unsigned_abs()),
             t1.unsigned_abs().max(t2.unsigned_abs()),
         );
-        let limit = (SPREAD >> (COORD_BITS - 16)) as i32;
-        if most_s.max(most_t) > limit as u32 {
-            let held = |d: i32| d.clamp(-limit, limit);
+        if most_s.max(most_t) > SPREAD_UV as u32 {
+            let held = |d: i32| d.clamp(-SPREAD_UV, SPREAD_UV);
             (s1, s2, t1, t2) = (held(s1), held(s2), held(t1), held(t2));
         }
         let gains = sampler.gains(depths);
@@ -136,8 +137,11 @@ fn coordinate_walk(
     (d1, d2): (i32, i32),
     base: i32,
 ) -> WordPlane {
-    let up = (SPREAD >> (COORD_BITS - 16)) as i32;
-    let v = [up, d1.wrapping_add(up), d2.wrapping_add(up)];
+    let v = [
+        SPREAD_UV,
+        d1.wrapping_add(SPREAD_UV),
+        d2.wrapping_add(SPREAD_UV),
+    ];
     by_area.walk_any(p, v, WALK_SHIFT, base.wrapping_sub(SPREAD as i32))
 }
 
