@@ -7,6 +7,12 @@
 //! ([`Wrap`]); a pixel takes the texel its centre falls in or blends the four nearest
 //! ([`Filter`]); UVs are interpolated perspective-correctly or affinely ([`Mapping`]).
 //!
+//! The fastest texture is an Rgb565 one ([`Texels::Rgb565`]) that repeats and is read
+//! nearest (the defaults): its triangles take a pixel loop of their own wherever they are
+//! mapped affinely (every triangle under [`Mapping::Affine`]; under the perspective mapping,
+//! each that an affine map misplaces by less than an eighth of a texel), with the same
+//! colours as the general loop, which matches the texel format at every pixel.
+//!
 //! ```
 //! use embedded_graphics::pixelcolor::Rgb565;
 //! use fixed3d::texture::{Filter, Texels, Texture, Wrap};
@@ -114,10 +120,9 @@ impl Texels<'_> {
         let wide = |r: u8, g: u8, b: u8| [u32::from(r), u32::from(g), u32::from(b)];
         let black = [0; 3];
         match self {
-            Texels::Rgb565(s) => s.get(i).map_or(black, |&c| {
-                let v = u32::from(c.into_storage());
-                [v >> 11, v >> 5 & 63, v & 31]
-            }),
+            Texels::Rgb565(s) => s
+                .get(i)
+                .map_or(black, |&c| rgb565_channels(c.into_storage())),
             Texels::Bgr565(s) => s.get(i).map_or(black, |&c| wide(c.r(), c.g(), c.b())),
             Texels::Rgb888(s) => s.get(i).map_or(black, |&c| wide(c.r(), c.g(), c.b())),
             Texels::Bgr888(s) => s.get(i).map_or(black, |&c| wide(c.r(), c.g(), c.b())),
@@ -127,10 +132,7 @@ impl Texels<'_> {
             Texels::Rgb565Be(s) => {
                 let at = i.wrapping_mul(2);
                 match (s.get(at), s.get(at.wrapping_add(1))) {
-                    (Some(&hi), Some(&lo)) => {
-                        let v = u32::from(u16::from_be_bytes([hi, lo]));
-                        [v >> 11, v >> 5 & 63, v & 31]
-                    }
+                    (Some(&hi), Some(&lo)) => rgb565_channels(u16::from_be_bytes([hi, lo])),
                     _ => black,
                 }
             }
@@ -401,6 +403,24 @@ pub(crate) fn gain(target: u8, texel: u8) -> u32 {
     (u32::from(target) * r) >> (32 - SCALE_BITS)
 }
 
+/// The red, green and blue of an Rgb565 texel's bits `v`, in their own depths (31, 63, 31).
+#[inline(always)]
+pub(crate) fn rgb565_channels(v: u16) -> [u32; 3] {
+    let v = u32::from(v);
+    [v >> 11, v >> 5 & 63, v & 31]
+}
+
+/// Channels `raw` each scaled by `scale` (a channel's [`gain`] times its 8-bit light) and
+/// rounded: the lit colour in the target's depths.
+#[inline(always)]
+pub(crate) fn scaled(raw: [u32; 3], scale: [u32; 3]) -> [u8; 3] {
+    // A channel is at most its depth `d` and its scale at most 255 times its gain, within 1.5
+    // of 2²³ · target / (255 · d): the product and the half below 2³².
+    let half = 1 << (SCALE_BITS - 1);
+    let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
+    [ch(0), ch(1), ch(2)]
+}
+
 /// How a pixel reads a texture: its nearest texel, in the texture's format, or (`Bilinear`)
 /// the four nearest blended. It repeats [`Texels`]' variants on purpose: one flat tag for
 /// format and filter, so that one match a pixel decides both (a flag beside `Texels`, or an
@@ -503,12 +523,17 @@ impl<'a> Sampler<'a> {
             Read::Rgb565Be(s) => Texels::Rgb565Be(s),
             Read::Bilinear => return self.bilinear(c, scale),
         };
-        let raw = texels.raw(i);
-        // A channel is at most its depth `d` and its scale at most 255 times its gain, within
-        // 1.5 of 2²³ · target / (255 · d): the product and the half below 2³².
-        let half = 1 << (SCALE_BITS - 1);
-        let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
-        [ch(0), ch(1), ch(2)]
+        scaled(texels.raw(i), scale)
+    }
+
+    /// The texels of a repeating Rgb565 texture read nearest (the tiled form a paint can
+    /// take: see `TiledPaint`), or `None`.
+    #[inline(always)]
+    pub(crate) fn tiled565(&self) -> Option<&'a [Rgb565]> {
+        match self.read {
+            Read::Rgb565(s) if self.repeats() => Some(s),
+            _ => None,
+        }
     }
 
     /// The index of texel `(x, y)` of the image.

@@ -8,7 +8,7 @@ mod common;
 use common::floor::*;
 use common::golden;
 use common::screen::Screen;
-use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+use embedded_graphics::pixelcolor::{IntoStorage, Rgb565, Rgb888, RgbColor};
 use fixed3d::camera::Camera;
 use fixed3d::math::{Scalar, Vec3};
 use fixed3d::mesh::{textured_torus, textured_torus_counts, Mesh};
@@ -95,12 +95,8 @@ fn textured_floor_golden_images() {
     }
 }
 
-/// A textured torus lit flat and Gouraud by a directional light: golden images, and under a
-/// white ambient light of 1 every pixel is a texel as it is.
-#[test]
-fn textured_torus_lit_golden_images() {
-    let texels = texels();
-    let texture = Texture::new(Texels::from(&texels[..]), 64, 64).unwrap();
+/// The 48 x 24 textured torus, turned 20° about x, under `lights`, shaded `shade`.
+fn draw_torus(texture: &Texture<'_>, shade: Shade, lights: &[Light]) -> Vec<Rgb888> {
     const COUNTS: (usize, usize) = textured_torus_counts(48, 24);
     let (mut p, mut n, mut uv, mut t) = (
         vec![Vec3::ZERO; COUNTS.0],
@@ -111,29 +107,40 @@ fn textured_torus_lit_golden_images() {
     let (one, minor) = (Scalar::ONE, Scalar::from_num(0.4));
     let torus = textured_torus(one, minor, 48, 24, &mut p, &mut n, &mut uv, &mut t).unwrap();
     let camera = Camera::perspective(45, 1, 10).looking_at([0, 2, 4], [0, 0, 0]);
+    let model = Model::new(&torus, Rgb888::WHITE)
+        .rotated_x(20)
+        .textured(texture)
+        .shaded(shade);
+    let mut storage = Storage::<{ COUNTS.0 }, { COUNTS.1 }>::new();
+    let (mut color, mut depth) = (vec![Rgb888::BLACK; 320 * 16], vec![0u16; 320 * 16]);
+    let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
+    let mut screen = screen(320, 240);
+    renderer
+        .render(&[model], lights, &camera, &mut screen)
+        .unwrap();
+    screen.pixels
+}
+
+/// A textured torus lit flat and Gouraud by a directional light: golden images, and under a
+/// white ambient light of 1 every pixel is a texel as it is.
+#[test]
+fn textured_torus_lit_golden_images() {
+    let texels = texels();
+    let texture = Texture::new(Texels::from(&texels[..]), 64, 64).unwrap();
     let lights = [Light::ambient(0.2), Light::directional([-1, 2, 1], 0.8)];
-    let draw = |shade: Shade, lights: &[Light]| {
-        let model = Model::new(&torus, Rgb888::WHITE)
-            .rotated_x(20)
-            .textured(&texture)
-            .shaded(shade);
-        let mut storage = Storage::<{ COUNTS.0 }, { COUNTS.1 }>::new();
-        let (mut color, mut depth) = (vec![Rgb888::BLACK; 320 * 16], vec![0u16; 320 * 16]);
-        let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
-        let mut screen = screen(320, 240);
-        renderer
-            .render(&[model], lights, &camera, &mut screen)
-            .unwrap();
-        screen.pixels
-    };
-    golden::check("texture_torus_flat", 320, 240, &draw(Shade::Flat, &lights));
+    golden::check(
+        "texture_torus_flat",
+        320,
+        240,
+        &draw_torus(&texture, Shade::Flat, &lights),
+    );
     golden::check(
         "texture_torus_gouraud",
         320,
         240,
-        &draw(Shade::Gouraud, &lights),
+        &draw_torus(&texture, Shade::Gouraud, &lights),
     );
-    let plain = draw(Shade::Flat, &[Light::ambient(1)]);
+    let plain = draw_torus(&texture, Shade::Flat, &[Light::ambient(1)]);
     let drawn: Vec<_> = plain
         .iter()
         .filter(|&&c| c != Rgb888::new(1, 2, 3))
@@ -142,4 +149,37 @@ fn textured_torus_lit_golden_images() {
     assert!(drawn
         .iter()
         .all(|c| **c == Rgb888::BLACK || texels.contains(c)));
+}
+
+/// A repeating Rgb565 texture read nearest takes a faster form wherever a triangle is mapped
+/// affinely; it draws exactly what the general form does. The same texels as big-endian
+/// bytes, which the general form reads, give the same images: the floor affine and
+/// perspective-correct (its coordinates run over many repeats, and the near plane cuts it),
+/// the torus flat and Gouraud under a coloured light.
+#[test]
+fn tiled_rgb565_textures_draw_as_the_general_form() {
+    let texels: Vec<Rgb565> = texels().into_iter().map(Rgb565::from).collect();
+    let bytes: Vec<u8> = texels
+        .iter()
+        .flat_map(|c| c.into_storage().to_be_bytes())
+        .collect();
+    let tiled = Texture::new(Texels::from(&texels[..]), 64, 64).unwrap();
+    let general = Texture::new(Texels::Rgb565Be(&bytes), 64, 64).unwrap();
+    for mapping in [Mapping::Affine, Mapping::Perspective] {
+        let (a, b) = (tiled.with_mapping(mapping), general.with_mapping(mapping));
+        let floor = draw_floor(&a, H);
+        assert!(floor.iter().filter(|&&c| c != Rgb888::new(1, 2, 3)).count() > 30_000);
+        assert!(floor == draw_floor(&b, H), "{mapping:?} floor");
+    }
+    let lights = [
+        Light::ambient(0.2),
+        Light::directional([-1, 2, 1], Rgb888::new(255, 160, 64)),
+    ];
+    for shade in [Shade::Flat, Shade::Gouraud] {
+        let torus = draw_torus(&tiled, shade, &lights);
+        assert!(
+            torus == draw_torus(&general, shade, &lights),
+            "{shade:?} torus"
+        );
+    }
 }

@@ -17,7 +17,7 @@ use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
 use crate::mesh::{FaceNormal, Object, Triangle};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::{LightColor, Lighting};
-use crate::shade::{FaceInputs, Paint, Shading};
+use crate::shade::{FaceInputs, Paint, PaintUser, Shading};
 
 /// What a triangle's vertices carry to its shading: lit colours (per-vertex shading) and UVs
 /// (textured shading), each borrowed, so that a shading that reads one builds only that one.
@@ -266,7 +266,26 @@ fn fill<T: RasterTarget, P: Paint>(
     stats: &mut Stats,
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
-    target.fill_triangle(&ScreenTriangle::new(p, z, area), paint, stats)
+    paint.visit(Fill {
+        target,
+        triangle: &ScreenTriangle::new(p, z, area),
+        stats,
+    })
+}
+
+/// A triangle's fill, handed its paint's form by [`Paint::visit`].
+struct Fill<'a, T> {
+    target: &'a mut T,
+    triangle: &'a ScreenTriangle,
+    stats: &'a mut Stats,
+}
+
+impl<T: RasterTarget> PaintUser for Fill<'_, T> {
+    type Output = Result<(), T::Error>;
+    #[inline(always)]
+    fn with<P: Paint>(self, paint: &P) -> Self::Output {
+        self.target.fill_triangle(self.triangle, paint, self.stats)
+    }
 }
 
 impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {

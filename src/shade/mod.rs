@@ -18,10 +18,10 @@ mod texture;
 
 pub(crate) use lambert::{flat_color, kept_face_color, lambert, vertex_normal};
 pub use paint::{
-    Paint, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
+    Paint, PaintUser, PerspectiveCursor, PerspectivePaint, SmoothCursor, SmoothPaint, SolidPaint,
 };
 pub(crate) use specular::{add_highlight, Highlights, SPECULAR};
-pub use texture::{TextureCursor, TexturePaint};
+pub use texture::{TextureCursor, TexturePaint, TiledCursor, TiledPaint};
 
 use embedded_graphics::pixelcolor::Rgb888;
 

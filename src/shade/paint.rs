@@ -23,6 +23,24 @@ pub trait Paint: core::fmt::Debug {
     fn solid(&self) -> Option<Rgb888>;
     /// The colours of `span`'s pixels, left to right.
     fn cursor(&self, span: Span) -> Self::Cursor<'_>;
+    /// Hands `user` the paint in the form whose cursor suits this triangle: itself, or for a
+    /// paint with a faster form for some triangles (a texture's), that form. Chosen once per
+    /// triangle, so that each form's span loop is compiled on its own.
+    #[inline(always)]
+    fn visit<U: PaintUser>(&self, user: U) -> U::Output
+    where
+        Self: Sized,
+    {
+        user.with(self)
+    }
+}
+
+/// What a triangle's filler does with its paint, whichever form [`Paint::visit`] hands it.
+pub trait PaintUser {
+    /// What the use returns.
+    type Output;
+    /// Uses `paint`.
+    fn with<P: Paint>(self, paint: &P) -> Self::Output;
 }
 
 /// One colour for the whole triangle.

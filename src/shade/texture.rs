@@ -3,13 +3,15 @@
 
 use core::cell::Cell;
 
-use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+use embedded_graphics::pixelcolor::{IntoStorage, Rgb565, Rgb888, RgbColor};
 
 use crate::math::{magnitude_bits, mul_short_u32, mul_wide_u32, DivideBy};
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
-use crate::texture::{texture_coords, Mapping, Sampler, Texture, COORD_BITS};
+use crate::texture::{
+    rgb565_channels, scaled, texture_coords, Mapping, Sampler, Texture, COORD_BITS, COORD_ONE,
+};
 
-use super::Paint;
+use super::{Paint, PaintUser};
 
 /// A triangle's texture coordinates, less vertex 0's, are held within ±2²⁹ (512 images
 /// across): the perspective planes' values then stay below 2⁴⁶, and the walks' values, with
@@ -334,6 +336,19 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
         None
     }
 
+    /// The tiled form where the texture and the mapping allow it (see [`TiledPaint`]).
+    #[inline(always)]
+    fn visit<U: PaintUser>(&self, user: U) -> U::Output {
+        match (&self.coords, self.sampler.tiled565()) {
+            (Coords::Walks(walks), Some(texels)) => user.with(&TiledPaint {
+                paint: self,
+                texels,
+                walks,
+            }),
+            _ => user.with(self),
+        }
+    }
+
     #[inline(always)]
     fn cursor(&self, span: Span) -> Self::Cursor<'_> {
         let mut cursor = TextureCursor {
@@ -356,5 +371,87 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
             }
         }
         cursor
+    }
+}
+
+/// A [`TexturePaint`] in its tiled form, the usual one of firmware: a repeating Rgb565 texture
+/// read nearest and mapped affinely. Its pixel is a masked product per coordinate, one read
+/// and the light's scales, with no texel format to match, no clamp and no perspective run to
+/// end; it gives exactly the general form's colours.
+#[derive(Debug)]
+pub struct TiledPaint<'p, 't, L> {
+    paint: &'p TexturePaint<'t, L>,
+    texels: &'t [Rgb565],
+    walks: &'p [WordPlane; 2],
+}
+
+/// The running texture coordinates and light of a [`TiledPaint`] along a span.
+#[derive(Debug)]
+pub struct TiledCursor<'p, L: Paint + 'p> {
+    texels: &'p [Rgb565],
+    sides: (u32, u32),
+    light: L::Cursor<'p>,
+    gains: [u32; 3],
+    /// The solid light's scales (see [`TextureCursor`]).
+    scale: [u32; 3],
+    c: [i32; 2],
+    step: [i32; 2],
+}
+
+impl<'t, L: Paint> Paint for TiledPaint<'_, 't, L> {
+    type Cursor<'q>
+        = TiledCursor<'q, L>
+    where
+        Self: 'q;
+    const SCALED: bool = true;
+
+    fn solid(&self) -> Option<Rgb888> {
+        None
+    }
+
+    #[inline(always)]
+    fn cursor(&self, span: Span) -> Self::Cursor<'_> {
+        let Span { y, x0, .. } = span;
+        let [s, t] = self.walks;
+        let paint = self.paint;
+        TiledCursor {
+            texels: self.texels,
+            sides: paint.sampler.sides(),
+            light: paint.light.cursor(span),
+            gains: paint.gains,
+            scale: paint.scale,
+            c: [s.at(x0, y), t.at(x0, y)],
+            step: [s.sx, t.sx],
+        }
+    }
+}
+
+impl<L: Paint> Iterator for TiledCursor<'_, L> {
+    type Item = Rgb888;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<Rgb888> {
+        let scale = if L::SOLID {
+            self.scale
+        } else {
+            scales(self.light.next().unwrap_or(Rgb888::WHITE), self.gains)
+        };
+        let [s, t] = self.c;
+        let (width, height) = self.sides;
+        // Repeating: a coordinate's fraction bits, times the side, below 2³² (see
+        // `Sampler::lit`, whose texel this is).
+        let texel =
+            |c: i32, side: u32| ((c & (COORD_ONE - 1)) as u32).wrapping_mul(side) >> COORD_BITS;
+        let i = texel(t, height)
+            .wrapping_mul(width)
+            .wrapping_add(texel(s, width));
+        let raw = self
+            .texels
+            .get(i as usize)
+            .map_or([0; 3], |&c| rgb565_channels(c.into_storage()));
+        let [r, g, b] = scaled(raw, scale);
+        let [ds, dt] = self.step;
+        self.c = [s.wrapping_add(ds), t.wrapping_add(dt)];
+        Some(Rgb888::new(r, g, b))
     }
 }
