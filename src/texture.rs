@@ -410,17 +410,6 @@ pub(crate) fn rgb565_channels(v: u16) -> [u32; 3] {
     [v >> 11, v >> 5 & 63, v & 31]
 }
 
-/// Channels `raw` each scaled by `scale` (a channel's [`gain`] times its 8-bit light) and
-/// rounded: the lit colour in the target's depths.
-#[inline(always)]
-pub(crate) fn scaled(raw: [u32; 3], scale: [u32; 3]) -> [u8; 3] {
-    // A channel is at most its depth `d` and its scale at most 255 times its gain, within 1.5
-    // of 2²³ · target / (255 · d): the product and the half below 2³².
-    let half = 1 << (SCALE_BITS - 1);
-    let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
-    [ch(0), ch(1), ch(2)]
-}
-
 /// How a pixel reads a texture: its nearest texel, in the texture's format, or (`Bilinear`)
 /// the four nearest blended. It repeats [`Texels`]' variants on purpose: one flat tag for
 /// format and filter, so that one match a pixel decides both (a flag beside `Texels`, or an
@@ -523,7 +512,12 @@ impl<'a> Sampler<'a> {
             Read::Rgb565Be(s) => Texels::Rgb565Be(s),
             Read::Bilinear => return self.bilinear(c, scale),
         };
-        scaled(texels.raw(i), scale)
+        let raw = texels.raw(i);
+        // A channel is at most its depth `d` and its scale at most 255 times its gain, within
+        // 1.5 of 2²³ · target / (255 · d): the product and the half below 2³².
+        let half = 1 << (SCALE_BITS - 1);
+        let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
+        [ch(0), ch(1), ch(2)]
     }
 
     /// The texels of a repeating Rgb565 texture read nearest (the tiled form a paint can

@@ -8,7 +8,7 @@ use embedded_graphics::pixelcolor::{IntoStorage, Rgb565, Rgb888, RgbColor};
 use crate::math::{magnitude_bits, mul_short_u32, mul_wide_u32, DivideBy};
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 use crate::texture::{
-    rgb565_channels, scaled, texture_coords, Mapping, Sampler, Texture, COORD_BITS, COORD_ONE,
+    rgb565_channels, texture_coords, Mapping, Sampler, Texture, COORD_BITS, COORD_ONE, SCALE_BITS,
 };
 
 use super::{Paint, PaintUser};
@@ -449,7 +449,11 @@ impl<L: Paint> Iterator for TiledCursor<'_, L> {
             .texels
             .get(i as usize)
             .map_or([0; 3], |&c| rgb565_channels(c.into_storage()));
-        let [r, g, b] = scaled(raw, scale);
+        // Scaled as `Sampler::lit` scales (the same lines: a function shared by the two
+        // compiled to longer loops).
+        let half = 1 << (SCALE_BITS - 1);
+        let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
+        let [r, g, b] = [ch(0), ch(1), ch(2)];
         let [ds, dt] = self.step;
         self.c = [s.wrapping_add(ds), t.wrapping_add(dt)];
         Some(Rgb888::new(r, g, b))
