@@ -385,8 +385,8 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 /// models and a bin per triangle that can face the camera. [`bytes`](Self::bytes) gives its
 /// size.
 ///
-/// Bins are what make bands cheap: each band skips the blocks of bins whose rows miss its own
-/// and fetches, shades and sets up only the triangles that touch them, in the mesh's order.
+/// Bins are what make bands cheap: each band reads a bin's rows and fetches, shades and sets
+/// up only the triangles that touch its own, in the mesh's order.
 /// A frame whose visible triangles do not fit is still drawn right, by walking every triangle
 /// for every band; one drawn in a single pass needs none (`TRIANGLES` may then be 0).
 ///

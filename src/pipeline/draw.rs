@@ -98,9 +98,6 @@ pub struct Bin {
     object: u16,
     top: u16,
     bottom: u16,
-    /// For the first bin of a block ([`BLOCK`]), the block's top row; for the second, its
-    /// bottom row (see [`summarize_blocks`]).
-    block: u16,
 }
 
 impl Bin {
@@ -110,7 +107,6 @@ impl Bin {
         object: 0,
         top: 0,
         bottom: 0,
-        block: 0,
     };
 
     /// The tag of the objects whose triangle this is (see `Prepared::bin`).
@@ -121,34 +117,6 @@ impl Bin {
     /// The rows of a triangle that crosses a clip plane: all of them (its screen rows are
     /// known only once it is clipped). No other bin's bottom row is `u16::MAX`.
     const EVERY_ROW: (u16, u16) = (0, u16::MAX);
-}
-
-/// Bins a band skips at once when their rows are all outside its own. Each band still reads
-/// the bins it draws in the order binning wrote them (the mesh's): triangles at equal depths
-/// then cover each other as in one pass.
-const BLOCK: usize = 64;
-
-/// Writes into each block of `bins` the rows its bins span: the least top row into the
-/// first bin, the greatest bottom row into the second (a block of one bin has none).
-fn summarize_blocks(bins: &mut [Bin]) {
-    for block in bins.chunks_mut(BLOCK) {
-        let (top, bottom) = block.iter().fold((u16::MAX, 0), |(top, bottom), b| {
-            (top.min(b.top), bottom.max(b.bottom))
-        });
-        if let [first, second, ..] = block {
-            (first.block, second.block) = (top, bottom);
-        }
-    }
-}
-
-/// The top and bottom rows of a block of bins summarized by [`summarize_blocks`] (a block of
-/// one bin, its own).
-fn block_rows(block: &[Bin]) -> (u16, u16) {
-    match block {
-        [first, second, ..] => (first.block, second.block),
-        [only] => (only.top, only.bottom),
-        [] => (u16::MAX, 0),
-    }
 }
 
 /// Per-object constants for drawing.
@@ -454,10 +422,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     ) -> bool {
         let cull = self.frame.cull;
         for (j, setup) in self.objects(false).enumerate() {
-            let (object, first) = (
-                tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX)),
-                *len,
-            );
+            let object = tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX));
             let triangles = setup.object.mesh.triangles();
             add_count(&mut stats.primitives, triangles.len());
             for (k, tri) in triangles.iter().enumerate() {
@@ -499,21 +464,16 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     object,
                     top: rows.0,
                     bottom: rows.1,
-                    block: 0,
                 };
                 *len += 1;
-            }
-            if let Some(run) = bins.get_mut(first..*len) {
-                summarize_blocks(run);
             }
         }
         true
     }
 
     /// Fills the triangles of `bins` tagged for this frame (`tag` plus an object's index, as
-    /// [`bin`](Self::bin) wrote them) whose rows meet the target's. `bins` must be all that
-    /// one call of `bin` wrote: each object's run is read in blocks ([`BLOCK`]) from its first
-    /// bin, as `bin` summarized them.
+    /// [`bin`](Self::bin) wrote them) whose rows meet the target's, in the order `bin` wrote
+    /// them (the mesh's: triangles at equal depths then cover each other as in one pass).
     /// Counts only what it draws (`drawn`, `fragments`, `written`): the rest was counted when
     /// binning.
     pub(crate) fn draw_binned<T: RasterTarget>(
@@ -531,7 +491,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let mut again = Stats::default();
         let mut rest = bins;
         while let Some(object) = rest.first().map(Bin::object) {
-            // An object's bins are a run, in blocks from its first.
+            // An object's bins are a run.
             let (run, after) = rest.split_at(rest.partition_point(|b| b.object == object));
             rest = after;
             let Some(mut setup) = object
@@ -541,33 +501,26 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 continue;
             };
             let triangles = setup.object.mesh.triangles();
-            for block in run.chunks(BLOCK) {
-                let (top, bottom) = block_rows(block);
-                if i32::from(top) >= y1 || i32::from(bottom) < y0 {
+            for bin in run {
+                if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
                     continue;
                 }
                 // A bin's rows are its triangle's own: only the pieces of a clipped one
-                // (binned for every row, the block's bottom) are tested against the band's
-                // rows again.
-                setup.band = band && bottom == Bin::EVERY_ROW.1;
-                for bin in block {
-                    if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
-                        continue;
-                    }
-                    let k = bin.triangle as usize;
-                    let Some(tri) = triangles.get(k) else {
-                        continue;
-                    };
-                    self.triangle(
-                        target,
-                        &setup,
-                        (k, tri),
-                        setup.inside,
-                        self.frame.cull,
-                        &map,
-                        &mut again,
-                    )?;
-                }
+                // (binned for every row) are tested against the band's rows again.
+                setup.band = band && bin.bottom == Bin::EVERY_ROW.1;
+                let k = bin.triangle as usize;
+                let Some(tri) = triangles.get(k) else {
+                    continue;
+                };
+                self.triangle(
+                    target,
+                    &setup,
+                    (k, tri),
+                    setup.inside,
+                    self.frame.cull,
+                    &map,
+                    &mut again,
+                )?;
             }
         }
         stats.drawn = again.drawn;
@@ -933,57 +886,6 @@ mod tests {
     use crate::raster::short_sides_area;
     use crate::scene::{LightColor, Scene};
     use crate::shade::Flat;
-
-    /// A band skips a block of bins only when none of them touches its rows: random bins
-    /// (some binned for every row) in runs of every length around a block, random bands; a
-    /// block holds a clipped triangle exactly when its bottom row is every row's.
-    #[test]
-    fn skipped_blocks_hold_no_bin_of_the_band() {
-        let touches = |block: &[Bin], y0: i32, y1: i32| {
-            let (top, bottom) = block_rows(block);
-            i32::from(top) < y1 && i32::from(bottom) >= y0
-        };
-        let mut random = crate::testing::XorShift(7);
-        for len in [0, 1, 2, BLOCK - 1, BLOCK, BLOCK + 1, 5 * BLOCK + 3] {
-            let mut bins: vec::Vec<Bin> = (0..len)
-                .map(|_| {
-                    let top = (random.next_u64() % 240) as u16;
-                    let (top, bottom) = if random.next_u64().is_multiple_of(16) {
-                        (0, u16::MAX)
-                    } else {
-                        (top, top + (random.next_u64() % 30) as u16)
-                    };
-                    Bin {
-                        top,
-                        bottom,
-                        ..Bin::EMPTY
-                    }
-                })
-                .collect();
-            summarize_blocks(&mut bins);
-            for _ in 0..200 {
-                let y0 = (random.next_u64() % 250) as i32;
-                let y1 = y0 + 1 + (random.next_u64() % 20) as i32;
-                for block in bins.chunks(BLOCK) {
-                    let touched = block
-                        .iter()
-                        .any(|b| i32::from(b.top) < y1 && i32::from(b.bottom) >= y0);
-                    assert!(!touched || touches(block, y0, y1), "{len} {y0}..{y1}");
-                    let clipped = block.iter().any(|b| b.bottom == u16::MAX);
-                    assert_eq!(clipped, block_rows(block).1 == u16::MAX);
-                }
-            }
-        }
-        // A block of bins in rows 3 to 9 is skipped by the bands that miss those rows.
-        let mut bins = [Bin {
-            top: 3,
-            bottom: 9,
-            ..Bin::EMPTY
-        }; BLOCK];
-        summarize_blocks(&mut bins);
-        assert!(!touches(&bins, 0, 3) && !touches(&bins, 10, 20));
-        assert!(touches(&bins, 9, 10) && touches(&bins, 0, 4));
-    }
 
     /// The cross product in words of triangles whose vertices lie within `GUARD` of a screen
     /// centre (every vertex inside every clip plane) is the exact doubled area: at random
