@@ -79,16 +79,6 @@ fn kept(cull: Cull, area: i64, stats: &mut Stats) -> bool {
     false
 }
 
-// The triangle walk's culling mode as a constant (see `walk`).
-/// [`Cull::Back`].
-const BACK: u8 = 0;
-/// [`Cull::Front`].
-const FRONT: u8 = 1;
-/// [`Cull::None`].
-const NO_CULL: u8 = 2;
-/// The frame's mode, read at run time.
-const ANY_CULL: u8 = 3;
-
 /// A triangle of a prepared frame that may cover pixels, with the rows it may touch: a
 /// frame drawn in bands is binned once, so that each band reads only the triangles that touch
 /// its rows. Storage for them is the caller's (see [`Storage`](crate::render::Storage)).
@@ -304,27 +294,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// [`Direct`](crate::buffer::Direct) draw target). Returns what was drawn, or the target's
     /// first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
-        // One walk per culling mode on x86-64; on Cortex-M one for all, reading the mode.
-        if cfg!(target_pointer_width = "64") {
-            match self.frame.cull {
-                Cull::Back => self.walk::<T, BACK>(target),
-                Cull::Front => self.walk::<T, FRONT>(target),
-                Cull::None => self.walk::<T, NO_CULL>(target),
-            }
-        } else {
-            self.walk::<T, ANY_CULL>(target)
-        }
-    }
-
-    /// [`draw`](Self::draw) with the culling mode `CULL` a constant ([`BACK`], [`FRONT`],
-    /// [`NO_CULL`]), or read from the frame for [`ANY_CULL`].
-    fn walk<T: RasterTarget, const CULL: u8>(&self, target: &mut T) -> Result<Stats, T::Error> {
-        let cull = match CULL {
-            BACK => Cull::Back,
-            FRONT => Cull::Front,
-            NO_CULL => Cull::None,
-            _ => self.frame.cull,
-        };
+        let cull = self.frame.cull;
         let mut stats = Stats::default();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
         // Found once per drawing, not per triangle.
