@@ -209,9 +209,9 @@ fn unclamped_u16<C: Copy, T: DepthTest, K: FragmentCount>(
     // Every value lies in [0, 2³¹): the depth is its bits 15 to 30.
     let (mut acc, st) = (acc as u32, st as u32);
     for (d, c) in depths.iter_mut().zip(colors.iter_mut()) {
-        let z = (acc >> (U16_STEP_BITS - DROPPED)) as Compared;
+        let z = acc >> (U16_STEP_BITS - DROPPED);
         acc = acc.wrapping_add(st);
-        let old = Compared::from(*d);
+        let old = u32::from(*d);
         if z < old || (T::OR_EQUAL && z == old) {
             *d = z as u16;
             *c = colors_in.next_color();
@@ -225,15 +225,6 @@ fn unclamped_u16<C: Copy, T: DepthTest, K: FragmentCount>(
     failed
 }
 
-/// The width the u16 loop compares depths in: 16 bits on x86-64, where a compare takes the
-/// stored halfword straight from memory, and 32 on 32-bit cores, where the halfword is loaded
-/// into a register anyway and a 16-bit value would cost a masking instruction.
-#[cfg(target_pointer_width = "64")]
-type Compared = u16;
-/// The width the u16 loop compares depths in (see the 64-bit definition).
-#[cfg(not(target_pointer_width = "64"))]
-type Compared = u32;
-
 /// The u16 span loop's step from the interpolator's, rounded to its unit.
 #[inline(always)]
 fn loop_step(step: i64) -> i64 {
@@ -245,77 +236,16 @@ fn loop_step(step: i64) -> i64 {
 /// [`WordPlane`](crate::raster::WordPlane) of its vertex depths (whose error bound, below
 /// 2¹² + 2 units, is a fraction of a step), started on a row and moved down one row at a time.
 /// The span loop starts from it with one multiply and one addition a span, and steps by `sx`.
-///
-/// 64-bit hosts hold the same values shifted up by 13 bits in 64-bit words, so that their loop
-/// takes the form of a 64-bit product and shift. The sums stay far below 2⁶³, so shifting back
-/// and truncating to 32 bits gives the same values on every core (rule R10).
+/// Every core takes the same words, so every core draws the same depths (rule R10).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct RoundedRows<W: LoopWord = NativeWord> {
-    /// The start at column 0 on the current row (as `W` holds values).
-    pub(super) row: W,
-    pub(super) step_x: W,
-    pub(super) step_y: W,
+pub(crate) struct RoundedRows {
+    /// The start at column 0 on the current row.
+    pub(super) row: i32,
+    pub(super) step_x: i32,
+    pub(super) step_y: i32,
 }
 
-/// The word [`RoundedRows`] walks in: 64-bit words on 64-bit hosts, 32-bit ones elsewhere.
-#[cfg(target_pointer_width = "64")]
-pub(crate) type NativeWord = i64;
-/// The word [`RoundedRows`] walks in (see the 64-bit definition).
-#[cfg(not(target_pointer_width = "64"))]
-pub(crate) type NativeWord = i32;
-
-/// A word for [`RoundedRows`]: the loop's 32-bit values, as they are (`i32`) or shifted up by
-/// 13 bits (`i64`).
-pub(crate) trait LoopWord: Copy + core::fmt::Debug {
-    /// A 32-bit value, scaled.
-    fn from_i32(v: i32) -> Self;
-    /// The 32-bit value (modulo 2³²).
-    fn to_i32(self) -> i32;
-    /// `self + a · b` for a scaled `a` and an unscaled `b`, wrapping.
-    fn add_times(self, a: Self, b: i32) -> Self;
-    /// `self + a`, wrapping.
-    fn add(self, a: Self) -> Self;
-}
-
-impl LoopWord for i32 {
-    #[inline(always)]
-    fn from_i32(v: i32) -> i32 {
-        v
-    }
-    #[inline(always)]
-    fn to_i32(self) -> i32 {
-        self
-    }
-    #[inline(always)]
-    fn add_times(self, a: i32, b: i32) -> i32 {
-        self.wrapping_add(a.wrapping_mul(b))
-    }
-    #[inline(always)]
-    fn add(self, a: i32) -> i32 {
-        self.wrapping_add(a)
-    }
-}
-
-impl LoopWord for i64 {
-    #[inline(always)]
-    fn from_i32(v: i32) -> i64 {
-        (v as i64) << DROPPED
-    }
-    #[inline(always)]
-    fn to_i32(self) -> i32 {
-        (self >> DROPPED) as i32
-    }
-    #[inline(always)]
-    fn add_times(self, a: i64, b: i32) -> i64 {
-        self.wrapping_add(a.wrapping_mul(b as i64))
-    }
-    #[inline(always)]
-    fn add(self, a: i64) -> i64 {
-        self.wrapping_add(a)
-    }
-}
-
-impl<W: LoopWord> RoundedRows<W> {
+impl RoundedRows {
     /// The walk of the plane through `(p[i], z[i])` (depths in Q1.30, at most 2³⁰; `area` the
     /// doubled signed area, non-zero; coordinates within the pipeline's range) on row `y`,
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle
@@ -324,25 +254,25 @@ impl<W: LoopWord> RoundedRows<W> {
     pub(crate) fn new(p: &[ScreenPoint; 3], z: [i32; 3], area: i64, y: i32) -> Option<(Self, i32)> {
         let walk = AreaWalks::new(area).walk(p, z, 0, LOOP_HALF_STEP)?;
         let rows = RoundedRows {
-            row: W::from_i32(walk.at(0, y)),
-            step_x: W::from_i32(walk.sx),
-            step_y: W::from_i32(walk.sy),
+            row: walk.at(0, y),
+            step_x: walk.sx,
+            step_y: walk.sy,
         };
         Some((rows, walk.sx))
     }
 }
 
-impl<W: LoopWord> RowStarts for RoundedRows<W> {
+impl RowStarts for RoundedRows {
     type Start = i32;
 
     #[inline(always)]
     fn at(&self, x: i32) -> i32 {
-        self.row.add_times(self.step_x, x).to_i32()
+        self.row.wrapping_add(self.step_x.wrapping_mul(x))
     }
 
     #[inline(always)]
     fn next_row(&mut self) {
-        self.row = self.row.add(self.step_y);
+        self.row = self.row.wrapping_add(self.step_y);
     }
 }
 
@@ -484,15 +414,14 @@ mod tests {
         PIPELINE_LIMIT,
     };
 
-    /// `RoundedRows` in 32-bit words (Cortex-M's) and in 64-bit ones (the host's) give the
-    /// same value at every pixel of every span; each lies within its bound,
+    /// Every value of a `RoundedRows` walk lies within its bound,
     /// `(|x − x_r| + |y − y_r|) / 2 + 5/4`, of the exact plane's (in rationals: twice the
     /// depth plus half a u16 step), and the stored depth is the exact one's at nearly every
     /// pixel; a walk set up at a later row (a band's first) is the walk from an earlier one.
     /// Triangles of every size within the pipeline's range, depths across [0,
     /// 2³⁰ − 2¹⁴], cut by the clip rectangle's top.
     #[test]
-    fn rounded_rows_stay_within_their_bound_on_every_core() {
+    fn rounded_rows_stay_within_their_bound() {
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
         let clip = PixelRect::new(0, 40, 2040, 2040);
         let (mut pixels, mut same_depth, mut cut) = (0u64, 0u64, 0u32);
@@ -509,10 +438,9 @@ mod tests {
             }
             let spans = spans_in_range::<PipelineEdge>(p, clip, area);
             let y0 = spans.row();
-            let (Some((mut narrow, st)), Some((mut wide, _)), Some((mut early, _))) = (
-                RoundedRows::<i32>::new(&p, z, area, y0),
-                RoundedRows::<i64>::new(&p, z, area, y0),
-                RoundedRows::<i32>::new(&p, z, area, y0 - 7),
+            let (Some((mut narrow, st)), Some((mut early, _))) = (
+                RoundedRows::new(&p, z, area, y0),
+                RoundedRows::new(&p, z, area, y0 - 7),
             ) else {
                 continue;
             };
@@ -534,7 +462,6 @@ mod tests {
             for span in spans {
                 while row < span.y {
                     narrow.next_row();
-                    wide.next_row();
                     early.next_row();
                     row += 1;
                 }
@@ -542,7 +469,6 @@ mod tests {
                 assert_eq!(narrow.at(span.x0), early.at(span.x0), "{p:?} row {y}");
                 for x in span.x0..span.x1.min(span.x0 + 64) {
                     let walk = narrow.at(x);
-                    assert_eq!(wide.at(x), walk, "{p:?} ({x}, {y})");
                     assert_eq!(narrow.at(span.x0).wrapping_add(st * (x - span.x0)), walk);
                     let (dx, dy) = ((16 * x + 8 - a.x) as i128, (16 * y + 8 - a.y) as i128);
                     let num = (2 * z[0] as i128 + (1 << 14)) * 16 * den + 32 * (nx * dx + ny * dy);

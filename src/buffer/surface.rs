@@ -6,8 +6,8 @@ use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
 use embedded_graphics::primitives::Rectangle;
 
 use super::depth::{
-    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, NativeWord, RoundedRows,
-    SpanColors, Uncounted,
+    Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, RoundedRows, SpanColors,
+    Uncounted,
 };
 use super::dither::{Nearest, OrderedDither, Quantize, TargetColor};
 use super::framebuffer::FrameBuffer;
@@ -225,7 +225,7 @@ where
         // starts them as the whole frame does.
         let unclamped = if D::unclamped(triangle.max()) {
             let (p, z, area) = (&triangle.p, triangle.z, triangle.area);
-            RoundedRows::<NativeWord>::new(p, z, area, y)
+            RoundedRows::new(p, z, area, y)
         } else {
             None
         };

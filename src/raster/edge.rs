@@ -10,13 +10,10 @@
 //!   any coordinates within ±[`COORD_LIMIT`](super::COORD_LIMIT): the public span iterator's
 //!   walk, and the pipeline's on cores without a divide instruction (Cortex-M0/M0+).
 //! - [`DivideStepper`]: the numerator itself in one word, one addition and one division a row:
-//!   the pipeline's walk where a word divides in one instruction (Cortex-M3/M4/M7).
-//! - [`FractionStepper`]: quotient and fraction in one 64-bit word, one addition a row: the
-//!   pipeline's walk on 64-bit hosts.
-//!
-//! The last two are exact for every edge the pipeline draws (vertices within
-//! ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT)), which is all they are given; each proof is at
-//! its type.
+//!   the pipeline's walk where a word divides in one instruction (Cortex-M3/M4/M7, x86-64).
+//!   Exact for every edge the pipeline draws (vertices within
+//!   ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT)), which is all it is given; the proof is at
+//!   its type.
 
 use super::{CeilStepper, ScreenPoint};
 use crate::math::{mul_wide, SUBPIXEL_BITS, SUBPIXEL_SCALE};
@@ -36,20 +33,14 @@ pub(crate) trait EdgeWalk: Copy {
     fn step(&mut self);
 }
 
-/// The walk the pipeline's triangles take on this core (see the [module documentation](self)):
-/// each pays for itself on the `full` firmware preset against the exact stepper.
-#[cfg(target_pointer_width = "64")]
-pub(crate) type PipelineEdge = FractionStepper;
-/// The walk the pipeline's triangles take on this core: see the 64-bit definition.
-#[cfg(all(target_pointer_width = "32", target_has_atomic = "32"))]
+/// The walk the pipeline's triangles take where a word divides in one instruction (see the
+/// [module documentation](self)): it pays for itself on the `full` firmware preset against the
+/// exact stepper.
+#[cfg(not(all(target_pointer_width = "32", not(target_has_atomic = "32"))))]
 pub(crate) type PipelineEdge = DivideStepper;
-/// The walk the pipeline's triangles take on this core: see the 64-bit definition. (Cores
-/// without a divide instruction are told apart by their lack of 32-bit compare-and-swap, as in
-/// `NARROW_CORE`.)
-#[cfg(not(any(
-    target_pointer_width = "64",
-    all(target_pointer_width = "32", target_has_atomic = "32")
-)))]
+/// The walk the pipeline's triangles take on the smallest cores, which divide by a routine
+/// (told apart as `NARROW_CORE` tells them).
+#[cfg(all(target_pointer_width = "32", not(target_has_atomic = "32")))]
 pub(crate) type PipelineEdge = CeilStepper;
 
 /// `(dx, dy, p.x − 8, t)` of edge `p → q` at row `py`: `N`'s terms (see the module
@@ -107,94 +98,6 @@ impl EdgeWalk for CeilStepper {
     fn step(&mut self) {
         CeilStepper::step(self);
     }
-}
-
-/// `ceil(N(k) / D)` by one 64-bit addition a step: the value in the high word, and in the low
-/// word the remainder as a fraction of 2³², rounded up.
-///
-/// Exact while `(k + 1)(D − 1) < 2³²`: with `M(k) = N(k) + D − 1` the walk is that of
-/// `⌊M(k) / D⌋ = q(k)`, remainder `r(k)`. The low word starts at `⌈r(0)·2³² / D⌉` and the
-/// step's low word is `⌈s·2³² / D⌉` (`s` the step's remainder), each above its exact value by
-/// at most `(D − 1)/D`, since those values are multiples of `1/D`. After `k` steps the sum of
-/// low words (carries counted) exceeds the exact `(r(0) + k·s)·2³² / D` by at most
-/// `(k + 1)(D − 1)/D`, below `2³² / D`; the exact sum is a multiple of `2³² / D`, so a multiple
-/// of 2³² lies at or below both or above both: the carries, and so the high word, are
-/// `q(k)`'s.
-///
-/// An edge within ±[`PIPELINE_LIMIT`](super::PIPELINE_LIMIT) is at most `dy ≤ 2¹⁶ − 32`
-/// sub-pixels tall and has at most `dy/16 + 1` rows, so from any of them
-/// `(k + 1)(D − 1) < (dy/16 + 1)·16·dy = dy² + 16·dy < 2³²`.
-#[allow(
-    dead_code,
-    reason = "each core draws with one pipeline walk; all are tested on the host"
-)]
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct FractionStepper {
-    acc: u64,
-    step: u64,
-}
-
-impl EdgeWalk for FractionStepper {
-    const ZERO: Self = FractionStepper { acc: 0, step: 0 };
-
-    #[inline(always)]
-    fn at_row(p: ScreenPoint, q: ScreenPoint, py: i32) -> Self {
-        let (dx, dy, x, t) = edge_terms(p, q, py);
-        let dy = dy.max(1);
-        let den = i64::from(S.wrapping_mul(dy));
-        // ceil(N / D) = floor((N + D − 1) / D); |N| is below 2⁵⁴.
-        let start = mul_wide(x, dy) + mul_wide(dx, t) + (den - 1);
-        // Whether the start fits 32 bits, by its low word sign-extended (one comparison).
-        let low = start as i32;
-        FractionStepper {
-            acc: if i64::from(low) == start {
-                packed_quotient32(low, den)
-            } else {
-                packed_quotient(start, den)
-            },
-            step: packed_quotient32(S.wrapping_mul(dx), den),
-        }
-    }
-
-    #[inline(always)]
-    fn value(&self) -> i32 {
-        (self.acc >> 32) as u32 as i32
-    }
-
-    #[inline(always)]
-    fn step(&mut self) {
-        self.acc = self.acc.wrapping_add(self.step);
-    }
-}
-
-/// `⌊v / d⌋` in the high word (modulo 2³²) and `⌈(v mod d)·2³² / d⌉` in the low word (`d` in
-/// `[1, 2³¹)`), by two divisions: see [`packed_quotient32`] for one.
-#[allow(
-    dead_code,
-    reason = "each core draws with one pipeline walk; all are tested on the host"
-)]
-#[inline(always)]
-fn packed_quotient(v: i64, d: i64) -> u64 {
-    let (q, r) = (v.div_euclid(d), v.rem_euclid(d));
-    // 0 ≤ r < d < 2³¹: the shifted remainder fits 63 bits and its quotient is below 2³².
-    ((q as u64) << 32).wrapping_add(((r as u64) << 32).div_ceil(d as u64))
-}
-
-/// [`packed_quotient`] of a 32-bit `v`, by one division of `v·2³² + d − 1`: its floor is
-/// `⌊v / d⌋·2³² + ⌊((v mod d)·2³² + d − 1) / d⌋`.
-#[allow(
-    dead_code,
-    reason = "each core draws with one pipeline walk; all are tested on the host"
-)]
-#[inline(always)]
-fn packed_quotient32(v: i32, d: i64) -> u64 {
-    // |v·2³²| ≤ 2⁶³, and the sum stays within i64 (d − 1 < 2³¹, and v·2³² ≤ 2⁶³ − 2³²).
-    let n = ((v as i64) << 32) + (d - 1);
-    // ⌊n / d⌋ by one unsigned division: for n < 0, !n = −n − 1 = q·d + r with 0 ≤ r < d, so n =
-    // (−q − 1)·d + (d − 1 − r) and ⌊n / d⌋ = −q − 1 = !q.
-    let sign = n >> 63;
-    let q = core::num::NonZeroU64::new(d as u64).map_or(0, |d| (n ^ sign) as u64 / d);
-    q ^ sign as u64
 }
 
 /// `ceil(N(k) / D)` where a word divides in one instruction: the numerator itself steps, one
@@ -335,7 +238,6 @@ mod tests {
     /// any of their rows.
     #[test]
     fn r1_pipeline_edge_walks_are_exact() {
-        assert!(walk_is_exact::<FractionStepper>(PIPELINE_LIMIT, i32::MAX) > 3_000_000);
         assert!(walk_is_exact::<DivideStepper>(PIPELINE_LIMIT, i32::MAX) > 3_000_000);
         assert!(walk_is_exact::<CeilStepper>(PIPELINE_LIMIT, i32::MAX) > 3_000_000);
     }
@@ -346,27 +248,5 @@ mod tests {
     #[test]
     fn r1_exact_walk_covers_the_coordinate_range() {
         assert!(walk_is_exact::<CeilStepper>(COORD_LIMIT, 4000) > 3_000_000);
-    }
-
-    /// A 32-bit numerator's packed quotient by one unsigned division equals the two-division
-    /// one, for both signs, at the ends of both ranges and at random.
-    #[test]
-    fn packed_quotient32_equals_packed_quotient() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
-        let vs = [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX];
-        let ds = [1i64, 2, 3, (1 << 31) - 1];
-        let random = (0..100_000).map(|_| {
-            let x = rng.next_u64();
-            (
-                x as i32,
-                ((x >> 32) as i64 & ((1 << 31) - 1)).max(1) >> (x % 31),
-            )
-        });
-        let ends = vs.iter().flat_map(|&v| ds.iter().map(move |&d| (v, d)));
-        for (v, d) in ends.chain(random) {
-            let d = d.max(1);
-            let expected = packed_quotient(v as i64, d);
-            assert_eq!(packed_quotient32(v, d), expected, "{v} {d}");
-        }
     }
 }

@@ -297,7 +297,7 @@ impl<W: EdgeWalk> Iterator for TriangleWalk<W> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::edge::{DivideStepper, FractionStepper, PipelineEdge};
+    use super::super::edge::{DivideStepper, PipelineEdge};
     use super::*;
     use std::vec::Vec;
 
@@ -339,7 +339,6 @@ mod tests {
     #[test]
     fn row_walks_equal_the_iterator_and_plane_at() {
         row_walks_of::<CeilStepper>();
-        row_walks_of::<FractionStepper>();
         row_walks_of::<DivideStepper>();
     }
 
