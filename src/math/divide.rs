@@ -180,21 +180,10 @@ fn shifted_i32_in_words(n: i64, s: u32, d: u32) -> Option<i32> {
 }
 
 /// `round(n · 2³⁰ / d)` for `d < 2¹⁹` and `0 ≤ n ≤ d`, which the caller knows (a vertex's
-/// depth `z / w` in Q1.30; any other operands give a meaningless quotient, without overflow):
-/// with 64-bit words one division, else [`fraction_by_digits`].
+/// depth `z / w` in Q1.30; any other operands give a meaningless quotient, without overflow),
+/// by three 32-bit divisions.
 #[inline(always)]
 pub(crate) const fn fraction_in_words(n: u32, d: NonZeroU32) -> i64 {
-    if cfg!(target_pointer_width = "64") {
-        // Below 2⁵⁰.
-        let d = d.get() as u64;
-        return ((((n as u64) << 30) + d / 2) / d) as i64;
-    }
-    fraction_by_digits(n, d)
-}
-
-/// [`fraction_in_words`] by three 32-bit divisions (tested on every host).
-#[inline(always)]
-const fn fraction_by_digits(n: u32, d: NonZeroU32) -> i64 {
     let d = d.get();
     // `div_round(n << 30, d)` without its sign and saturation, which n ≥ 0 and the bound need
     // not, in three 32-bit divides: the numerator's low 30 bits are zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂, n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) +
@@ -830,7 +819,7 @@ mod tests {
     /// for `0 < d < 2¹⁹` and `0 ≤ n ≤ d` (the ends included), and overflows nowhere for an `n`
     /// outside its range (which its caller never passes).
     #[test]
-    fn fraction_by_digits_equals_div_round() {
+    fn fraction_in_words_equals_div_round() {
         let mut rng = crate::testing::XorShift(0x5DEE_CE66_D1CE_4E5Bu64);
         let top = (1i64 << 19) - 1;
         for i in 0..200_000u32 {
@@ -842,15 +831,15 @@ mod tests {
             };
             let nz = NonZeroU32::new(d as u32).unwrap_or(NonZeroU32::MIN);
             assert_eq!(
-                fraction_by_digits(n as u32, nz),
+                fraction_in_words(n as u32, nz),
                 div_round(n << 30, d),
                 "{n} / {d}"
             );
         }
         let nz = NonZeroU32::new(top as u32).unwrap_or(NonZeroU32::MIN);
-        assert_eq!(fraction_by_digits(top as u32, nz), 1 << 30);
+        assert_eq!(fraction_in_words(top as u32, nz), 1 << 30);
         for (n, d) in [(-1i64, 5i32), (6, 5), (i64::MAX, top as i32), (i64::MIN, 1)] {
-            fraction_by_digits(
+            fraction_in_words(
                 n as u32,
                 NonZeroU32::new(d as u32).unwrap_or(NonZeroU32::MIN),
             );

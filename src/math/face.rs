@@ -74,9 +74,9 @@ pub(crate) fn face_direction(
         map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
     };
     let (u, v) = (edge(b), edge(c));
-    // Edges within ±2¹⁵ on 32-bit cores: the exact cross product in words. It lies within ±(2³¹
-    // − 2¹⁵), where `shrink_below(…, 31)` leaves it too: the same direction on every core.
-    if cfg!(not(target_pointer_width = "64")) && normal_matrix.is_none() {
+    // Edges within ±2¹⁵: the exact cross product in words. It lies within ±(2³¹ − 2¹⁵), where
+    // `shrink_below(…, 31)` leaves it too: the same direction whichever way it is found.
+    if normal_matrix.is_none() {
         // Every edge of the mesh within ±(2¹⁵ − 1), as the torus': no test of each.
         if edge_extent < 1 << 15 {
             return cross_in_words(u, v);
@@ -84,11 +84,6 @@ pub(crate) fn face_direction(
         if let Some(n) = cross_short(u, v) {
             return n;
         }
-    }
-    // On x86-64 too for such a mesh, where no edge needs a test (fewer instructions than the
-    // 64-bit product and its shift).
-    if cfg!(target_pointer_width = "64") && normal_matrix.is_none() && edge_extent < 1 << 15 {
-        return cross_in_words(u, v);
     }
     // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
     let n = cross_wide(u, v);

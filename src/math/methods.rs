@@ -214,14 +214,8 @@ impl NewtonDirection {
             p.wrapping_add(1 << 29) >> 30
         };
         // A cosine of unit vectors in Q2.30 (the light's within an ulp of unit length, y less
-        // than 10⁻⁸ above its value): at most 2³⁰·(1 + 10⁻⁸), so the low word holds it. Taken
-        // so on 32-bit cores; x86-64 keeps the clamp, which changes nothing there but its
-        // registers.
-        if cfg!(target_pointer_width = "64") {
-            cos.min(i32::MAX as u64) as i32
-        } else {
-            cos as u32 as i32
-        }
+        // than 10⁻⁸ above its value): at most 2³⁰·(1 + 10⁻⁸), so the low word holds it.
+        cos as u32 as i32
     }
 }
 

@@ -143,15 +143,6 @@ pub(super) const fn shl_words(n: u64, s: u32) -> (u32, u32) {
 /// Cortex-M0.
 #[inline(always)]
 pub(crate) const fn shr_low_word(v: i64, s: u32) -> i32 {
-    if cfg!(target_pointer_width = "64") {
-        return (v >> (s & 63)) as i32;
-    }
-    shr_words(v, s)
-}
-
-/// [`shr_low_word`] by 32-bit shifts (what 32-bit cores use; tested on every host).
-#[inline(always)]
-const fn shr_words(v: i64, s: u32) -> i32 {
     let (hi, lo) = ((v >> 32) as i32, v as u32);
     if s >= 32 {
         hi >> (s - 32)
@@ -324,7 +315,7 @@ mod tests {
         }
     }
 
-    /// `shr_low_word` (and its 32-bit form) is the low word of the 64-bit shift, for every
+    /// `shr_low_word` is the low word of the 64-bit shift, for every
     /// shift and sign.
     #[test]
     fn shr_low_word_is_the_shift() {
@@ -332,7 +323,6 @@ mod tests {
         for _ in 0..100_000 {
             let v = rng.next_u64() as i64 >> (rng.next_u64() % 64);
             for s in 0..64 {
-                assert_eq!(shr_words(v, s), (v >> s) as i32, "{v} >> {s}");
                 assert_eq!(shr_low_word(v, s), (v >> s) as i32, "{v} >> {s}");
             }
         }

@@ -1,8 +1,6 @@
 //! Attribute planes: depth and colour as linear functions of screen position through the three
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
-use core::num::NonZeroU64;
-
 use super::{first_centre_from32, ScreenPoint};
 use crate::math::{mul_wide, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
@@ -402,8 +400,7 @@ impl Reference {
 
 /// The steps `round(32·n·2^shift / area)` of gradient numerators over the doubled signed area
 /// (per pixel, 16 sub-pixels, in units of half the shifted values'), where both fit an i32.
-/// On 64-bit hosts by [`steps_over_area`]; on cores without a divide instruction, for the usual
-/// triangle (a doubled area below 2²⁹, steps below 2³⁰), by two 15-bit digits each through
+/// On cores without a divide instruction, for the usual triangle (a doubled area below 2²⁹, steps below 2³⁰), by two 15-bit digits each through
 /// `short`, the area's magnitude prepared (fewer instructions than through a reciprocal to 32
 /// bits, which the others take).
 #[inline(always)]
@@ -414,9 +411,6 @@ fn word_steps(
     area: i64,
     short: Option<&ShortQuotients>,
 ) -> Option<(i32, i32)> {
-    if cfg!(target_pointer_width = "64") {
-        return steps_over_area(nx << shift, ny << shift, area);
-    }
     let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
     let shift = shift + 5;
     if let Some(by) = short {
@@ -432,23 +426,6 @@ fn word_steps(
         by.round_shifted_i32(nx, shift)?,
         by.round_shifted_i32(ny, shift)?,
     ))
-}
-
-/// The steps `round(32·n / area)` of the gradient numerators `nx` and `ny` over the doubled
-/// signed area (not 0; `None` for 0), ties away from zero, where both fit an i32, else
-/// `None`: what [`DivideBy::round_shifted_i32`]`(n, 5)` gives of the numerators and the area
-/// made positive (a numerator's magnitude is unchanged, its sign turned where the area's is
-/// negative; a zero numerator's quotient is zero either way).
-#[inline(always)]
-fn steps_over_area(nx: i64, ny: i64, area: i64) -> Option<(i32, i32)> {
-    let d = NonZeroU64::new(area.unsigned_abs())?;
-    let half = d.get() / 2;
-    let step = |n: i64| {
-        // |n| · 2⁵ lies below 2⁶³ for the pipeline's triangles (see `round_shifted`).
-        let q = ((n.unsigned_abs() << 5).wrapping_add(half) / d) as i64;
-        i32::try_from(if (n ^ area) < 0 { q.wrapping_neg() } else { q }).ok()
-    };
-    Some((step(nx)?, step(ny)?))
 }
 
 /// Walks a [`Plane`] down the rows, for a span loop that starts each row's span from the
@@ -492,60 +469,6 @@ impl RowStarts for PlaneRows {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The steps by the numerators' magnitudes over the area's are `DivideBy`'s of the
-    /// numerators and the area made positive, for both signs of each, zero numerators, ties,
-    /// and steps at and beyond i32's ends (`None` where either does not fit).
-    #[test]
-    fn r7_steps_over_area_are_those_over_the_positive_area() {
-        let reference = |nx: i64, ny: i64, area: i64| {
-            let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
-            let by = DivideBy::new(den);
-            Some((by.round_shifted_i32(nx, 5)?, by.round_shifted_i32(ny, 5)?))
-        };
-        let mut seed = 0x2545_F491_4F6C_DD1D_u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
-        let mut cases = std::vec![
-            (0, 0, 1),
-            (0, 0, -1),
-            (1, -1, 64),
-            (-1, 1, -64),
-            (3, -3, 192),
-        ];
-        // Quotients at i32's ends: 32·n / d just inside and outside [−2³¹, 2³¹).
-        for d in [1_i64, 3, 1 << 20] {
-            for n in [
-                (1_i64 << 26) * d - 1,
-                (1 << 26) * d,
-                -(1 << 26) * d,
-                -(1 << 26) * d - d,
-            ] {
-                cases.push((n, 1, d));
-                cases.push((n, -1, -d));
-            }
-        }
-        for _ in 0..20_000 {
-            let bits = next();
-            let area = (next() >> (34 + bits % 28)) as i64 + 1;
-            let area = if bits & 1 == 0 { area } else { -area };
-            let n =
-                |v: u64| (v >> (18 + (v >> 58) % 24)) as i64 - (v >> (19 + (v >> 58) % 24)) as i64;
-            cases.push((n(next()), n(next()), area));
-        }
-        for (nx, ny, area) in cases {
-            assert_eq!(
-                steps_over_area(nx, ny, area),
-                reference(nx, ny, area),
-                "{nx} {ny} {area}"
-            );
-        }
-        assert_eq!(steps_over_area(5, 5, 0), None);
-    }
 
     /// The offset in words is the wide one modulo 2³², for steps across i32 and every offset
     /// within a pixel.
