@@ -306,15 +306,11 @@ impl DivideBy {
     }
 
     /// [`round_shifted`](Self::round_shifted) (for `shift ≤ 28`) where it fits an i32, else
-    /// `None`; on 32-bit cores by [`shifted_i32_in_words`] where it applies (the depth and
-    /// colour gradients). (64-bit cores find those walks' steps by one 64-bit division each.)
+    /// `None`; by [`shifted_i32_in_words`] where it applies (the depth and colour gradients of
+    /// a divisor with a word copy, which 32-bit cores with a divide instruction keep).
     #[inline(always)]
     pub(crate) fn round_shifted_i32(&self, n: i64, shift: u32) -> Option<i32> {
-        if cfg!(target_pointer_width = "32")
-            && self.d32 > 0
-            && self.d32 < 1 << SHIFTED_DIVISOR_BITS
-            && shift <= 2 * MAX_SHIFT
-        {
+        if self.d32 > 0 && self.d32 < 1 << SHIFTED_DIVISOR_BITS && shift <= 2 * MAX_SHIFT {
             if let Some(q) = shifted_i32_in_words(n, shift, self.d32 as u32) {
                 return Some(q);
             }

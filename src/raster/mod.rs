@@ -202,15 +202,12 @@ pub(crate) const fn floor_div(n: i64, d: i64) -> i64 {
 }
 
 /// `(floor(n / d), n mod d)` for `d > 0`, the remainder in `[0, d)`: [`floor_divmod32`] where
-/// the operands fit and the core is 32-bit.
+/// the operands fit 32 bits.
 #[inline]
 pub(crate) fn floor_divmod(n: i64, d: i64) -> (i64, i64) {
-    // 32-bit cores only: there a 64-bit division is a long library routine.
-    if let (true, Ok(n32), Ok(d32)) = (
-        cfg!(target_pointer_width = "32"),
-        i32::try_from(n),
-        i32::try_from(d),
-    ) {
+    // In words where the operands fit: a 64-bit division is a long library routine on 32-bit
+    // cores.
+    if let (Ok(n32), Ok(d32)) = (i32::try_from(n), i32::try_from(d)) {
         let (q, r) = floor_divmod32::<SHORT_QUOTIENT>(n32, d32);
         return (q as i64, r as i64);
     }

@@ -82,35 +82,13 @@ impl Plane {
     /// exact, within ±2⁴⁷, from 32-bit differences and products.
     #[inline(always)]
     pub(crate) fn numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
-        Plane::numerators_given(p, v)
-    }
-
-    /// [`numerators`](Self::numerators) in the form this core takes in fewer instructions.
-    #[inline(always)]
-    pub(crate) fn numerators_given(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
-        const SUMS: bool = cfg!(all(target_pointer_width = "32", target_has_atomic = "32"));
-        Plane::numerators_as::<SUMS>(p, v)
-    }
-
-    /// [`numerators`](Self::numerators) as differences of products, or with `SUMS` as sums of
-    /// products with one side of each negated: what Cortex-M3/M4 take. Both tested on every
-    /// host.
-    #[inline(always)]
-    fn numerators_as<const SUMS: bool>(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
         let [a, b, c] = *p;
         // Coordinates within ±2¹⁵ and values in [0, 2³⁰]: every difference fits i32.
         let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
         let (dx2, dy2) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
         let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
-        let times = mul_wide;
-        if SUMS {
-            let (neg_dx2, neg_dy1) = (a.x.wrapping_sub(c.x), a.y.wrapping_sub(b.y));
-            let nx = times(dv1, dy2).wrapping_add(times(dv2, neg_dy1));
-            let ny = times(dv2, dx1).wrapping_add(times(dv1, neg_dx2));
-            return (nx, ny);
-        }
-        let nx = times(dv1, dy2).wrapping_sub(times(dv2, dy1));
-        let ny = times(dv2, dx1).wrapping_sub(times(dv1, dx2));
+        let nx = mul_wide(dv1, dy2).wrapping_sub(mul_wide(dv2, dy1));
+        let ny = mul_wide(dv2, dx1).wrapping_sub(mul_wide(dv1, dx2));
         (nx, ny)
     }
 
@@ -276,7 +254,7 @@ impl AreaWalks {
         let (nx, ny) = if shift >= 16 {
             Plane::short_numerators(p, v)
         } else {
-            Plane::numerators_given(p, v)
+            Plane::numerators(p, v)
         };
         let (sx, sy) = word_steps(nx, ny, shift, self.area, self.short.as_ref())?;
         let reference = Reference::of(p[0]);
@@ -541,10 +519,10 @@ mod tests {
         }
     }
 
-    /// The sums of products (Cortex-M3/M4) and the differences equal the exact numerators: at
-    /// the corners of the range (coordinates ±2¹⁵, values 0 and 2³⁰) and at random.
+    /// The numerators are the exact ones: at the corners of the range (coordinates ±2¹⁵,
+    /// values 0 and 2³⁰) and at random.
     #[test]
-    fn numerators_as_sums_equal_differences() {
+    fn numerators_are_exact() {
         let cases = numerator_cases(
             [0, 1 << 30, 1, (1 << 30) - 1],
             0x9E37_79B9_7F4A_7C15,
@@ -557,8 +535,7 @@ mod tests {
                 (v[2] - v[0]) as i64 * (p[1].x - p[0].x) as i64
                     - (v[1] - v[0]) as i64 * (p[2].x - p[0].x) as i64,
             );
-            assert_eq!(Plane::numerators_as::<true>(&p, v), exact, "{p:?} {v:?}");
-            assert_eq!(Plane::numerators_as::<false>(&p, v), exact, "{p:?} {v:?}");
+            assert_eq!(Plane::numerators(&p, v), exact, "{p:?} {v:?}");
         }
     }
 
