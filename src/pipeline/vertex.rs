@@ -11,7 +11,7 @@ use core::num::NonZeroU32;
 use super::Precision;
 use crate::math::{
     below_bits, div_round, div_round_word, fraction_in_words, magnitude_bits, mul_short, mul_wide,
-    mul_wide_u32, shr_round, sqrt_above, DivideBy, Mat4, ShortQuotients, DEPTH_ONE, NARROW_CORE,
+    mul_wide_u32, shr_round, sqrt_above, DivideBy, Mat4, ShortQuotients, DEPTH_ONE,
 };
 use crate::projection::Viewport;
 use crate::raster::{ScreenPoint, PIPELINE_LIMIT};
@@ -319,9 +319,7 @@ pub(crate) fn outcode_and_project(
     // depth lies in [0, 2³⁰]. With half sizes at most 2¹⁴ (viewports up to 2048 pixels) the
     // screen position lies within ±(2¹⁴ + GUARD), which is ±PIPELINE_LIMIT: `project`'s clamps
     // would change nothing, and every result fits a 32-bit word.
-    let (qx, qy, sz) = if NARROW_CORE {
-        short_quotients(xh, yh, z, w)
-    } else if known == Known::InWords {
+    let (qx, qy, sz) = if known == Known::InWords {
         // x·half_w and y·half_h within i32 and 0 < z ≤ w < 2¹⁹ (see `Known::InWords`): words,
         // untested (w is never 0 here; as 1 it would divide without meaning, but not by zero).
         let w = NonZeroU32::new(w as u32).unwrap_or(NonZeroU32::MIN);

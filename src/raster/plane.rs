@@ -228,7 +228,7 @@ pub(crate) struct AreaWalks {
 impl AreaWalks {
     #[inline(always)]
     pub(crate) fn new(area: i64) -> AreaWalks {
-        let short = if NARROW_CORE && cfg!(target_pointer_width = "32") {
+        let short = if NARROW_CORE {
             ShortQuotients::new(area.wrapping_abs())
         } else {
             None
