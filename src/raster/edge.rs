@@ -71,11 +71,8 @@ impl EdgeWalk for CeilStepper {
         // subtraction.
         let (k, m) = (x >> SUBPIXEL_BITS, x & (S - 1));
         // Started within its top pixel (0 ≤ t < 16: every edge of a whole frame but those a
-        // clip cuts) both products are below 2²⁹; started lower (in a band below its top) by
-        // less than 2¹¹ rows on an edge less than 2¹¹ pixels wide, the second is below 2³⁰:
-        // 32-bit operands throughout.
-        let short = |v: i32| v.unsigned_abs() < 1 << 15;
-        let mut e = if (0..S).contains(&t) || (short(t) && short(dx)) {
+        // clip or a band's top cuts) both products are below 2²⁹: 32-bit operands throughout.
+        let mut e = if (0..S).contains(&t) {
             CeilStepper::new32(
                 m.wrapping_mul(dy).wrapping_add(dx.wrapping_mul(t)),
                 den,
