@@ -315,8 +315,7 @@ mod tests {
         }
     }
 
-    /// `shr_low_word` is the low word of the 64-bit shift, for every
-    /// shift and sign.
+    /// `shr_low_word` is the low word of the 64-bit shift, for every shift and sign.
     #[test]
     fn shr_low_word_is_the_shift() {
         let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
