@@ -385,10 +385,10 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 /// models and a bin per triangle that can face the camera. [`bytes`](Self::bytes) gives its
 /// size.
 ///
-/// Bins are what make bands cheap: each band reads a bin's rows and fetches, shades and sets
-/// up only the triangles that touch its own, in the mesh's order.
-/// A frame whose visible triangles do not fit is still drawn right, by walking every triangle
-/// for every band; one drawn in a single pass needs none (`TRIANGLES` may then be 0).
+/// Bins are what make bands cheap: each band reads every bin's rows but fetches, shades and
+/// sets up only the triangles that touch its own, in the mesh's order. A frame whose visible
+/// triangles do not fit is still drawn right, by walking every triangle for every band; one
+/// drawn in a single pass needs none (`TRIANGLES` may then be 0).
 ///
 /// ```
 /// use fixed3d::render::Storage;

@@ -16,9 +16,23 @@ use fixed3d::render::{Model, Renderer, Shade, Storage};
 use fixed3d::scene::Light;
 use fixed3d::texture::{Filter, Mapping, Texels, Texture, Wrap};
 
-/// The tests' display, blank where nothing was written.
-fn screen(w: u32, h: u32) -> Screen<Rgb888> {
-    Screen::new(w, h, Rgb888::new(1, 2, 3))
+/// `models` under `lights` seen by `camera` on a W x H display (blank where nothing was
+/// written), through buffers of `rows` rows.
+fn render<const V: usize, const T: usize>(
+    storage: &mut Storage<V, T>,
+    models: &[Model<'_>],
+    lights: &[Light],
+    camera: &Camera,
+    rows: u32,
+) -> Vec<Rgb888> {
+    let n = (W * rows) as usize;
+    let (mut color, mut depth) = (vec![Rgb888::BLACK; n], vec![0u16; n]);
+    let mut renderer = Renderer::new(storage, &mut color, &mut depth);
+    let mut screen = Screen::new(W, H, Rgb888::new(1, 2, 3));
+    renderer
+        .render(models, lights, camera, &mut screen)
+        .unwrap();
+    screen.pixels
 }
 
 /// The floor drawn with `texture` under a white ambient light of 1, through buffers of
@@ -33,14 +47,7 @@ fn draw_floor(texture: &Texture<'_>, rows: u32) -> Vec<Rgb888> {
         .looking_at(EYE.map(Scalar::from_num), TARGET.map(Scalar::from_num));
     let models = [Model::new(&mesh, Rgb888::WHITE).textured(texture)];
     let mut storage = Storage::<4, 2>::new();
-    let n = (W * rows) as usize;
-    let (mut color, mut depth) = (vec![Rgb888::BLACK; n], vec![0u16; n]);
-    let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
-    let mut screen = screen(W, H);
-    renderer
-        .render(&models, &[Light::ambient(1)], &camera, &mut screen)
-        .unwrap();
-    screen.pixels
+    render(&mut storage, &models, &[Light::ambient(1)], &camera, rows)
 }
 
 /// The receding floor, cut by the near plane, perspective-correct: every pixel the exact map
@@ -95,7 +102,8 @@ fn textured_floor_golden_images() {
     }
 }
 
-/// The 48 x 24 textured torus, turned 20° about x, under `lights`, shaded `shade`.
+/// The 48 x 24 textured torus, turned 20° about x, under `lights`, shaded `shade`, through
+/// buffers of 16 rows.
 fn draw_torus(texture: &Texture<'_>, shade: Shade, lights: &[Light]) -> Vec<Rgb888> {
     const COUNTS: (usize, usize) = textured_torus_counts(48, 24);
     let (mut p, mut n, mut uv, mut t) = (
@@ -112,13 +120,7 @@ fn draw_torus(texture: &Texture<'_>, shade: Shade, lights: &[Light]) -> Vec<Rgb8
         .textured(texture)
         .shaded(shade);
     let mut storage = Storage::<{ COUNTS.0 }, { COUNTS.1 }>::new();
-    let (mut color, mut depth) = (vec![Rgb888::BLACK; 320 * 16], vec![0u16; 320 * 16]);
-    let mut renderer = Renderer::new(&mut storage, &mut color, &mut depth);
-    let mut screen = screen(320, 240);
-    renderer
-        .render(&[model], lights, &camera, &mut screen)
-        .unwrap();
-    screen.pixels
+    render(&mut storage, &[model], lights, &camera, 16)
 }
 
 /// A textured torus lit flat and Gouraud by a directional light: golden images, and under a

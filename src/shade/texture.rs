@@ -266,6 +266,13 @@ impl<L: Paint> TextureCursor<'_, '_, L> {
     }
 }
 
+/// The affine coordinate walks at the first pixel of `span`, and their steps along it.
+#[inline(always)]
+fn walks_at([s, t]: &[WordPlane; 2], span: Span) -> ([i32; 2], [i32; 2]) {
+    let Span { y, x0, .. } = span;
+    ([s.at(x0, y), t.at(x0, y)], [s.sx, t.sx])
+}
+
 /// The texture coordinates at the perspective planes' values `acc`.
 #[inline]
 fn exact_at<L>(paint: &TexturePaint<'_, L>, acc: [i64; 3]) -> [i32; 2] {
@@ -360,11 +367,7 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
             scale: self.scale,
         };
         match &self.coords {
-            Coords::Walks([s, t]) => {
-                let Span { y, x0, .. } = span;
-                cursor.c = [s.at(x0, y), t.at(x0, y)];
-                cursor.step = [s.sx, t.sx];
-            }
+            Coords::Walks(walks) => (cursor.c, cursor.step) = walks_at(walks, span),
             Coords::Perspective(planes, runs) => {
                 TextureCursor::start_runs(self, planes, runs, span);
                 cursor.left = 0;
@@ -411,17 +414,16 @@ impl<'t, L: Paint> Paint for TiledPaint<'_, 't, L> {
 
     #[inline(always)]
     fn cursor(&self, span: Span) -> Self::Cursor<'_> {
-        let Span { y, x0, .. } = span;
-        let [s, t] = self.walks;
         let paint = self.paint;
+        let (c, step) = walks_at(self.walks, span);
         TiledCursor {
             texels: self.texels,
             sides: paint.sampler.sides(),
             light: paint.light.cursor(span),
             gains: paint.gains,
             scale: paint.scale,
-            c: [s.at(x0, y), t.at(x0, y)],
-            step: [s.sx, t.sx],
+            c,
+            step,
         }
     }
 }
@@ -449,8 +451,8 @@ impl<L: Paint> Iterator for TiledCursor<'_, L> {
             .texels
             .get(i as usize)
             .map_or([0; 3], |&c| rgb565_channels(c.into_storage()));
-        // Scaled as `Sampler::lit` scales (the same lines: a function shared by the two
-        // compiled to longer loops).
+        // The scaling of `Sampler::lit`, written out in both: shared through a function, even
+        // inlined, both loops compiled longer.
         let half = 1 << (SCALE_BITS - 1);
         let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
         let [r, g, b] = [ch(0), ch(1), ch(2)];
