@@ -35,7 +35,8 @@ use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Drawable;
 
 use crate::buffer::{
-    fill, BufferError, ColorDepth, DepthBuffer, DepthFormat, FrameBuffer, TargetColor,
+    fill, BufferError, Carried, Carrier, Carries, ColorDepth, DepthBuffer, DepthFormat,
+    FrameBuffer, TargetColor,
 };
 use crate::camera::{Camera, CameraError};
 use crate::math::{Angle, Mat4, Number, Scalar, Vec3};
@@ -382,32 +383,45 @@ impl<E: fmt::Debug> fmt::Display for RenderError<E> {
 impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 
 /// Storage for one frame's work, sized for the scene: a transformed vertex per vertex of all
-/// models and a bin per triangle that can face the camera. [`bytes`](Self::bytes) gives its
-/// size.
+/// models, a bin per triangle that can face the camera, and room for the solid triangles
+/// that cross from one band into the next. [`bytes`](Self::bytes) gives its size.
 ///
 /// Bins are what make bands cheap: each band reads every bin's rows but fetches, shades and
 /// sets up only the triangles that touch its own, in the mesh's order. A frame whose visible
 /// triangles do not fit is still drawn right, by walking every triangle for every band; one
 /// drawn in a single pass needs none (`TRIANGLES` may then be 0).
 ///
+/// A triangle of one colour that a band stops at its last row is carried into the next band
+/// ([`Carried`]): that band goes on with its walk instead of fetching, shading and setting it
+/// up again. `CARRIED` entries (by default 32) hold those crossing one band boundary; where
+/// more cross one, the rest are set up again, and the pixels are the same. The reference
+/// torus at 320x240 has up to about 90 solid triangles across a boundary. A frame drawn in one
+/// pass carries nothing.
+///
 /// ```
+/// use fixed3d::buffer::Carried;
 /// use fixed3d::render::Storage;
 /// // The torus of the reference scene: 1152 vertices, 2304 triangles.
-/// assert_eq!(Storage::<1152, 2304>::bytes(), 1152 * 16 + 2304 * 12);
+/// let carried = 32 * core::mem::size_of::<Carried>();
+/// assert_eq!(Storage::<1152, 2304>::bytes(), 1152 * 16 + 2304 * 12 + carried);
 /// ```
 #[derive(Clone, Debug)]
-pub struct Storage<const VERTICES: usize, const TRIANGLES: usize> {
+pub struct Storage<const VERTICES: usize, const TRIANGLES: usize, const CARRIED: usize = 32> {
     vertices: [ScreenVertex; VERTICES],
     bins: [Bin; TRIANGLES],
+    carried: [Carried; CARRIED],
 }
 
-impl<const VERTICES: usize, const TRIANGLES: usize> Storage<VERTICES, TRIANGLES> {
+impl<const VERTICES: usize, const TRIANGLES: usize, const CARRIED: usize>
+    Storage<VERTICES, TRIANGLES, CARRIED>
+{
     /// Empty storage (a `const fn`: it can be a `static`).
     #[must_use]
     pub const fn new() -> Self {
         Storage {
             vertices: [ScreenVertex::DEFAULT; VERTICES],
             bins: [Bin::EMPTY; TRIANGLES],
+            carried: [Carried::EMPTY; CARRIED],
         }
     }
 
@@ -418,7 +432,9 @@ impl<const VERTICES: usize, const TRIANGLES: usize> Storage<VERTICES, TRIANGLES>
     }
 }
 
-impl<const VERTICES: usize, const TRIANGLES: usize> Default for Storage<VERTICES, TRIANGLES> {
+impl<const VERTICES: usize, const TRIANGLES: usize, const CARRIED: usize> Default
+    for Storage<VERTICES, TRIANGLES, CARRIED>
+{
     fn default() -> Self {
         Self::new()
     }
@@ -436,6 +452,7 @@ impl<const VERTICES: usize, const TRIANGLES: usize> Default for Storage<VERTICES
 pub struct Renderer<'b, C, D = u16> {
     vertices: &'b mut [ScreenVertex],
     bins: &'b mut [Bin],
+    carried: &'b mut [Carried],
     color: &'b mut [C],
     depth: &'b mut [D],
     background: Option<C>,
@@ -449,15 +466,18 @@ where
 {
     /// A renderer over `storage` and the colour and depth buffers (their common length, in
     /// whole rows of the display, is a band's height).
-    pub fn new<const VERTICES: usize, const TRIANGLES: usize>(
-        storage: &'b mut Storage<VERTICES, TRIANGLES>,
+    pub fn new<const VERTICES: usize, const TRIANGLES: usize, const CARRIED: usize>(
+        storage: &'b mut Storage<VERTICES, TRIANGLES, CARRIED>,
         color: &'b mut [C],
         depth: &'b mut [D],
     ) -> Self {
         Self::from_slices(&mut storage.vertices, &mut storage.bins, color, depth)
+            .with_carried(&mut storage.carried)
     }
 
-    /// A renderer over storage of any length (see [`Storage`] for what each slice holds).
+    /// A renderer over storage of any length (see [`Storage`] for what each slice holds),
+    /// which carries no triangle from band to band until given room
+    /// ([`with_carried`](Self::with_carried)).
     pub fn from_slices(
         vertices: &'b mut [ScreenVertex],
         bins: &'b mut [Bin],
@@ -467,11 +487,19 @@ where
         Renderer {
             vertices,
             bins,
+            carried: &mut [],
             color,
             depth,
             background: None,
             cull: Cull::Back,
         }
+    }
+
+    /// With room for the triangles of one colour that cross from one band into the next (see
+    /// [`Storage`]).
+    #[must_use]
+    pub fn with_carried(self, carried: &'b mut [Carried]) -> Self {
+        Renderer { carried, ..self }
     }
 
     /// With the colour each frame is cleared to (by default black, the colour of `Rgb888`'s
@@ -531,6 +559,7 @@ where
             .background
             .unwrap_or_else(|| C::from(Rgb888::new(0, 0, 0)));
         let mut stats = frame.stats();
+        let mut carries = Carries::new(&mut *self.carried);
         let mut first = 0usize;
         while first < viewport.height() as usize {
             let n = rows.min(viewport.height() as usize - first) * width;
@@ -541,13 +570,14 @@ where
             fill(color, background);
             fill(depth, D::FAR);
             let band = frame
-                .draw_band(first as u32, color, depth)
+                .draw_band_carrying(first as u32, color, depth, &mut carries)
                 .map_err(|_| RenderError::BuffersTooSmall { row: width })?;
             // The first band counts what was not binned (every band counts the same).
             if first == 0 {
                 stats = stats + band;
             } else {
                 stats.drawn = stats.drawn.saturating_add(band.drawn);
+                stats.carried = stats.carried.saturating_add(band.carried);
             }
             let rect = Rectangle::new(
                 Point::new(
@@ -730,6 +760,71 @@ impl<'f> PreparedFrame<'f> {
         C: TargetColor,
         D: DepthFormat,
     {
+        self.draw_band_with(first_row, color, depth, &mut ())
+    }
+
+    /// [`draw_band`](Self::draw_band) for the band below the one drawn last with `carries`,
+    /// which goes on with the solid triangles that band stopped at its last row instead of
+    /// setting them up again (see [`Carries`]); any other band sets up every triangle it
+    /// meets. One queue serves the bands of one frame, drawn top to bottom: start each frame
+    /// with a new one. The pixels are those of [`draw_band`](Self::draw_band).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
+    /// use fixed3d::buffer::{Carried, Carries, DepthFormat};
+    /// use fixed3d::mesh::CUBE;
+    /// use fixed3d::pipeline::{Bin, Cull, ScreenVertex};
+    /// use fixed3d::projection::Viewport;
+    /// use fixed3d::render::{Model, PreparedFrame};
+    /// use fixed3d::{camera::Camera, scene::Light};
+    ///
+    /// let camera = Camera::perspective(60, 1, 10).looking_at([2, 2, 3], [0, 0, 0]);
+    /// let models = [Model::new(&CUBE, Rgb888::new(255, 160, 64))];
+    /// let (mut vertices, mut bins) = ([ScreenVertex::DEFAULT; 8], [Bin::EMPTY; 12]);
+    /// let viewport = Viewport::new(32, 32).unwrap();
+    /// let frame = PreparedFrame::new(
+    ///     &models, &[Light::ambient(1)], &camera, viewport, Cull::Back, &mut vertices, &mut bins,
+    /// ).unwrap();
+    /// let mut room = [Carried::EMPTY; 8];
+    /// let mut carries = Carries::new(&mut room);
+    /// let (mut color, mut depth) = ([Rgb565::new(0, 0, 0); 32 * 4], [u16::FAR; 32 * 4]);
+    /// let mut carried = 0;
+    /// for first_row in (0..32).step_by(4) {
+    ///     color.fill(Rgb565::new(0, 0, 0));
+    ///     depth.fill(u16::FAR);
+    ///     let stats = frame.draw_band_carrying(first_row, &mut color, &mut depth, &mut carries);
+    ///     carried += stats.unwrap().carried;
+    ///     // … send `color` to the display's rows first_row..first_row + 4
+    /// }
+    /// assert!(carried > 0); // the cube's faces cross band boundaries
+    /// ```
+    pub fn draw_band_carrying<C, D>(
+        &self,
+        first_row: u32,
+        color: &mut [C],
+        depth: &mut [D],
+        carries: &mut Carries<'_>,
+    ) -> Result<Stats, BufferError>
+    where
+        C: TargetColor,
+        D: DepthFormat,
+    {
+        self.draw_band_with(first_row, color, depth, carries)
+    }
+
+    /// A band, its solid triangles handed to `carries`.
+    fn draw_band_with<C, D, B>(
+        &self,
+        first_row: u32,
+        color: &mut [C],
+        depth: &mut [D],
+        carries: &mut B,
+    ) -> Result<Stats, BufferError>
+    where
+        C: TargetColor,
+        D: DepthFormat,
+        B: Carrier,
+    {
         let width = self.frame.viewport().width();
         let rows = (color.len().min(depth.len()) / width as usize) as u32;
         let n = rows as usize * width as usize;
@@ -739,6 +834,8 @@ impl<'f> PreparedFrame<'f> {
         let mut color = FrameBuffer::new(color, width, rows)?;
         let mut depth = DepthBuffer::new(depth, width, rows)?;
         let mut target = ColorDepth::band(&mut color, &mut depth, first_row)?.uncounted();
+        let clip = crate::buffer::RasterTarget::clip(&target);
+        carries.begin_band(clip.y0, clip.y1);
         let mut stats = Stats::default();
         let mut offset = 0usize;
         // This band's bins: the runs of each model, in model order.
@@ -760,14 +857,9 @@ impl<'f> PreparedFrame<'f> {
                 lighting_of(model, &self.lighting),
             );
             let inside = if m < 64 { self.inside >> m & 1 } else { 0 };
-            let mut draw = |p: &dyn Drawing<_>| {
-                p.band(
-                    &mut target,
-                    m as u16,
-                    mine,
-                    self.bins.is_some(),
-                    model.style,
-                )
+            let mut draw = |p: &dyn Drawing<_, B>| {
+                let bins = (m as u16, mine, self.bins.is_some());
+                p.band(&mut target, bins, model.style, carries)
             };
             let (frame, inside) = (self.frame, inside);
             let drawn = dispatch(model, |shading| {
@@ -890,11 +982,17 @@ impl<S: Shading> Binning for Prepared<'_, '_, MAX_LIGHTS, S> {
 }
 
 /// A prepared model drawing one band, whatever its shading type.
-trait Drawing<T> {
-    fn band(&self, target: &mut T, tag: u16, bins: &[Bin], binned: bool, style: Style) -> Stats;
+trait Drawing<T, B> {
+    fn band(
+        &self,
+        target: &mut T,
+        bins: (u16, &[Bin], bool),
+        style: Style,
+        carries: &mut B,
+    ) -> Stats;
 }
 
-impl<C, D, Q, K, S> Drawing<ColorDepth<'_, '_, C, D, Q, crate::buffer::Less, K>>
+impl<C, D, Q, K, S, B> Drawing<ColorDepth<'_, '_, C, D, Q, crate::buffer::Less, K>, B>
     for Prepared<'_, '_, MAX_LIGHTS, S>
 where
     C: TargetColor,
@@ -902,20 +1000,20 @@ where
     Q: crate::buffer::Quantize<C>,
     K: crate::buffer::FragmentCount,
     S: Shading,
+    B: Carrier,
 {
     fn band(
         &self,
         target: &mut ColorDepth<'_, '_, C, D, Q, crate::buffer::Less, K>,
-        tag: u16,
-        bins: &[Bin],
-        binned: bool,
+        (tag, bins, binned): (u16, &[Bin], bool),
         style: Style,
+        carries: &mut B,
     ) -> Stats {
         let drawn = match (style, binned) {
             (Style::Wireframe, _) if WIREFRAME => self.draw_wireframe_tested(target),
             (Style::Wireframe, _) => Ok(Stats::default()),
-            (Style::Solid, true) => self.draw_binned(target, tag, bins),
-            (Style::Solid, false) => self.draw(target),
+            (Style::Solid, true) => self.draw_binned(target, tag, bins, carries),
+            (Style::Solid, false) => self.draw_with(target, carries),
         };
         let Ok(stats) = drawn;
         stats

@@ -3,7 +3,7 @@
 
 /// What one drawing call did. Counts saturate. Drawing a frame band by band gives every band
 /// the same `primitives`, `invalid`, `outside`, `clipped`, `culled` and `degenerate` counts;
-/// `drawn`, `fragments` and `written` are that band's.
+/// `drawn`, `carried`, `fragments` and `written` are that band's.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Stats {
     /// Triangles (or edges, for wireframes with an edge list) looked at.
@@ -20,6 +20,9 @@ pub struct Stats {
     pub degenerate: u32,
     /// Triangles (or lines) handed to the rasteriser.
     pub drawn: u32,
+    /// Of those, triangles a band took on from where the band before stopped them, with no
+    /// set-up (see [`Carries`](crate::buffer::Carries)).
+    pub carried: u32,
     /// Pixels depth-tested (or drawn, without depth).
     pub fragments: u32,
     /// Pixels written.
@@ -40,6 +43,7 @@ impl core::ops::Add for Stats {
             culled: add(self.culled, o.culled),
             degenerate: add(self.degenerate, o.degenerate),
             drawn: add(self.drawn, o.drawn),
+            carried: add(self.carried, o.carried),
             fragments: add(self.fragments, o.fragments),
             written: add(self.written, o.written),
         }

@@ -15,6 +15,7 @@ mod showcase;
 
 use embedded_graphics::geometry::Size;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
+use fixed3d::buffer::Carried;
 use fixed3d::math::Vec3;
 use fixed3d::mesh::FaceNormal;
 use fixed3d::pipeline::{Bin, ScreenVertex};
@@ -141,8 +142,9 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     let rows = (W * BAND_ROWS) as usize;
     let (mut band, mut band_depth) = (vec![Rgb565::BLACK; rows], vec![0u16; rows]);
     let mut bins = vec![Bin::EMPTY; BAND_BINS];
+    let mut carried = vec![Carried::EMPTY; BAND_CARRIED];
     let mut banded = |f, cache: &mut [ScreenVertex]| {
-        let (b, d) = (&mut bins, &mut band_depth);
+        let (b, d) = ((&mut bins[..], &mut carried[..]), &mut band_depth);
         bands(&mesh, f, cache, b, &mut band, d, &mut NoDisplay, &mut |w| {
             w()
         })

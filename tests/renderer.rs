@@ -8,6 +8,7 @@ mod common;
 use common::golden;
 use common::scene::*;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use fixed3d::buffer::Carried;
 use fixed3d::camera::{Camera, CameraError};
 use fixed3d::mesh::{Mesh, CUBE};
 use fixed3d::pipeline::{Bin, Cull, ScreenVertex, Stats};
@@ -31,20 +32,34 @@ fn lights() -> [Light; 2] {
     [Light::ambient(0.2), Light::directional([-1, 1, 1], 0.8)]
 }
 
-/// Renders `models` through buffers of `rows` rows and storage for `bins` bins.
+/// Renders `models` through buffers of `rows` rows and storage for `bins` bins (and room to
+/// carry 32 triangles from band to band, as `Storage` has by default).
 fn render(models: &[Model<'_>], rows: u32, bins: usize) -> (Screen, Stats) {
+    render_with(models, &camera(), rows, (bins, 32))
+}
+
+/// Renders `models` seen by `camera` through buffers of `rows` rows, with storage for `bins`
+/// bins and room to carry `carried` triangles.
+fn render_with(
+    models: &[Model<'_>],
+    camera: &Camera,
+    rows: u32,
+    (bins, carried): (usize, usize),
+) -> (Screen, Stats) {
     let mut screen = screen(320, 240);
     let vertices: usize = models.iter().map(|m| m.mesh().positions().len()).sum();
     let (mut v, mut b) = (
         vec![ScreenVertex::DEFAULT; vertices],
         vec![Bin::EMPTY; bins],
     );
+    let mut room = vec![Carried::EMPTY; carried];
     let (mut c, mut d) = (
         vec![Rgb565::BLACK; (320 * rows) as usize],
         vec![0u16; (320 * rows) as usize],
     );
     let stats = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d)
-        .render(models, &lights(), &camera(), &mut screen)
+        .with_carried(&mut room)
+        .render(models, &lights(), camera, &mut screen)
         .unwrap();
     (screen, stats)
 }
@@ -82,6 +97,80 @@ fn torus_through_the_renderer_equals_its_golden_image() {
                 );
             }
         }
+    }
+}
+
+/// Solid triangles that cross a band's last row are carried into the next band: the frame is
+/// the one pass's with room to carry every one, a few, one, or none, in bands of several
+/// heights, for a flat torus and an unlit cube together, seen from afar and from so near that
+/// the near plane and the guard band cut the scene (the pieces of a clipped triangle are set
+/// up again in each band). Every band draws the triangles it carried, none twice.
+#[test]
+fn carried_triangles_draw_the_frame_of_one_pass() {
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let models = [
+        Model::new(&mesh, BASE).rotated_x(25).rotated_y(10),
+        Model::new(&CUBE, Rgb888::CYAN)
+            .shaded(Shade::Unlit)
+            .scaled(0.3)
+            .translated([0.4, 0.1, 0.5]),
+    ];
+    let near = Camera::perspective(60, 1, 10).looking_at([0.3, 0.2, 1.1], [0, 0, 0]);
+    for camera in [camera(), near] {
+        let (one_pass, full) = render_with(&models, &camera, 240, (4000, 64));
+        assert_eq!(full.carried, 0, "one pass carries nothing");
+        for rows in [1, 12, 13, 60] {
+            let mut carried = Vec::new();
+            for room in [200, 64, 3, 1, 0] {
+                let (banded, stats) = render_with(&models, &camera, rows, (4000, room));
+                assert!(
+                    banded.pixels == one_pass.pixels,
+                    "bands of {rows} rows, room for {room}"
+                );
+                assert_eq!(banded.writes, 320 * 240);
+                assert!(stats.carried <= stats.drawn);
+                carried.push(stats.carried);
+            }
+            // More room carries more, at most as many across each band boundary as it holds;
+            // none carries nothing.
+            let boundaries = 240 / rows;
+            assert!(carried.windows(2).all(|w| w[0] >= w[1]), "{carried:?}");
+            assert!(carried[0] > carried[2] && carried[4] == 0, "{carried:?}");
+            assert!(carried[2] <= 3 * boundaries && carried[3] <= boundaries);
+        }
+    }
+    // Without bins every band walks every triangle: nothing is carried (no bin to match).
+    let (one_pass, _) = render_with(&models, &camera(), 240, (0, 64));
+    let (banded, stats) = render_with(&models, &camera(), 12, (0, 64));
+    assert!(banded.pixels == one_pass.pixels);
+    assert_eq!(stats.carried, 0);
+}
+
+/// Two coplanar triangles, one in each of two unlit models, overlapping, in different
+/// colours: where their depths tie the first model's shows, as in one pass, also where the
+/// band before carried it (its top row is above the band in which the second begins).
+#[test]
+fn carried_triangles_keep_their_place_in_the_order() {
+    use fixed3d::math::Vec3;
+    let v = |x: f64, y: f64| Vec3::from([x, y, 0.0]);
+    let first = [v(-0.8, 0.7), v(-0.2, -0.6), v(0.8, 0.5)];
+    let second = [v(-0.6, 0.1), v(0.0, -0.7), v(0.7, 0.0)];
+    let triangle = [[0u16, 1, 2]];
+    let (a, b) = (
+        Mesh::new(&first, &triangle).unwrap(),
+        Mesh::new(&second, &triangle).unwrap(),
+    );
+    let unlit = |mesh, color| Model::new(mesh, color).shaded(Shade::Unlit);
+    let models = [unlit(&a, Rgb888::RED), unlit(&b, Rgb888::GREEN)];
+    let swapped = [unlit(&b, Rgb888::GREEN), unlit(&a, Rgb888::RED)];
+    let (one_pass, _) = render(&models, 240, 2);
+    let (other, _) = render(&swapped, 240, 2);
+    assert!(one_pass.pixels != other.pixels, "no pixel ties");
+    for rows in [4, 13, 16, 40] {
+        let (banded, stats) = render(&models, rows, 2);
+        assert!(banded.pixels == one_pass.pixels, "bands of {rows} rows");
+        assert!(stats.carried > 0, "{stats:?}");
     }
 }
 

@@ -246,6 +246,13 @@ pub(crate) struct RoundedRows {
 }
 
 impl RoundedRows {
+    /// A walk that is never read.
+    pub(crate) const NONE: Self = RoundedRows {
+        row: 0,
+        step_x: 0,
+        step_y: 0,
+    };
+
     /// The walk of the plane through `(p[i], z[i])` (depths in Q1.30, at most 2³⁰; `area` the
     /// doubled signed area, non-zero; coordinates within the pipeline's range) on row `y`,
     /// with the loop's step along a row; `None` where a step does not fit 32 bits (a triangle

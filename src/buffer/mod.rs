@@ -7,16 +7,21 @@
 //! - [`ColorDepth`] pairs the two for z-buffered filling, over a whole frame or one horizontal
 //!   band of it; [`Direct`] fills any `DrawTarget` with no depth buffer at all, one
 //!   `fill_solid` per span.
+//! - [`Carries`] takes the solid triangles a band stops at its last row on into the next band
+//!   of a frame drawn top to bottom, in storage of the caller's ([`Carried`]).
 //! - [`Nearest`] and [`OrderedDither`] turn the shaded 24-bit colour into the target's colour
 //!   (a [`TargetColor`]); the dither keeps shading visible on 1-bit and grey displays. Smooth
 //!   shading into a colour of channels (RGB565 and the like) is rounded straight to its depth.
 
+mod carry;
 mod depth;
 mod dither;
 mod framebuffer;
 mod grid;
 mod surface;
 
+pub(crate) use carry::Carrier;
+pub use carry::{Carried, Carries};
 pub use depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, LessOrEqual, Uncounted,
 };

@@ -5,6 +5,7 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
 use embedded_graphics::primitives::Rectangle;
 
+use super::carry::Carries;
 use super::depth::{
     Counted, DepthBuffer, DepthFormat, DepthTest, FragmentCount, Less, RoundedRows, SpanColors,
     Uncounted,
@@ -17,7 +18,7 @@ use crate::raster::{
     line_pixels, rows_in_range, spans_in_range, PipelineEdge, PixelRect, Plane, RowStarts,
     ScreenPoint, Span, TriangleWalk,
 };
-use crate::shade::Paint;
+use crate::shade::{Paint, SolidPaint};
 use crate::stats::Stats;
 
 /// One screen triangle to fill: its snapped vertices, their depths and its doubled signed
@@ -76,6 +77,31 @@ pub trait RasterTarget {
         paint: &P,
         stats: &mut Stats,
     ) -> Result<(), Self::Error>;
+    /// Fills one triangle of colour `rgb`, drawing a band of a frame that [`Carries`] the
+    /// triangles that go on below it into the next band (a target that carries none fills it
+    /// as any other).
+    #[doc(hidden)]
+    fn fill_carrying(
+        &mut self,
+        triangle: &ScreenTriangle,
+        rgb: Rgb888,
+        carries: &mut Carries<'_>,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error> {
+        let _ = carries;
+        self.fill_triangle(triangle, &SolidPaint(rgb), stats)
+    }
+    /// Goes on with the triangle the band before carried for the one being drawn (see
+    /// [`Carries`]): a target that carries none has none to go on with.
+    #[doc(hidden)]
+    fn resume_carried(
+        &mut self,
+        carries: &mut Carries<'_>,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error> {
+        let _ = (carries, stats);
+        Ok(())
+    }
 }
 
 /// A colour buffer and a depth buffer of the same size, z-buffered filling: a fragment is
@@ -230,19 +256,25 @@ where
             None
         };
         match unclamped {
-            Some((walk, st)) => {
-                let spans = rows.spans(columns);
-                self.each_span(spans, walk, stats, colors_for, |ds, cs, start, g, w| {
-                    D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w)
-                });
+            Some((mut walk, st)) => {
+                let mut spans = rows.spans(columns);
+                self.each_span(
+                    &mut spans,
+                    &mut walk,
+                    stats,
+                    colors_for,
+                    |ds, cs, start, g, w| {
+                        D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w)
+                    },
+                );
             }
             None => {
                 // Spans start at column 0 or right of it (the clip rectangle's first column).
                 let plane = triangle.plane();
                 let step = plane.step_x();
                 self.each_span(
-                    rows.spans(columns),
-                    plane.rows(0, y),
+                    &mut rows.spans(columns),
+                    &mut plane.rows(0, y),
                     stats,
                     colors_for,
                     |ds, cs, start, g, w| D::test_span::<C, T, K>(ds, cs, start, step, g, w),
@@ -251,17 +283,65 @@ where
         }
     }
 
+    /// The solid triangle `triangle` in colour `c` (`rgb` before quantizing), carried into
+    /// the next band by `carries` if it goes on below the target's rows and its depths take
+    /// the word walk (see [`Carries`]); [`fill_triangle`](RasterTarget::fill_triangle) fills
+    /// the others.
+    fn carrying_spans(
+        &mut self,
+        triangle: &ScreenTriangle,
+        (c, rgb): (C, Rgb888),
+        carries: &mut Carries<'_>,
+        stats: &mut Stats,
+    ) -> bool {
+        let Some(rows) = rows_in_range(triangle.p, self.clip, triangle.area) else {
+            return true;
+        };
+        let Some((mut walk, st)) = D::unclamped(triangle.max())
+            .then(|| RoundedRows::new(&triangle.p, triangle.z, triangle.area, rows.row()))
+            .flatten()
+        else {
+            return false;
+        };
+        let mut spans = rows.spans((self.clip.x0, self.clip.x1));
+        carries.solid(rgb);
+        self.each_span(
+            &mut spans,
+            &mut walk,
+            stats,
+            |_| move || c,
+            |ds, cs, start, g, w| D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w),
+        );
+        self.carry_stopped(&spans, walk, carries);
+        true
+    }
+
+    /// Carries a triangle that goes on below the target's rows into the next band, its walks
+    /// stopped on the row past the target's last.
+    #[inline(always)]
+    fn carry_stopped(
+        &self,
+        spans: &TriangleWalk<PipelineEdge>,
+        depth: RoundedRows,
+        carries: &mut Carries<'_>,
+    ) {
+        let end = self.clip.y1;
+        if spans.row() == end && spans.past() > end {
+            carries.keep(spans.stopped(), depth);
+        }
+    }
+
     /// Runs `test_span(depths, colours, depth at the first pixel, colour source, failures so
     /// far)`, which returns the failures so far with the span's added, on every span of a
     /// triangle, and counts the fragments and the writes (fragments less failures) into
     /// `stats`. One count of the fragments that fail (fewer than those that pass) carried
     /// through the pixel loops, with no sum after each span, costs less than a count of
-    /// writes from zero for each span.
+    /// writes from zero for each span. The walks are left on the row past the last.
     #[inline(always)]
     fn each_span<G: SpanColors<C>, R: RowStarts>(
         &mut self,
-        spans: TriangleWalk<PipelineEdge>,
-        mut depth: R,
+        spans: &mut TriangleWalk<PipelineEdge>,
+        depth: &mut R,
         stats: &mut Stats,
         mut colors_for: impl FnMut(Span) -> G,
         mut test_span: impl FnMut(&mut [D], &mut [C], R::Start, G, u32) -> u32,
@@ -440,6 +520,52 @@ where
         Some(channels) => channels,
         None => [255; 3],
     };
+
+    #[inline]
+    fn fill_carrying(
+        &mut self,
+        triangle: &ScreenTriangle,
+        rgb: Rgb888,
+        carries: &mut Carries<'_>,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error> {
+        if Q::UNIFORM {
+            let c = self.quantize.quantize(rgb, 0, 0);
+            if self.carrying_spans(triangle, (c, rgb), carries, stats) {
+                return Ok(());
+            }
+        }
+        self.fill_triangle(triangle, &SolidPaint(rgb), stats)
+    }
+
+    /// Goes on with the triangle `carries` took for the one being drawn, in its colour, from
+    /// the row where the band before stopped it.
+    #[inline(never)]
+    fn resume_carried(
+        &mut self,
+        carries: &mut Carries<'_>,
+        stats: &mut Stats,
+    ) -> Result<(), Self::Error> {
+        let Some(c) = carries.take() else {
+            return Ok(());
+        };
+        let Some(walk) = c.walk else {
+            return Ok(());
+        };
+        let mut spans = walk.resume(self.clip.y0, self.clip.y1, (self.clip.x0, self.clip.x1));
+        carries.solid(c.rgb);
+        let (st, color) = (c.depth.step_x, self.quantize.quantize(c.rgb, 0, 0));
+        let mut depth = c.depth;
+        self.each_span(
+            &mut spans,
+            &mut depth,
+            stats,
+            |_| move || color,
+            |ds, cs, start, g, w| D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w),
+        );
+        self.carry_stopped(&spans, depth, carries);
+        Ok(())
+    }
 
     #[inline]
     fn fill_triangle<P: Paint>(

@@ -10,8 +10,8 @@ use super::clip::{clip_polygon, clip_segment, ClipVertex, Polygon};
 use super::vertex::{project, ScreenMap};
 use super::{add_count, bump, Cull, Frame, Prepared, ScreenVertex, Stats};
 use crate::buffer::{
-    ColorDepth, DepthFormat, DepthTest, FragmentCount, Quantize, RasterTarget, ScreenTriangle,
-    TargetColor,
+    Carrier, ColorDepth, DepthFormat, DepthTest, FragmentCount, Quantize, RasterTarget,
+    ScreenTriangle, TargetColor,
 };
 use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
 use crate::mesh::{FaceNormal, Object, Triangle};
@@ -215,34 +215,51 @@ fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
     first < clip.y1 as i64 && end > clip.y0 as i64
 }
 
-fn fill<T: RasterTarget, P: Paint>(
+fn fill<T: RasterTarget, P: Paint, B: Carrier>(
     target: &mut T,
     p: [ScreenPoint; 3],
     z: [i32; 3],
     area: i64,
     paint: &P,
+    carries: &mut B,
     stats: &mut Stats,
 ) -> Result<(), T::Error> {
     bump(&mut stats.drawn);
     paint.visit(Fill {
         target,
         triangle: &ScreenTriangle::new(p, z, area),
+        carries,
         stats,
     })
 }
 
 /// A triangle's fill, handed its paint's form by [`Paint::visit`].
-struct Fill<'a, T> {
+struct Fill<'a, T, B> {
     target: &'a mut T,
     triangle: &'a ScreenTriangle,
+    carries: &'a mut B,
     stats: &'a mut Stats,
 }
 
-impl<T: RasterTarget> PaintUser for Fill<'_, T> {
+impl<T: RasterTarget, B: Carrier> PaintUser for Fill<'_, T, B> {
     type Output = Result<(), T::Error>;
     #[inline(always)]
     fn with<P: Paint>(self, paint: &P) -> Self::Output {
-        self.target.fill_triangle(self.triangle, paint, self.stats)
+        let Fill {
+            target,
+            triangle,
+            carries,
+            stats,
+        } = self;
+        // A band that carries triangles into the next fills solid ones its own way (a solid
+        // paint's colour is a constant).
+        if let Some(rgb) = paint.solid().filter(|_| P::SOLID) {
+            let carried = carries.with_carries(|c| target.fill_carrying(triangle, rgb, c, stats));
+            if let Some(done) = carried {
+                return done;
+            }
+        }
+        target.fill_triangle(triangle, paint, stats)
     }
 }
 
@@ -294,6 +311,17 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// [`Direct`](crate::buffer::Direct) draw target). Returns what was drawn, or the target's
     /// first error.
     pub fn draw<T: RasterTarget>(&self, target: &mut T) -> Result<Stats, T::Error> {
+        // A frame drawn by walking every triangle carries nothing from band to band.
+        self.draw_with(target, &mut ())
+    }
+
+    /// [`draw`](Self::draw), carrying solid triangles into the next band by `carries` (see
+    /// [`Carries`](crate::buffer::Carries)) where it is one.
+    pub(crate) fn draw_with<T: RasterTarget, B: Carrier>(
+        &self,
+        target: &mut T,
+        carries: &mut B,
+    ) -> Result<Stats, T::Error> {
         let cull = self.frame.cull;
         let mut stats = Stats::default();
         let map = ScreenMap::new(&self.frame.viewport, &self.frame.precision);
@@ -306,7 +334,16 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             add_count(&mut stats.primitives, triangles.len());
             let inside = setup.inside;
             for (k, tri) in triangles.iter().enumerate() {
-                self.triangle(target, &setup, (k, tri), inside, cull, &map, &mut stats)?;
+                self.triangle(
+                    target,
+                    &setup,
+                    (k, tri),
+                    inside,
+                    cull,
+                    &map,
+                    carries,
+                    &mut stats,
+                )?;
             }
         }
         Ok(stats)
@@ -316,7 +353,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// `inside` them all), culled, clipped where it crosses a plane, shaded and filled.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn triangle<T: RasterTarget>(
+    fn triangle<T: RasterTarget, B: Carrier>(
         &self,
         target: &mut T,
         setup: &ObjectSetup<'_, N>,
@@ -324,6 +361,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         inside: bool,
         cull: Cull,
         map: &ScreenMap,
+        carries: &mut B,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         let Some([a, b, c]) = setup.corners(tri) else {
@@ -365,6 +403,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 &v,
                 varyings,
                 area,
+                carries,
                 stats,
             )?;
             return Ok(());
@@ -374,7 +413,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             return Ok(());
         }
         let planes = a.outcode | b.outcode | c.outcode;
-        self.fill_clipped(target, setup, (k, tri), planes, map, stats)
+        self.fill_clipped(target, setup, (k, tri), planes, map, carries, stats)
     }
 
     /// Bins the frame: every triangle that may cover a pixel goes into `bins` (from `*len` on)
@@ -446,11 +485,12 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// them (the mesh's: triangles at equal depths then cover each other as in one pass).
     /// Counts only what it draws (`drawn`, `fragments`, `written`): the rest was counted when
     /// binning.
-    pub(crate) fn draw_binned<T: RasterTarget>(
+    pub(crate) fn draw_binned<T: RasterTarget, B: Carrier>(
         &self,
         target: &mut T,
         tag: u16,
         bins: &[Bin],
+        carries: &mut B,
     ) -> Result<Stats, T::Error> {
         let clip = target.clip();
         let (y0, y1) = (clip.y0, clip.y1);
@@ -477,7 +517,21 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 }
                 // A bin's rows are its triangle's own: only the pieces of a clipped one
                 // (binned for every row) are tested against the band's rows again.
-                setup.band = band && bin.bottom == Bin::EVERY_ROW.1;
+                let clipped = bin.bottom == Bin::EVERY_ROW.1;
+                setup.band = band && clipped;
+                // A solid triangle the band before carried goes on where it stopped, with
+                // nothing set up again (the pieces of a clipped one are not carried).
+                let key = (bin.object, bin.triangle);
+                if carries.meet((!clipped).then_some(key)) {
+                    bump(&mut again.drawn);
+                    bump(&mut again.carried);
+                    if let Some(done) =
+                        carries.with_carries(|c| target.resume_carried(c, &mut again))
+                    {
+                        done?;
+                    }
+                    continue;
+                }
                 let k = bin.triangle as usize;
                 let Some(tri) = triangles.get(k) else {
                     continue;
@@ -489,11 +543,13 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     setup.inside,
                     self.frame.cull,
                     &map,
+                    carries,
                     &mut again,
                 )?;
             }
         }
         stats.drawn = again.drawn;
+        stats.carried = again.carried;
         stats.fragments = again.fragments;
         stats.written = again.written;
         Ok(stats)
@@ -513,13 +569,15 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// and fills the fan of what is left. Few triangles need it: out of line, its code does
     /// not move the registers of the triangle walk's loop.
     #[inline(never)]
-    fn fill_clipped<T: RasterTarget>(
+    #[allow(clippy::too_many_arguments)]
+    fn fill_clipped<T: RasterTarget, B: Carrier>(
         &self,
         target: &mut T,
         setup: &ObjectSetup<'_, N>,
         (k, tri): (usize, &Triangle),
         planes: u8,
         map: &ScreenMap,
+        carries: &mut B,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         bump(&mut stats.clipped);
@@ -549,7 +607,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                         uv: &[first.3, v1.3, v2.3],
                     };
                     let face = (Self::face_normal(setup, k), tri);
-                    self.fill_face(target, setup, face, &v, varyings, area, stats)?;
+                    self.fill_face(target, setup, face, &v, varyings, area, carries, stats)?;
                 }
             }
         }
@@ -562,7 +620,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     // Not inlined: one call per triangle costs little and keeps the stage measurable.
     #[inline(never)]
     #[allow(clippy::too_many_arguments)]
-    fn fill_face<T: RasterTarget>(
+    fn fill_face<T: RasterTarget, B: Carrier>(
         &self,
         target: &mut T,
         setup: &ObjectSetup<'_, N>,
@@ -570,6 +628,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         v: &[(ScreenPoint, i32); 3],
         varyings: Varyings<'_>,
         area: i64,
+        carries: &mut B,
         stats: &mut Stats,
     ) -> Result<(), T::Error> {
         let p = map3(*v, |v| v.0);
@@ -611,7 +670,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
             let paint = self.shading.paint(&face, lighting);
-            fill(target, p, z, area, &paint, stats)
+            fill(target, p, z, area, &paint, carries, stats)
         } else {
             fill(
                 target,
@@ -619,6 +678,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 z,
                 area,
                 &self.shading.fallback(&face, lighting),
+                carries,
                 stats,
             )
         }

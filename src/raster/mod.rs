@@ -33,7 +33,7 @@ mod triangle;
 pub(crate) use edge::PipelineEdge;
 pub use line::{line_pixels, LinePixels};
 pub(crate) use plane::{AreaWalks, Plane, RowStarts, WordPlane};
-pub(crate) use triangle::{rows_in_range, spans_in_range, TriangleWalk};
+pub(crate) use triangle::{rows_in_range, spans_in_range, StoppedWalk, TriangleWalk};
 pub use triangle::{triangle_spans, Span, TriangleSpans};
 
 use embedded_graphics::primitives::Rectangle;

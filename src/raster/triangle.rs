@@ -126,7 +126,8 @@ pub(crate) fn rows_in_range(
         v: [a, b, c],
         y,
         y_end,
-        y_split: first_row(b.y).clamp(y, y_end),
+        // Not clamped to the last row: a walk carried into the next band switches there.
+        y_split: first_row(b.y).max(y),
         long_is_left: (area > 0) != odd,
     })
 }
@@ -167,6 +168,38 @@ impl TriangleRows {
             left,
             right,
             long_is_left,
+            x_min,
+            x_max,
+        }
+    }
+}
+
+/// A [`TriangleWalk`] stopped on a row (see [`TriangleWalk::stopped`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct StoppedWalk<W> {
+    lower: [ScreenPoint; 2],
+    y_split: i32,
+    left: W,
+    right: W,
+    /// A byte, not a `bool`: `None` of an `Option` of this is then all zeros (a `static` of
+    /// them is held in no flash).
+    long_is_left: u8,
+}
+
+impl<W: EdgeWalk> StoppedWalk<W> {
+    /// The walk going on from row `y` (the row it stopped on) up to row `y_end` (exclusive)
+    /// or its own last, its spans clipped to the columns `x_min..x_max`.
+    #[inline(always)]
+    pub(crate) fn resume(self, y: i32, y_end: i32, (x_min, x_max): (i32, i32)) -> TriangleWalk<W> {
+        let [b, c] = self.lower;
+        TriangleWalk {
+            v: [b, b, c],
+            y,
+            y_end: first_centre_from32(c.y).min(y_end),
+            y_split: self.y_split,
+            left: self.left,
+            right: self.right,
+            long_is_left: self.long_is_left != 0,
             x_min,
             x_max,
         }
@@ -230,10 +263,31 @@ impl<W: EdgeWalk> TriangleWalk<W> {
         self.y
     }
 
+    /// The row past the triangle's last, whatever the clip rectangle's rows.
+    #[inline(always)]
+    pub(crate) fn past(&self) -> i32 {
+        first_centre_from32(self.v[2].y)
+    }
+
+    /// What the walk needs to go on from its current row in a later call: its edges there,
+    /// the middle vertex's row and the vertices below it.
+    #[inline(always)]
+    pub(crate) fn stopped(&self) -> StoppedWalk<W> {
+        let [_, b, c] = self.v;
+        StoppedWalk {
+            lower: [b, c],
+            y_split: self.y_split,
+            left: self.left,
+            right: self.right,
+            long_is_left: u8::from(self.long_is_left),
+        }
+    }
+
     /// Calls `f(x0, x1)` for every row left, top to bottom, with the row's pixels `x0..x1`
     /// clipped to the clip rectangle's columns: empty (`x0 ≥ x1`) where it covers none of them.
+    /// The walk is left on the row past the last.
     #[inline(always)]
-    pub(crate) fn for_each_row(mut self, mut f: impl FnMut(i32, i32)) {
+    pub(crate) fn for_each_row(&mut self, mut f: impl FnMut(i32, i32)) {
         while self.y < self.y_end {
             self.switch_at_split();
             let (x0, x1) = self.ends();

@@ -7,7 +7,9 @@ use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{BinaryColor, IntoStorage, Rgb565, Rgb888, RgbColor};
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Pixel;
-use fixed3d::buffer::{ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual};
+use fixed3d::buffer::{
+    Carried, ColorDepth, DepthBuffer, DepthFormat, Direct, FrameBuffer, LessOrEqual,
+};
 use fixed3d::camera::{Camera, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
 use fixed3d::mesh::{textured_torus, torus, Mesh, Object, Specular, Triangle, Uv, CUBE};
@@ -612,7 +614,7 @@ pub fn bands<D: DrawTarget<Color = Rgb565>>(
     mesh: &Mesh<'_>,
     f: u32,
     vertices: &mut [ScreenVertex],
-    bins: &mut [Bin],
+    (bins, carried): (&mut [Bin], &mut [Carried]),
     color: &mut [Rgb565],
     depth: &mut [u16],
     display: &mut D,
@@ -631,6 +633,7 @@ pub fn bands<D: DrawTarget<Color = Rgb565>>(
         exclude,
     };
     Renderer::from_slices(vertices, bins, color, depth)
+        .with_carried(carried)
         .render(&models, &lights, &camera, &mut sent)
         .ok()?;
     Some(sent.hash.0)
@@ -639,6 +642,10 @@ pub fn bands<D: DrawTarget<Color = Rgb565>>(
 /// Bins for `bands`: the torus's triangles that can face the camera at once (about half of a
 /// closed mesh's), with room to spare.
 pub const BAND_BINS: usize = TORUS_TRIANGLES / 2 + 256;
+
+/// Room for `bands`' solid triangles that cross a band boundary: the torus has up to about
+/// 90 across one.
+pub const BAND_CARRIED: usize = 96;
 
 /// A display that takes everything and keeps nothing (the `bands` preset's, 320x240).
 pub struct NoDisplay;

@@ -8,6 +8,7 @@
 
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use fixed3d::buffer::Carried;
 #[cfg(not(feature = "per-frame-normals"))]
 use fixed3d::mesh::FaceNormal;
 use fixed3d::pipeline::Bin;
@@ -18,10 +19,11 @@ use panic_semihosting as _;
 #[entry]
 fn main() -> ! {
     let (cache, pos, nor, tri) = torus_storage!();
-    let (band, band_depth, bins) = storage!(
+    let (band, band_depth, bins, carried) = storage!(
         BAND: [Rgb565; (W * BAND_ROWS) as usize] = [Rgb565::BLACK; (W * BAND_ROWS) as usize],
         BAND_DEPTH: [u16; (W * BAND_ROWS) as usize] = [0; (W * BAND_ROWS) as usize],
         BINS: [Bin; BAND_BINS] = [Bin::EMPTY; BAND_BINS],
+        CARRIED: [Carried; BAND_CARRIED] = [Carried::EMPTY; BAND_CARRIED],
     );
     let mesh = torus_mesh(pos, nor, tri);
     #[cfg(not(feature = "per-frame-normals"))]
@@ -39,7 +41,7 @@ fn main() -> ! {
                 &mesh,
                 f,
                 cache,
-                bins,
+                (&mut *bins, &mut *carried),
                 band,
                 band_depth,
                 &mut NoDisplay,

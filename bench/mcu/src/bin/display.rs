@@ -8,7 +8,7 @@
 
 use cortex_m_rt::entry;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, RgbColor};
-use fixed3d::buffer::FrameBuffer;
+use fixed3d::buffer::{Carried, FrameBuffer};
 use fixed3d::pipeline::Bin;
 use mcu_bench::scenes::*;
 use mcu_bench::Op;
@@ -81,10 +81,11 @@ mod bus {
 #[entry]
 fn main() -> ! {
     let (cache, pos, nor, tri) = mcu_bench::torus_storage!();
-    let (band, band_depth, bins, mono_px, mono_depth, spi_buffer) = mcu_bench::storage!(
+    let (band, band_depth, bins, carried, mono_px, mono_depth, spi_buffer) = mcu_bench::storage!(
         BAND: [Rgb565; (W * BAND_ROWS) as usize] = [Rgb565::BLACK; (W * BAND_ROWS) as usize],
         BAND_DEPTH: [u16; (W * BAND_ROWS) as usize] = [0; (W * BAND_ROWS) as usize],
         BINS: [Bin; BAND_BINS] = [Bin::EMPTY; BAND_BINS],
+        CARRIED: [Carried; BAND_CARRIED] = [Carried::EMPTY; BAND_CARRIED],
         MONO: [BinaryColor; (MONO_W * MONO_H) as usize] = [BinaryColor::Off; (MONO_W * MONO_H) as usize],
         MONO_DEPTH: [u16; (MONO_W * MONO_H) as usize] = [0; (MONO_W * MONO_H) as usize],
         SPI_BUFFER: [u8; 512] = [0; 512],
@@ -115,7 +116,7 @@ fn main() -> ! {
                 &mesh,
                 f,
                 cache,
-                bins,
+                (&mut *bins, &mut *carried),
                 band,
                 band_depth,
                 &mut lcd,
