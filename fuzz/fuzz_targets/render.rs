@@ -1,7 +1,8 @@
 //! Fuzzes the renderer: random meshes (any coordinates, invalid indices among them, with or
 //! without vertex normals and UVs), cameras, ambient, directional and point lights, viewports,
-//! band heights, storage sizes, shadings, styles, textures (24-bit and 5/6/5 texels, every
-//! wrap, filter, mapping and run) and highlights. It must never panic (overflow checks and
+//! band heights, storage sizes (room to carry triangles from band to band among them),
+//! shadings, styles, textures (24-bit and 5/6/5 texels, every wrap, filter, mapping and run)
+//! and highlights. It must never panic (overflow checks and
 //! debug assertions are on), never write outside its buffers (canary cells after them) or the
 //! display, and draw a frame in bands as it draws it in one pass.
 #![no_main]
@@ -10,6 +11,7 @@ use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::geometry::{OriginDimensions, Size};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::{Drawable, Pixel};
+use fixed3d::buffer::Carried;
 use fixed3d::math::{Scalar, Vec3};
 use fixed3d::mesh::{Mesh, Specular};
 use fixed3d::scene::{Attenuation, PointLight};
@@ -154,6 +156,7 @@ fuzz_target!(|data: &[u8]| {
     let rows = 1 + u32::from(b.u8()) % h;
     let cache = usize::from(b.u8()) % (3 * vertices + 2);
     let bins = usize::from(b.u8()) % 130;
+    let carried = usize::from(b.u8()) % 40;
 
     let mut frames = Vec::new();
     for band_rows in [h, rows] {
@@ -164,10 +167,12 @@ fuzz_target!(|data: &[u8]| {
         let n = (w * band_rows) as usize;
         let mut v = vec![ScreenVertex::DEFAULT; cache];
         let mut bin = vec![Bin::EMPTY; bins];
+        let mut room = vec![Carried::EMPTY; carried];
         let mut color = vec![Rgb565::new(0, 0, 0); n + 8];
         let mut depth = vec![CANARY; n + 8];
         let (c, d) = (&mut color[..n], &mut depth[..n]);
         let drawn = Renderer::from_slices(&mut v, &mut bin, c, d)
+            .with_carried(&mut room)
             .with_cull(cull)
             .render(&models, &lights, &camera, &mut screen);
         assert!(depth[n..].iter().all(|&x| x == CANARY));
