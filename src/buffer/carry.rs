@@ -194,3 +194,78 @@ impl Carrier for Carries<'_> {
         Some(f(self))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::{spans_in_range, PixelRect, ScreenPoint, TriangleWalk};
+    use std::vec::Vec;
+
+    /// A walk stopped on row `row` (the queue keeps it as it is).
+    fn walk(row: i32) -> StoppedWalk<PipelineEdge> {
+        let p = |x: i32, y: i32| ScreenPoint::new(16 * x, 16 * y);
+        let v = [p(0, 0), p(10, 100), p(-10, 100)];
+        let area = -16 * 16 * 2000;
+        let clip = PixelRect::new(-20, row, 20, row + 1);
+        let w: TriangleWalk<PipelineEdge> = spans_in_range(v, clip, area);
+        w.stopped()
+    }
+
+    /// Draws bins `keys` of a band of rows `y0..y1`: each met (true where it was carried
+    /// into it, and then taken), kept if `keep` says so.
+    fn band(
+        q: &mut Carries<'_>,
+        (y0, y1): (i32, i32),
+        keys: &[u32],
+        keep: impl Fn(u32) -> bool,
+    ) -> Vec<bool> {
+        q.begin_band(y0, y1);
+        keys.iter()
+            .map(|&k| {
+                let carried = q.meet(Some((0, k)));
+                if carried {
+                    assert!(q.take().is_some());
+                }
+                if keep(k) {
+                    q.solid(Rgb888::new(k as u8, 0, 0));
+                    q.keep(walk(y1), RoundedRows::NONE);
+                }
+                carried
+            })
+            .collect()
+    }
+
+    /// A band meets what the band above it carried, in order, each once; bands that do not
+    /// follow one another carry nothing across; the pieces of a clipped triangle (met as
+    /// `None`) are never kept; the ring wraps around its slots.
+    #[test]
+    fn a_band_meets_what_the_band_above_carried() {
+        let mut slots = [Carried::EMPTY; 3];
+        let mut q = Carries::new(&mut slots);
+        assert_eq!(band(&mut q, (0, 4), &[1, 2, 3], |k| k != 2), [false; 3]);
+        // 1 and 3 were carried (2 was not); a bin met between them is set up.
+        assert_eq!(
+            band(&mut q, (4, 8), &[1, 2, 3], |_| true),
+            [true, false, true]
+        );
+        // All three were carried, but only into a band starting at row 8.
+        assert_eq!(band(&mut q, (9, 12), &[1, 2, 3], |_| true), [false; 3]);
+        assert_eq!(band(&mut q, (12, 16), &[1, 2, 3], |_| false), [true; 3]);
+        // Room for three: the fourth is not carried; many bands wrap the ring around.
+        for y in 4..40 {
+            let got = band(&mut q, (4 * y, 4 * y + 4), &[5, 6, 7, 8], |_| true);
+            let want = if y == 4 {
+                [false; 4]
+            } else {
+                [true, true, true, false]
+            };
+            assert_eq!(got, want, "band {y}");
+        }
+        // Pieces are not kept.
+        q.begin_band(160, 164);
+        q.meet(None);
+        q.keep(walk(164), RoundedRows::NONE);
+        q.begin_band(164, 168);
+        assert!(!q.meet(Some((0, 5))));
+    }
+}
