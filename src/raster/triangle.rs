@@ -126,8 +126,9 @@ pub(crate) fn rows_in_range(
         v: [a, b, c],
         y,
         y_end,
-        // Not clamped to the last row: a walk carried into the next band switches there.
-        y_split: first_row(b.y).max(y),
+        // Clamped to the last row, the row loop has a known bound (see `stopped` for a walk
+        // that goes on past it).
+        y_split: first_row(b.y).clamp(y, y_end),
         long_is_left: (area > 0) != odd,
     })
 }
@@ -192,11 +193,12 @@ impl<W: EdgeWalk> StoppedWalk<W> {
     #[inline(always)]
     pub(crate) fn resume(self, y: i32, y_end: i32, (x_min, x_max): (i32, i32)) -> TriangleWalk<W> {
         let [b, c] = self.lower;
+        let y_end = first_centre_from32(c.y).min(y_end);
         TriangleWalk {
             v: [b, b, c],
             y,
-            y_end: first_centre_from32(c.y).min(y_end),
-            y_split: self.y_split,
+            y_end,
+            y_split: self.y_split.min(y_end),
             left: self.left,
             right: self.right,
             long_is_left: self.long_is_left != 0,
@@ -276,7 +278,13 @@ impl<W: EdgeWalk> TriangleWalk<W> {
         let [_, b, c] = self.v;
         StoppedWalk {
             lower: [b, c],
-            y_split: self.y_split,
+            // The split row itself where the walk has not switched yet (its own is clamped to
+            // the rows it was set up for).
+            y_split: if self.y_split == i32::MIN {
+                i32::MIN
+            } else {
+                first_centre_from32(b.y)
+            },
             left: self.left,
             right: self.right,
             long_is_left: u8::from(self.long_is_left),
