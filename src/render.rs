@@ -22,8 +22,10 @@
 //!
 //! Beneath it, for firmware that drives bands itself (DMA double buffering, two cores drawing
 //! alternate bands): [`PreparedFrame`] runs the vertex stage and bins the triangles once, and
-//! [`PreparedFrame::draw_band`] draws any band into any buffers, from any thread. The layers
-//! below that ([`pipeline`](crate::pipeline), [`buffer`](crate::buffer)) stay public too.
+//! [`PreparedFrame::draw_band`] draws any band into any buffers, from any thread;
+//! [`PreparedFrame::draw_band_carrying`] draws bands in order, each going on with the solid
+//! triangles the band above stopped. The layers below that ([`pipeline`](crate::pipeline),
+//! [`buffer`](crate::buffer)) stay public too.
 
 use core::cell::Cell;
 use core::fmt;
@@ -443,7 +445,9 @@ impl<const VERTICES: usize, const TRIANGLES: usize, const CARRIED: usize> Defaul
 /// Draws frames of models into any embedded-graphics display through the buffers it is
 /// given: a colour buffer and a depth buffer of the same number of cells, as many rows of the
 /// display as they hold (the display's width each). Buffers as large as the display draw it
-/// in one pass; smaller ones draw it in bands, each presented as soon as it is drawn.
+/// in one pass; smaller ones draw it in bands, top to bottom, each presented as soon as it is
+/// drawn, each going on with the solid triangles the band above stopped at its last row (as
+/// far as [`Storage`] has room for them).
 ///
 /// Fragments are not counted ([`Stats::fragments`] and [`Stats::written`] stay 0); the depth
 /// test is strictly nearer wins; back faces are culled unless [`with_cull`](Self::with_cull)
