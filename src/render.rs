@@ -38,7 +38,7 @@ use embedded_graphics::Drawable;
 
 use crate::buffer::{
     fill, BufferError, Carried, Carrier, Carries, ColorDepth, DepthBuffer, DepthFormat,
-    FrameBuffer, TargetColor,
+    FrameBuffer, RasterTarget, TargetColor,
 };
 use crate::camera::{Camera, CameraError};
 use crate::math::{Angle, Mat4, Number, Scalar, Vec3};
@@ -838,7 +838,7 @@ impl<'f> PreparedFrame<'f> {
         let mut color = FrameBuffer::new(color, width, rows)?;
         let mut depth = DepthBuffer::new(depth, width, rows)?;
         let mut target = ColorDepth::band(&mut color, &mut depth, first_row)?.uncounted();
-        let clip = crate::buffer::RasterTarget::clip(&target);
+        let clip = target.clip();
         carries.begin_band(clip.y0, clip.y1);
         let mut stats = Stats::default();
         let mut offset = 0usize;

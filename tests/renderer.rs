@@ -13,7 +13,7 @@ use fixed3d::camera::{Camera, CameraError};
 use fixed3d::mesh::{Mesh, CUBE};
 use fixed3d::pipeline::{Bin, Cull, ScreenVertex, Stats};
 use fixed3d::projection::{ProjectionError, Viewport};
-use fixed3d::render::{Model, PreparedFrame, RenderError, Renderer, Shade, MAX_LIGHTS};
+use fixed3d::render::{Model, PreparedFrame, RenderError, Renderer, Shade, Storage, MAX_LIGHTS};
 use fixed3d::scene::{Light, LightError};
 
 /// The renderer's display: Rgb565, blank where nothing was written.
@@ -145,6 +145,24 @@ fn carried_triangles_draw_the_frame_of_one_pass() {
     let (banded, stats) = render_with(&models, &camera(), 12, (0, 64));
     assert!(banded.pixels == one_pass.pixels);
     assert_eq!(stats.carried, 0);
+}
+
+/// A renderer over `Storage` carries into its room: the torus drawn in bands through it
+/// carries triangles and gives the frame drawn without room.
+#[test]
+fn a_renderer_over_storage_carries_triangles() {
+    let data = torus_f64();
+    let mesh = Mesh::new(&data.positions, &data.triangles).unwrap();
+    let torus = [Model::new(&mesh, BASE)];
+    let (without, _) = render_with(&torus, &camera(), 12, (2304, 0));
+    let mut storage = Box::new(Storage::<1152, 2304>::new());
+    let (mut c, mut d) = (vec![Rgb565::BLACK; 320 * 12], vec![0u16; 320 * 12]);
+    let mut screen = screen(320, 240);
+    let stats = Renderer::new(&mut storage, &mut c, &mut d)
+        .render(&torus, &lights(), &camera(), &mut screen)
+        .unwrap();
+    assert!(stats.carried > 0, "{stats:?}");
+    assert!(screen.pixels == without.pixels);
 }
 
 /// Two coplanar triangles, one in each of two unlit models, overlapping, in different

@@ -155,23 +155,23 @@ impl<'c> Carries<'c> {
 /// What a frame's triangle walk hands solid triangles to: [`Carries`] for bands drawn top to
 /// bottom, `()` for a walk that carries none (whose code then holds nothing of it).
 pub(crate) trait Carrier {
-    /// Starts a band of rows `y0..y1` (see [`Carries::begin_band`]).
-    fn begin_band(&mut self, y0: i32, y1: i32);
-    /// Meets the triangle binned as `key` (see [`Carries::meet`]).
-    fn meet(&mut self, key: Option<(u16, u32)>) -> bool;
     /// `f` of the queue, if there is one.
     fn with_carries<R>(&mut self, f: impl FnOnce(&mut Carries<'_>) -> R) -> Option<R>;
+
+    /// Starts a band of rows `y0..y1` (see [`Carries::begin_band`]).
+    #[inline(always)]
+    fn begin_band(&mut self, y0: i32, y1: i32) {
+        self.with_carries(|c| c.begin_band(y0, y1));
+    }
+
+    /// Meets the triangle binned as `key` (see [`Carries::meet`]).
+    #[inline(always)]
+    fn meet(&mut self, key: Option<(u16, u32)>) -> bool {
+        self.with_carries(|c| c.meet(key)).unwrap_or(false)
+    }
 }
 
 impl Carrier for () {
-    #[inline(always)]
-    fn begin_band(&mut self, _: i32, _: i32) {}
-
-    #[inline(always)]
-    fn meet(&mut self, _: Option<(u16, u32)>) -> bool {
-        false
-    }
-
     #[inline(always)]
     fn with_carries<R>(&mut self, _: impl FnOnce(&mut Carries<'_>) -> R) -> Option<R> {
         None
@@ -179,16 +179,6 @@ impl Carrier for () {
 }
 
 impl Carrier for Carries<'_> {
-    #[inline(always)]
-    fn begin_band(&mut self, y0: i32, y1: i32) {
-        Carries::begin_band(self, y0, y1);
-    }
-
-    #[inline(always)]
-    fn meet(&mut self, key: Option<(u16, u32)>) -> bool {
-        Carries::meet(self, key)
-    }
-
     #[inline(always)]
     fn with_carries<R>(&mut self, f: impl FnOnce(&mut Carries<'_>) -> R) -> Option<R> {
         Some(f(self))

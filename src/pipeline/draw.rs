@@ -483,8 +483,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// Fills the triangles of `bins` tagged for this frame (`tag` plus an object's index, as
     /// [`bin`](Self::bin) wrote them) whose rows meet the target's, in the order `bin` wrote
     /// them (the mesh's: triangles at equal depths then cover each other as in one pass).
-    /// Counts only what it draws (`drawn`, `fragments`, `written`): the rest was counted when
-    /// binning.
+    /// A solid triangle the band before stopped at its last row and `carries` holds goes on
+    /// from there. Counts only what it draws (`drawn`, `carried`, `fragments`, `written`): the
+    /// rest was counted when binning.
     pub(crate) fn draw_binned<T: RasterTarget, B: Carrier>(
         &self,
         target: &mut T,
