@@ -7,11 +7,12 @@
 //! ([`Wrap`]); a pixel takes the texel its centre falls in or blends the four nearest
 //! ([`Filter`]); UVs are interpolated perspective-correctly or affinely ([`Mapping`]).
 //!
-//! The fastest texture is an Rgb565 one ([`Texels::Rgb565`]) that repeats and is read
-//! nearest (the defaults): its triangles take a pixel loop of their own wherever they are
-//! mapped affinely (every triangle under [`Mapping::Affine`]; under the perspective mapping,
-//! each that an affine map misplaces by less than an eighth of a texel), with the same
-//! colours as the general loop, which matches the texel format at every pixel.
+//! The fastest texture is an Rgb565 one ([`Texels::Rgb565`]) whose sides are powers of two
+//! (from 2 up), that repeats and is read nearest (the defaults): its triangles take a pixel
+//! loop of their own, which finds a texel by shifts alone, wherever they are mapped affinely
+//! (every triangle under [`Mapping::Affine`]; under the perspective mapping, each that an
+//! affine map misplaces by less than an eighth of a texel), with the same colours as the
+//! general loop, which matches the texel format at every pixel.
 //!
 //! ```
 //! use embedded_graphics::pixelcolor::Rgb565;
@@ -520,12 +521,17 @@ impl<'a> Sampler<'a> {
         [ch(0), ch(1), ch(2)]
     }
 
-    /// The texels of a repeating Rgb565 texture read nearest (the tiled form a paint can
-    /// take: see `TiledPaint`), or `None`.
+    /// The texels of a repeating Rgb565 texture read nearest whose sides are powers of two
+    /// from 2 up (the tiled form a paint can take: see `TiledPaint`), and the sides' bits; or
+    /// `None`.
     #[inline(always)]
-    pub(crate) fn tiled565(&self) -> Option<&'a [Rgb565]> {
+    pub(crate) fn tiled565(&self) -> Option<(&'a [Rgb565], [u32; 2])> {
+        let tiles = |side: u32| side > 1 && side.is_power_of_two();
         match self.read {
-            Read::Rgb565(s) if self.repeats() => Some(s),
+            Read::Rgb565(s) if self.repeats() && tiles(self.width) && tiles(self.height) => Some((
+                s,
+                [self.width.trailing_zeros(), self.height.trailing_zeros()],
+            )),
             _ => None,
         }
     }

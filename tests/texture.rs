@@ -153,11 +153,12 @@ fn textured_torus_lit_golden_images() {
         .all(|c| **c == Rgb888::BLACK || texels.contains(c)));
 }
 
-/// A repeating Rgb565 texture read nearest takes a faster form wherever a triangle is mapped
-/// affinely; it draws exactly what the general form does. The same texels as big-endian
-/// bytes, which the general form reads, give the same images: the floor affine and
-/// perspective-correct (its coordinates run over many repeats, and the near plane cuts it),
-/// the torus flat and Gouraud under a coloured light.
+/// A repeating Rgb565 texture read nearest with sides of powers of two takes a faster form
+/// wherever a triangle is mapped affinely; it draws exactly what the general form does. The
+/// same texels as big-endian bytes, which the general form reads, give the same images: the
+/// floor affine and perspective-correct (its coordinates run over many repeats, and the near
+/// plane cuts it) at sides from 1 to 4096, powers of two and not, and the torus flat and
+/// Gouraud under a coloured light.
 #[test]
 fn tiled_rgb565_textures_draw_as_the_general_form() {
     let texels: Vec<Rgb565> = texels().into_iter().map(Rgb565::from).collect();
@@ -165,14 +166,29 @@ fn tiled_rgb565_textures_draw_as_the_general_form() {
         .iter()
         .flat_map(|c| c.into_storage().to_be_bytes())
         .collect();
+    let sides = [
+        (64, 64),
+        (2, 2048),
+        (4096, 1),
+        (1, 4096),
+        (128, 32),
+        (48, 64),
+        (3, 5),
+    ];
+    for (width, height) in sides {
+        let n = usize::from(width * height);
+        let tiled = Texture::new(Texels::from(&texels[..n]), width, height).unwrap();
+        let general = Texture::new(Texels::Rgb565Be(&bytes[..2 * n]), width, height).unwrap();
+        for mapping in [Mapping::Affine, Mapping::Perspective] {
+            let (a, b) = (tiled.with_mapping(mapping), general.with_mapping(mapping));
+            let floor = draw_floor(&a, H);
+            assert!(floor.iter().filter(|&&c| c != Rgb888::new(1, 2, 3)).count() > 30_000);
+            let what = format!("{width}x{height} {mapping:?} floor");
+            assert!(floor == draw_floor(&b, H), "{what}");
+        }
+    }
     let tiled = Texture::new(Texels::from(&texels[..]), 64, 64).unwrap();
     let general = Texture::new(Texels::Rgb565Be(&bytes), 64, 64).unwrap();
-    for mapping in [Mapping::Affine, Mapping::Perspective] {
-        let (a, b) = (tiled.with_mapping(mapping), general.with_mapping(mapping));
-        let floor = draw_floor(&a, H);
-        assert!(floor.iter().filter(|&&c| c != Rgb888::new(1, 2, 3)).count() > 30_000);
-        assert!(floor == draw_floor(&b, H), "{mapping:?} floor");
-    }
     let lights = [
         Light::ambient(0.2),
         Light::directional([-1, 2, 1], Rgb888::new(255, 160, 64)),

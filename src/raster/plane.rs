@@ -316,6 +316,16 @@ impl WordPlane {
         reference.plane(at_ref as i32, sx as i32, sy as i32)
     }
 
+    /// The walk times 2^`bits`, modulo 2³² (its low `32 − bits` bits moved to the top).
+    #[inline(always)]
+    pub(crate) fn shifted_up(&self, bits: u32) -> WordPlane {
+        WordPlane {
+            origin: self.origin << bits,
+            sx: self.sx << bits,
+            sy: self.sy << bits,
+        }
+    }
+
     /// The walk's value at pixel `(x, y)`, modulo 2³².
     #[inline(always)]
     pub(crate) fn at(&self, x: i32, y: i32) -> i32 {

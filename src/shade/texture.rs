@@ -8,7 +8,7 @@ use embedded_graphics::pixelcolor::{IntoStorage, Rgb565, Rgb888, RgbColor};
 use crate::math::{magnitude_bits, mul_short_u32, mul_wide_u32, DivideBy};
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 use crate::texture::{
-    rgb565_channels, texture_coords, Mapping, Sampler, Texture, COORD_BITS, COORD_ONE, SCALE_BITS,
+    rgb565_channels, texture_coords, Mapping, Sampler, Texture, COORD_BITS, SCALE_BITS,
 };
 
 use super::{Paint, PaintUser};
@@ -347,10 +347,14 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
     #[inline(always)]
     fn visit<U: PaintUser>(&self, user: U) -> U::Output {
         match (&self.coords, self.sampler.tiled565()) {
-            (Coords::Walks(walks), Some(texels)) => user.with(&TiledPaint {
+            (Coords::Walks(walks), Some((texels, [across, down]))) => user.with(&TiledPaint {
                 paint: self,
                 texels,
-                walks,
+                walks: [
+                    walks[0].shifted_up(32 - COORD_BITS),
+                    walks[1].shifted_up(32 - COORD_BITS),
+                ],
+                shifts: (32 - across, 32 - down, across),
             }),
             _ => user.with(self),
         }
@@ -378,21 +382,29 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
 }
 
 /// A [`TexturePaint`] in its tiled form, the usual one of firmware: a repeating Rgb565 texture
-/// read nearest and mapped affinely. Its pixel is a masked product per coordinate, one read
-/// and the light's scales, with no texel format to match, no clamp and no perspective run to
-/// end; it gives exactly the general form's colours.
+/// with sides of powers of two, read nearest and mapped affinely. Its coordinate walks carry
+/// the fraction bits of the image at the top of a word, where they wrap round by themselves,
+/// so that a texel's column and row are the top bits of each: its pixel is three shifts, one
+/// read and the light's scales, with no texel format to match, no clamp and no perspective
+/// run to end. It gives exactly the general form's colours.
 #[derive(Debug)]
 pub struct TiledPaint<'p, 't, L> {
     paint: &'p TexturePaint<'t, L>,
     texels: &'t [Rgb565],
-    walks: &'p [WordPlane; 2],
+    /// The coordinate walks shifted up to the top of a word.
+    walks: [WordPlane; 2],
+    /// See [`TiledCursor`].
+    shifts: (u32, u32, u32),
 }
 
 /// The running texture coordinates and light of a [`TiledPaint`] along a span.
 #[derive(Debug)]
 pub struct TiledCursor<'p, L: Paint + 'p> {
     texels: &'p [Rgb565],
-    sides: (u32, u32),
+    /// Shifts from a coordinate (the image's fraction bits at the top of a word) down to its
+    /// texel column and row (32 less the sides' bits, at most 31), and the row's up into an
+    /// index (the width's bits).
+    shifts: (u32, u32, u32),
     light: L::Cursor<'p>,
     gains: [u32; 3],
     /// The solid light's scales (see [`TextureCursor`]).
@@ -415,10 +427,10 @@ impl<'t, L: Paint> Paint for TiledPaint<'_, 't, L> {
     #[inline(always)]
     fn cursor(&self, span: Span) -> Self::Cursor<'_> {
         let paint = self.paint;
-        let (c, step) = walks_at(self.walks, span);
+        let (c, step) = walks_at(&self.walks, span);
         TiledCursor {
             texels: self.texels,
-            sides: paint.sampler.sides(),
+            shifts: self.shifts,
             light: paint.light.cursor(span),
             gains: paint.gains,
             scale: paint.scale,
@@ -439,14 +451,9 @@ impl<L: Paint> Iterator for TiledCursor<'_, L> {
             scales(self.light.next().unwrap_or(Rgb888::WHITE), self.gains)
         };
         let [s, t] = self.c;
-        let (width, height) = self.sides;
-        // Repeating: a coordinate's fraction bits, times the side, below 2³² (see
-        // `Sampler::lit`, whose texel this is).
-        let texel =
-            |c: i32, side: u32| ((c & (COORD_ONE - 1)) as u32).wrapping_mul(side) >> COORD_BITS;
-        let i = texel(t, height)
-            .wrapping_mul(width)
-            .wrapping_add(texel(s, width));
+        let (across, down, row) = self.shifts;
+        // The shifts are below 32 (sides of 2 or more): they lose no bit they should keep.
+        let i = ((t as u32).wrapping_shr(down) << row) | (s as u32).wrapping_shr(across);
         let raw = self
             .texels
             .get(i as usize)
