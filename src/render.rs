@@ -182,6 +182,7 @@ impl<'a> Model<'a> {
     /// [`texture`](crate::texture).
     ///
     /// ```
+    /// # if cfg!(not(feature = "texture")) { return; }
     /// use embedded_graphics::mock_display::MockDisplay;
     /// use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
     /// use fixed3d::mesh::TEXTURED_CUBE;
@@ -218,6 +219,7 @@ impl<'a> Model<'a> {
     /// (flat, unlit and textured models leave them out).
     ///
     /// ```
+    /// # if cfg!(not(all(feature = "gouraud", feature = "specular"))) { return; }
     /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
     /// use fixed3d::mesh::torus;
     /// use fixed3d::prelude::*;

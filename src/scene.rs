@@ -330,6 +330,7 @@ pub(crate) struct PreparedLight {
 /// An ambient colour and up to `N` directional and point lights.
 ///
 /// ```
+/// # if cfg!(not(feature = "point-light")) { return; }
 /// use fixed3d::math::{Scalar, Vec3};
 /// use fixed3d::scene::{DirectionalLight, LightColor, LightError, Lighting, PointLight};
 /// let mut lighting = Lighting::<2>::new(LightColor::gray(Scalar::from_num(0.2)));

@@ -547,6 +547,13 @@ fn render_tool_specular_ortho_and_perspective_gouraud() {
 /// and a camera: the tool's image is, pixel for pixel, the one fixed3d's `Renderer` draws of the
 /// same scene built here through the library's own API, in one pass and in bands.
 #[test]
+#[cfg(all(
+    feature = "gouraud",
+    feature = "point-light",
+    feature = "specular",
+    feature = "texture",
+    feature = "wireframe"
+))]
 fn render_tool_draws_a_scene_file_as_the_renderer_does() {
     use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
     use fixed3d::mesh::Specular;

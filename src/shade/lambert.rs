@@ -732,6 +732,7 @@ mod tests {
     /// channel within one 8-bit step of the f64 value of the same (quantised) inputs. A surface
     /// at the light or from its range on gets nothing from it.
     #[test]
+    #[cfg(feature = "point-light")]
     fn point_lights_within_one_step_of_f64() {
         use crate::scene::{Attenuation, PointLight};
         let mut rng = crate::testing::XorShift(0x6A09_E667_F3BC_C909u64);

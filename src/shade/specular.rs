@@ -114,8 +114,6 @@ pub(crate) fn add_highlight(diffuse: Rgb888, highlight: [u8; 3]) -> Rgb888 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::{Scalar, Vec3};
-    use crate::scene::{Attenuation, DirectionalLight, LightColor, PointLight};
 
     /// `power` is the exact power of the rounded cosine within its stated bound, for every
     /// shininess up to 2¹⁶ − 1; 0 counts as 1, and 1 stays 1.
@@ -142,7 +140,10 @@ mod tests {
     /// step of the f64 value of the same quantised inputs; nothing from a light the surface
     /// turns from.
     #[test]
+    #[cfg(all(feature = "specular", feature = "point-light"))]
     fn highlights_within_one_step_of_f64() {
+        use crate::math::{Scalar, Vec3};
+        use crate::scene::{Attenuation, DirectionalLight, LightColor, PointLight};
         let mut rng = crate::testing::XorShift(0xD1B5_4A32_D192_ED03u64);
         let mut uniform = |lo: f64, hi: f64| {
             lo + (hi - lo) * ((rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
