@@ -7,10 +7,10 @@
 Builds the preset with line tables (the same code: debug information changes no instruction),
 runs it under QEMU logging every translated block and every block executed, and prints, per
 drawn frame: instructions by function, the library calls (64-bit multiply and division, bit
-counting, shifts) by the source line that makes them, and the busiest source lines. Everything
-the firmware executes is traced, the harness's work too (clears, hashing, calibration,
-building the mesh at start-up, spread over the frames): functions of the harness are marked,
-and code the compiler inlined into them counts as theirs.
+counting, shifts) by the source line that makes them, and the busiest source lines. What the
+firmware executes from the first drawn frame on is traced, the harness's work between frames
+too (clears, hashing): functions of the harness are marked, and code the compiler inlined into
+them counts as theirs. Start-up (calibration, building the mesh) is left out.
 The log is large (about 1.5 GB for `full` on the M0) and is deleted afterwards.
 
 With ASM=<part of a function name> it also prints that function's disassembly (llvm-objdump),
@@ -56,9 +56,10 @@ def trace(binary, target, log):
     return out.stdout.strip().splitlines()[-1:] if out.stdout else []
 
 
-def executed(log, is_call):
-    """Instructions executed per address, and library calls counted by calling block: a block
-    of a library routine entered from a block that `is_call(previous, pc)` accepts.
+def executed(log, is_call, start):
+    """Instructions executed per address from the first run of the block at `start` on, and
+    library calls counted by calling block: a block of a library routine entered from a block
+    that `is_call(previous, pc)` accepts.
 
     A block's address may be translated more than once, and not always to the same length:
     under `-icount` QEMU also translates blocks cut short to the instructions left in the
@@ -82,6 +83,10 @@ def executed(log, is_call):
                     version[current] += 1
                     blocks[(current, version[current])], current = addrs, None
                 pc = int(line.split(b"/")[1], 16)
+                if start is not None:
+                    if pc != start:
+                        continue
+                    start = None
                 runs[(pc, version[pc])] += 1
                 if previous is not None and is_call(previous, pc):
                     calls[(pc, previous)] += 1
@@ -94,6 +99,7 @@ def executed(log, is_call):
 
 
 def symbols(binary):
+    """The function holding an address, and the address of the harness's frame function."""
     table = []
     nm = subprocess.run(["nm", "-C", "-n", binary], capture_output=True, text=True).stdout
     for line in nm.splitlines():
@@ -105,7 +111,8 @@ def symbols(binary):
     def of(address):
         i = bisect.bisect_right(starts, address) - 1
         return table[i][1] if i >= 0 else "?"
-    return of
+    frame = next((a for a, name in table if name.startswith("mcu_bench::frame")), None)
+    return of, frame
 
 
 def lines(binary, addresses):
@@ -136,7 +143,7 @@ def main():
     target = sys.argv[2] if len(sys.argv) > 2 else "thumbv6m-none-eabi"
     top = int(sys.argv[3]) if len(sys.argv) > 3 else 40
     binary = build(preset, target, os.path.join(HERE, "target", "profile"))
-    symbol = symbols(binary)
+    symbol, frame = symbols(binary)
     names = {}
 
     def name_of(pc):
@@ -153,7 +160,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         log = os.path.join(tmp, "qemu.log")
         result = trace(binary, target, log)
-        count, raw_calls = executed(log, is_call)
+        count, raw_calls = executed(log, is_call, frame)
     where = lines(binary, sorted(count))
     per = lambda n: n / FRAMES_DRAWN
     by_function = collections.Counter()
@@ -168,7 +175,7 @@ def main():
     print(f"{preset} on {target} ({machine(target)}): {' '.join(result)}")
     print(f"traced instructions per drawn frame, harness included: {per(sum(count.values())):,.0f}\n")
     print("by function:")
-    for name, n in by_function.most_common(18):
+    for name, n in by_function.most_common(top):
         mark = "  (harness)" if harness(name) else ""
         print(f"  {per(n):>11,.0f}  {name[:100]}{mark}")
     print("\nlibrary calls per frame, by the line that makes them (first block of a call):")
