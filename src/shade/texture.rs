@@ -87,7 +87,7 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         let gains = sampler.gains(depths);
         let perspective = match (texture.mapping(), depths_for_q) {
             (Mapping::Perspective, Some((offset, z)))
-                if !nearly_affine(offset, z, extent((most_s, most_t), &sampler)) =>
+                if !nearly_affine(offset, z, texel_range([s1, s2], [t1, t2], &sampler)) =>
             {
                 Some((offset, z))
             }
@@ -162,31 +162,38 @@ fn weights(offset: i64, z: [i32; 3]) -> [i64; 3] {
     })
 }
 
-/// The largest of a triangle's texture coordinate differences from vertex 0, in texels
-/// (Q16.16), saturated to 32 bits, from the largest UV differences (Q16.16) along each axis.
-fn extent((most_s, most_t): (u32, u32), sampler: &Sampler<'_>) -> u32 {
+/// The larger of a triangle's texture coordinate ranges along the two axes (vertex 0's
+/// coordinate among them), in texels (Q16.16), saturated to 32 bits, from the differences
+/// from vertex 0's UV (Q16.16): `[s1, s2]` across the image, `[t1, t2]` down it.
+fn texel_range([s1, s2]: [i32; 2], [t1, t2]: [i32; 2], sampler: &Sampler<'_>) -> u32 {
+    // Vertex 0's difference is 0: the range runs from at most 0 to at least 0.
+    let range = |a: i32, b: i32| a.max(b).max(0).abs_diff(a.min(b).min(0));
     let (width, height) = sampler.sides();
     // A side is at most 2¹²: two short products.
-    let texels = mul_short_u32(width as i32, most_s).max(mul_short_u32(height as i32, most_t));
+    let texels =
+        mul_short_u32(width as i32, range(s1, s2)).max(mul_short_u32(height as i32, range(t1, t2)));
     u32::try_from(texels).unwrap_or(u32::MAX)
 }
 
 /// True when mapping the triangle linearly errs by less than 1/8 texel anywhere in it, for
-/// vertices at depths `z` (weights `q = offset − z ∝ 1/w`) and coordinates at most `extent`
-/// texels (Q16.16) from vertex 0's. The perspective map's value is `Σλᵢqᵢsᵢ / Q` with
-/// `Q = Σλᵢqᵢ`, the linear map's `Σλᵢsᵢ`; with vertex 0's coordinates taken as 0 they differ
-/// by `|Σλᵢsᵢ(qᵢ − Q)| / Q ≤ extent · Σλᵢ|qᵢ − Q| / Q`, and the mean deviation `Σλᵢ|qᵢ − Q|`
-/// of values between `q_min` and `q_max` is at most `(q_max − q_min) / 2`. Equal weights (a
-/// triangle facing the camera) are affine.
-fn nearly_affine(offset: i64, z: [i32; 3], extent: u32) -> bool {
+/// vertices at depths `z` (weights `q = offset − z ∝ 1/w`) and texture coordinates that span
+/// at most `range` texels (Q16.16) along either axis. The perspective map's value is
+/// `Σλᵢqᵢsᵢ / Q` with `Q = Σλᵢqᵢ`, the linear map's `Σλᵢsᵢ`. They differ by
+/// `Σλᵢsᵢ(qᵢ − Q) / Q`, which is `Σλᵢ(sᵢ − c)(qᵢ − Q) / Q` for any `c` (as `Σλᵢ(qᵢ − Q) = 0`):
+/// with `c` the middle of the coordinates' range, at most `range / 2 · Σλᵢ|qᵢ − Q| / Q`. The
+/// mean deviation `Σλᵢ|qᵢ − Q|` of weights between `a = q_min` and `b = q_max` whose mean is
+/// `Q` is at most `2(Q − a)(b − Q) / (b − a)`, and that over `Q` at most
+/// `2(√b − √a)² / (b − a) ≤ (b − a) / (2a)`: the error is below `range · (b − a) / (4a)`.
+/// Equal weights (a triangle facing the camera) are affine.
+fn nearly_affine(offset: i64, z: [i32; 3], range: u32) -> bool {
     let (near, far) = (z[0].min(z[1]).min(z[2]), z[0].max(z[1]).max(z[2]));
-    // q_max − q_min is the depth range (below 2³²), q_min = offset − far.
-    let range = far.wrapping_sub(near) as u32;
+    // b − a is the depth range (below 2³²), a = offset − far.
+    let depths = far.wrapping_sub(near) as u32;
     // A projection's offset and a depth are far inside i64: no wrap.
     let least = offset.wrapping_sub(i64::from(far)).max(1) as u64;
-    // extent · range · 4 < q_min · 2¹⁶: both sides divided by 4, then by 2¹⁴ (the left below
-    // 2⁶⁴, floored: for a whole q_min, the same test).
-    mul_wide_u32(extent, range) >> 14 < least
+    // range · (b − a) · 2 < a · 2¹⁶: both sides divided by 2, then by 2¹⁵ (the left below
+    // 2⁶⁴, floored: for a whole a, the same test).
+    mul_wide_u32(range, depths) >> 15 < least
 }
 
 /// A perspective span's state: the planes at the next exact point, their steps, the pixels
@@ -466,5 +473,98 @@ impl<L: Paint> Iterator for TiledCursor<'_, L> {
         let [ds, dt] = self.step;
         self.c = [s.wrapping_add(ds), t.wrapping_add(dt)];
         Some(Rgb888::new(r, g, b))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::XorShift;
+    use crate::texture::Texels;
+
+    /// The largest gap between the linear and the perspective map (in texels) over a fine grid
+    /// of points of the triangle, for weights `q` and coordinates `c` (texels, vertex 0's 0).
+    fn largest_gap(q: [f64; 3], c: [f64; 3]) -> f64 {
+        let n = 48;
+        let mut largest = 0.0f64;
+        for i in 0..=n {
+            for j in 0..=n - i {
+                let l = [i, j, n - i - j].map(|k| f64::from(k) / f64::from(n));
+                let big_q: f64 = (0..3).map(|k| l[k] * q[k]).sum();
+                let perspective: f64 = (0..3).map(|k| l[k] * q[k] * c[k]).sum::<f64>() / big_q;
+                let linear: f64 = (0..3).map(|k| l[k] * c[k]).sum();
+                largest = largest.max((perspective - linear).abs());
+            }
+        }
+        largest
+    }
+
+    /// Wherever `nearly_affine` takes a triangle for affine, the linear map lies within 1/8
+    /// texel of the perspective one at every point of a fine grid of it: random coordinates
+    /// over up to four images each way and random weights, from equal to a hundred times
+    /// apart. A triangle whose coordinates all lie on one side of vertex 0's (a half of a
+    /// grid's quad) passes at twice the depth range that the coordinates' largest distance
+    /// from vertex 0's alone would allow.
+    #[test]
+    fn nearly_affine_triangles_err_below_an_eighth_of_a_texel() {
+        let texels = [Rgb565::BLACK; 64 * 32];
+        let texture = Texture::new(Texels::Rgb565(&texels), 64, 32).unwrap();
+        let sampler = Sampler::new(&texture);
+        let mut rng = XorShift(0x2545_F491_4F6C_DD1D);
+        let (mut affine, mut tried) = (0, 0);
+        for _ in 0..4_000 {
+            let bits = rng.pick(&[8, 11, 14, 16, 18]);
+            let mut uv = || rng.within(1 << bits);
+            let ([s1, s2], [t1, t2]) = ([uv(), uv()], [uv(), uv()]);
+            let far = 1 << rng.pick(&[20, 26, 29]);
+            let spread = far >> rng.pick(&[1, 4, 7, 10, 13, 16]);
+            let z = [0; 3].map(|_: i32| far - rng.within(spread).abs());
+            let offset = i64::from(far) + i64::from(far >> rng.pick(&[0, 3, 6]));
+            tried += 1;
+            if !nearly_affine(offset, z, texel_range([s1, s2], [t1, t2], &sampler)) {
+                continue;
+            }
+            affine += 1;
+            let q = z.map(|z| (offset - i64::from(z)) as f64);
+            let texels = |d: [i32; 2], side: f64| {
+                [
+                    0.0,
+                    f64::from(d[0]) * side / 65536.0,
+                    f64::from(d[1]) * side / 65536.0,
+                ]
+            };
+            let gap =
+                largest_gap(q, texels([s1, s2], 64.0)).max(largest_gap(q, texels([t1, t2], 32.0)));
+            assert!(
+                gap < 0.125,
+                "{gap} texels: {s1} {s2} {t1} {t2} {z:?} {offset}"
+            );
+        }
+        assert!(
+            affine > tried / 10 && affine < tried * 9 / 10,
+            "{affine} of {tried}"
+        );
+
+        // Ten texels on one side of vertex 0's, weights 4% apart: the gap is under 1/8 texel,
+        // and a bound from the largest distance alone (ten texels, half the relative range)
+        // would be 0.2.
+        let d = (1 << 30) / 25;
+        let (offset, z) = (1i64 << 30, [0, 0, d]);
+        let q = z.map(|z| (offset - i64::from(z)) as f64);
+        let (a, b) = (q[2], q[0]);
+        assert!(10.0 * (b - a) / (2.0 * a) > 0.2);
+        assert!(largest_gap(q, [0.0, 10.0, 10.0]) < 0.125);
+        let ten = 10 * 65536 / 64;
+        assert!(nearly_affine(
+            offset,
+            z,
+            texel_range([ten, ten], [0, 0], &sampler)
+        ));
+        // Ten texels on either side: twenty across, and the bound no longer holds.
+        assert!(!nearly_affine(
+            offset,
+            z,
+            texel_range([ten, -ten], [0, 0], &sampler)
+        ));
     }
 }
