@@ -398,9 +398,9 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 /// A triangle of one colour that a band stops at its last row is carried into the next band
 /// ([`Carried`]): that band goes on with its walk instead of fetching, shading and setting it
 /// up again. `CARRIED` entries (by default 32) hold those crossing one band boundary; where
-/// more cross one, the rest are set up again, and the pixels are the same. The reference
-/// torus at 320x240 has up to about 90 solid triangles across a boundary. A frame drawn in one
-/// pass carries nothing.
+/// more cross one, the rest are set up again, and the pixels are the same: a dense model
+/// drawn in short bands can use more room than the default ([`Stats::carried`] tells how many
+/// a frame carried). A frame drawn in one pass carries nothing.
 ///
 /// ```
 /// use fixed3d::buffer::Carried;

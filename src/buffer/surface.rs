@@ -297,34 +297,37 @@ where
         let Some(rows) = rows_in_range(triangle.p, self.clip, triangle.area) else {
             return true;
         };
-        let Some((mut walk, st)) = D::unclamped(triangle.max())
+        let Some((walk, st)) = D::unclamped(triangle.max())
             .then(|| RoundedRows::new(&triangle.p, triangle.z, triangle.area, rows.row()))
             .flatten()
         else {
             return false;
         };
         let mut spans = rows.spans((self.clip.x0, self.clip.x1));
+        self.solid_spans_carried(&mut spans, (walk, st), (c, rgb), carries, stats);
+        true
+    }
+
+    /// Fills the spans of a solid triangle in colour `c` (`rgb` before quantizing), its depths
+    /// the word walk `depth` stepped by `st` along a row, and carries it into the next band if
+    /// it goes on below the target's rows, its walks stopped on the row past the target's last.
+    #[inline(always)]
+    fn solid_spans_carried(
+        &mut self,
+        spans: &mut TriangleWalk<PipelineEdge>,
+        (mut depth, st): (RoundedRows, i32),
+        (c, rgb): (C, Rgb888),
+        carries: &mut Carries<'_>,
+        stats: &mut Stats,
+    ) {
         carries.solid(rgb);
         self.each_span(
-            &mut spans,
-            &mut walk,
+            spans,
+            &mut depth,
             stats,
             |_| move || c,
             |ds, cs, start, g, w| D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w),
         );
-        self.carry_stopped(&spans, walk, carries);
-        true
-    }
-
-    /// Carries a triangle that goes on below the target's rows into the next band, its walks
-    /// stopped on the row past the target's last.
-    #[inline(always)]
-    fn carry_stopped(
-        &self,
-        spans: &TriangleWalk<PipelineEdge>,
-        depth: RoundedRows,
-        carries: &mut Carries<'_>,
-    ) {
         let end = self.clip.y1;
         if spans.row() == end && spans.past() > end {
             carries.keep(spans.stopped(), depth);
@@ -553,17 +556,9 @@ where
             return Ok(());
         };
         let mut spans = walk.resume(self.clip.y0, self.clip.y1, (self.clip.x0, self.clip.x1));
-        carries.solid(c.rgb);
-        let (st, color) = (c.depth.step_x, self.quantize.quantize(c.rgb, 0, 0));
-        let mut depth = c.depth;
-        self.each_span(
-            &mut spans,
-            &mut depth,
-            stats,
-            |_| move || color,
-            |ds, cs, start, g, w| D::test_span_unclamped::<C, T, K>(ds, cs, start, st, g, w),
-        );
-        self.carry_stopped(&spans, depth, carries);
+        let color = self.quantize.quantize(c.rgb, 0, 0);
+        let depth = (c.depth, c.depth.step_x);
+        self.solid_spans_carried(&mut spans, depth, (color, c.rgb), carries, stats);
         Ok(())
     }
 

@@ -354,15 +354,17 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
     #[inline(always)]
     fn visit<U: PaintUser>(&self, user: U) -> U::Output {
         match (&self.coords, self.sampler.tiled565()) {
-            (Coords::Walks(walks), Some((texels, [across, down]))) => user.with(&TiledPaint {
-                paint: self,
-                texels,
-                walks: [
-                    walks[0].shifted_up(32 - COORD_BITS),
-                    walks[1].shifted_up(32 - COORD_BITS),
-                ],
-                shifts: (32 - across, 32 - down, across),
-            }),
+            (Coords::Walks(walks), Some((texels, [width_bits, height_bits]))) => {
+                user.with(&TiledPaint {
+                    paint: self,
+                    texels,
+                    walks: [
+                        walks[0].shifted_up(32 - COORD_BITS),
+                        walks[1].shifted_up(32 - COORD_BITS),
+                    ],
+                    shifts: (32 - width_bits, 32 - height_bits, width_bits),
+                })
+            }
             _ => user.with(self),
         }
     }
@@ -501,10 +503,10 @@ mod tests {
 
     /// Wherever `nearly_affine` takes a triangle for affine, the linear map lies within 1/8
     /// texel of the perspective one at every point of a fine grid of it: random coordinates
-    /// over up to four images each way and random weights, from equal to a hundred times
-    /// apart. A triangle whose coordinates all lie on one side of vertex 0's (a half of a
-    /// grid's quad) passes at twice the depth range that the coordinates' largest distance
-    /// from vertex 0's alone would allow.
+    /// over up to four images each way and random weights, from equal to 33 times apart. A
+    /// triangle whose coordinates all lie on one side of vertex 0's (a half of a grid's quad)
+    /// passes at twice the depth range that the coordinates' largest distance from vertex 0's
+    /// alone would allow.
     #[test]
     fn nearly_affine_triangles_err_below_an_eighth_of_a_texel() {
         let texels = [Rgb565::BLACK; 64 * 32];
