@@ -173,8 +173,10 @@ pub(crate) const fn mul_wide(a: i32, b: i32) -> i64 {
     }
 }
 
-/// [`mul_wide`] for `|b| < 2¹⁵`: on cores without a long multiply two 32-bit products (of
-/// `b` by `a`'s halves, each within ±2³¹) in line, instead of the four of [`mul_halves`].
+/// [`mul_wide`] for `|b| < 2¹⁵` (any `a`), or for `|a| ≤ 2³⁰` and `|b| < 2¹⁶` (a value
+/// difference and a screen coordinate difference): on cores without a long multiply two
+/// 32-bit products in line (of `b` by `a`'s bits from 15 up and below, each within ±2³¹
+/// under either bound), instead of the four of [`mul_halves`].
 #[inline(always)]
 pub(crate) const fn mul_short(a: i32, b: i32) -> i64 {
     if NARROW_CORE {
@@ -187,7 +189,8 @@ pub(crate) const fn mul_short(a: i32, b: i32) -> i64 {
 /// [`mul_short`] on cores without a long multiply (tested on every host).
 #[inline(always)]
 const fn short_by_halves(a: i32, b: i32) -> i64 {
-    halves_times(a >> 16, a & 0xFFFF, b)
+    let (high, low) = ((a >> 15).wrapping_mul(b), (a & 0x7FFF).wrapping_mul(b));
+    ((high as i64) << 15).wrapping_add(low as i64)
 }
 
 /// `a · b` exactly for `|a| ≤ 2¹⁵` and `b` of any 32 bits unsigned: on cores without a long
@@ -350,22 +353,44 @@ mod tests {
         }
     }
 
-    /// The short product is the product for any `a` and `|b| < 2¹⁵` (in its narrow form,
-    /// which the host does not otherwise run).
+    /// The short product is the product for any `a` and `|b| < 2¹⁵`, and for `|a| ≤ 2³⁰` and
+    /// `|b| < 2¹⁶` (in its narrow form, which the host does not otherwise run): at the ends of
+    /// both ranges and at random.
     #[test]
     fn short_products_are_the_products() {
-        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
+        let check = |a: i32, b: i32| {
+            assert_eq!(short_by_halves(a, b), a as i64 * b as i64, "{a} {b}");
+            assert_eq!(mul_short(a, b), a as i64 * b as i64, "{a} {b}");
+        };
         let bs = [-32_767, -1, 0, 1, 2560, 16_384, 32_767];
         for a in [i32::MIN, i32::MIN + 1, -65_536, -1, 0, 1, 65_535, i32::MAX] {
             for b in bs {
-                assert_eq!(short_by_halves(a, b), a as i64 * b as i64, "{a} {b}");
-                assert_eq!(mul_short(a, b), a as i64 * b as i64, "{a} {b}");
+                check(a, b);
             }
         }
+        let (most, edge) = (1 << 30, (1 << 16) - 1);
+        let long_bs = [-edge, -edge + 1, -32_768, 32_768, edge - 1, edge];
+        for a in [
+            -most,
+            -most + 1,
+            -most + 32_767,
+            -32_769,
+            32_768,
+            most - 1,
+            most,
+        ] {
+            for b in long_bs.into_iter().chain(bs) {
+                check(a, b);
+            }
+        }
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1Du64);
         for _ in 0..200_000 {
             let x = rng.next_u64();
-            let (a, b) = (x as i32, ((x >> 32) as i32) >> 17);
-            assert_eq!(short_by_halves(a, b), a as i64 * b as i64, "{a} {b}");
+            check(x as i32, ((x >> 32) as i32) >> 17);
+            check(
+                (x as i32) >> 1,
+                (((x >> 32) as i32) >> 15).max(1 - (1 << 16)),
+            );
         }
     }
 

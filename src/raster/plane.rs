@@ -2,7 +2,9 @@
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
 use super::{first_centre_from32, ScreenPoint};
-use crate::math::{mul_wide, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
+use crate::math::{
+    mul_short, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE,
+};
 
 /// `v(x, y) = v0 + gx·(x − x0) + gy·(y − y0)` with x, y in sub-pixels, through the first
 /// vertex `(x0, y0, v0)`, kept as its value at the centre of pixel (0, 0): the value at pixel
@@ -78,17 +80,18 @@ impl Plane {
     }
 
     /// The numerators of the gradients along x and y of the plane through `(p[i], v[i])`
-    /// (every `v[i]` in [0, 2³⁰], coordinates within ±2¹⁵), over the doubled signed area:
-    /// exact, within ±2⁴⁷, from 32-bit differences and products.
+    /// (every `v[i]` in [0, 2³⁰], coordinates within the pipeline's ±(2¹⁵ − 16)), over the
+    /// doubled signed area: exact, within ±2⁴⁷, from 32-bit differences and short products.
     #[inline(always)]
     pub(crate) fn numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
         let [a, b, c] = *p;
-        // Coordinates within ±2¹⁵ and values in [0, 2³⁰]: every difference fits i32.
+        // Value differences within ±2³⁰, coordinate differences below 2¹⁶ in magnitude:
+        // `mul_short`'s second bound.
         let (dx1, dy1) = (b.x.wrapping_sub(a.x), b.y.wrapping_sub(a.y));
         let (dx2, dy2) = (c.x.wrapping_sub(a.x), c.y.wrapping_sub(a.y));
         let (dv1, dv2) = (v[1].wrapping_sub(v[0]), v[2].wrapping_sub(v[0]));
-        let nx = mul_wide(dv1, dy2).wrapping_sub(mul_wide(dv2, dy1));
-        let ny = mul_wide(dv2, dx1).wrapping_sub(mul_wide(dv1, dx2));
+        let nx = mul_short(dv1, dy2).wrapping_sub(mul_short(dv2, dy1));
+        let ny = mul_short(dv2, dx1).wrapping_sub(mul_short(dv1, dx2));
         (nx, ny)
     }
 
