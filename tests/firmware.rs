@@ -263,6 +263,35 @@ fn host_hashes_match_the_firmware_file() {
 /// tied in y, the middle corner's row the first, the last or between, both windings, spans
 /// beyond the screen's sides, the near plane cutting triangles, rows above the band; and it
 /// draws.
+/// The floor variants take the perspective-correct spans they are there to check on every
+/// core: each frame covers much of the screen, and differs from the same floor mapped or
+/// interpolated affinely in many pixels.
+#[test]
+fn floor_variants_draw_perspective_spans() {
+    let n = (W * H) as usize;
+    let mut cache = vec![ScreenVertex::DEFAULT; 4];
+    let mut draw = |kind: &str, f: u32| {
+        let (mut fb, mut depth) = (vec![Rgb565::BLACK; n], vec![u16::MAX; n]);
+        floor(kind, f, &mut cache, &mut fb, &mut depth).expect(kind);
+        fb
+    };
+    for f in 0..FRAMES {
+        for (perspective, affine) in [
+            ("textured", "textured-affine"),
+            ("gouraud", "gouraud-affine"),
+        ] {
+            let (p, a) = (draw(perspective, f), draw(affine, f));
+            let covered = p.iter().filter(|&&c| c != Rgb565::BLACK).count();
+            assert!(covered > n / 5, "{perspective} {f}: {covered} pixels");
+            let differ = p.iter().zip(&a).filter(|(p, a)| p != a).count();
+            assert!(
+                differ > covered / 2,
+                "{perspective} {f}: {differ} of {covered}"
+            );
+        }
+    }
+}
+
 #[test]
 fn triangles_variant_reaches_every_setup_case() {
     let (mut rp, mut rt) = (

@@ -12,15 +12,15 @@ use fixed3d::buffer::{
 };
 use fixed3d::camera::{Camera, LookAt};
 use fixed3d::math::{Angle, Mat4, Scalar, Vec3};
-use fixed3d::mesh::{textured_torus, torus, Mesh, Object, Specular, Triangle, Uv, CUBE};
+use fixed3d::mesh::{textured_torus, torus, Mesh, Object, Specular, Transform, Triangle, Uv, CUBE};
 use fixed3d::pipeline::{Bin, Cull, Frame, Prepared, ScreenVertex, Stats};
 use fixed3d::projection::{Projection, Viewport};
 use fixed3d::render::{Model, Renderer};
 use fixed3d::scene::{
     Attenuation, DirectionalLight, Light, LightColor, Lighting, PointLight, Scene,
 };
-use fixed3d::shade::{Flat, Gouraud, Textured, Unlit};
-use fixed3d::texture::{Texels, Texture};
+use fixed3d::shade::{Flat, Gouraud, PerspectiveGouraud, Textured, Unlit};
+use fixed3d::texture::{Mapping, Texels, Texture};
 
 /// Frames per preset (the hash chains over them).
 pub const FRAMES: u32 = 4;
@@ -148,15 +148,16 @@ pub fn frame(w: u32, h: u32) -> Option<Frame> {
 }
 
 fn camera(w: u32, h: u32, eye: Vec3) -> Option<Frame> {
+    camera_to(w, h, eye, s(10, 1))
+}
+
+/// [`camera`] with its far plane at `far`.
+fn camera_to(w: u32, h: u32, eye: Vec3, far: Scalar) -> Option<Frame> {
     let viewport = Viewport::new(w, h).ok()?;
     let view = LookAt::new(eye, Vec3::ZERO, Vec3::Y).view().ok()?;
-    let projection = Projection::perspective(
-        Angle::from_degrees(60),
-        viewport.aspect(),
-        Scalar::ONE,
-        s(10, 1),
-    )
-    .ok()?;
+    let projection =
+        Projection::perspective(Angle::from_degrees(60), viewport.aspect(), Scalar::ONE, far)
+            .ok()?;
     Some(Frame::new(&view, &projection, viewport))
 }
 
@@ -250,9 +251,10 @@ pub fn full(
 /// `clipped`, the strict counted target with the eye so close that the tori cross the near
 /// plane and every side of the screen (spans clamped to the target's columns, polygons cut by
 /// the near plane), then [`random_mesh`] drawn whole (`triangles`) and, shrunk inside every
-/// clip plane, culled to its front faces (`front`), and last `full`'s vertex stage alone
-/// (`vertices`, see [`torus_vertices`]).
-pub const VARIANTS: [&str; 8] = [
+/// clip plane, culled to its front faces (`front`), `full`'s vertex stage alone (`vertices`,
+/// see [`torus_vertices`]), and last the receding [`floor`] textured and smooth, perspective-
+/// correct (`floor-textured`, `floor-gouraud`: the spans' exact divisions).
+pub const VARIANTS: [&str; 10] = [
     "less",
     "less-counted",
     "less-or-equal",
@@ -261,6 +263,8 @@ pub const VARIANTS: [&str; 8] = [
     "triangles",
     "front",
     "vertices",
+    "floor-textured",
+    "floor-gouraud",
 ];
 
 /// Triangles of the `triangles` variant's mesh ([`random_mesh`]), three vertices each.
@@ -333,6 +337,92 @@ pub fn clipped_frame(w: u32, h: u32) -> Option<Frame> {
     camera(w, h, Vec3::new(Scalar::ZERO, s(12, 10), s(12, 10)))
 }
 
+/// The receding floor of the accuracy report (docs/accuracy.md): a quad 4 wide at y = −1 from
+/// z = 1.5 to z = −30 (1.1 to 32.6 away from `full`'s eye), its vertex normals leaning apart
+/// (lit bright near and dark far), its texture repeated twice across and sixteen times away.
+static FLOOR_POSITIONS: [Vec3; 4] = [
+    Vec3::new(
+        Scalar::from_bits(-2 << 16),
+        Scalar::from_bits(-1 << 16),
+        Scalar::from_bits(3 << 15),
+    ),
+    Vec3::new(
+        Scalar::from_bits(2 << 16),
+        Scalar::from_bits(-1 << 16),
+        Scalar::from_bits(3 << 15),
+    ),
+    Vec3::new(
+        Scalar::from_bits(2 << 16),
+        Scalar::from_bits(-1 << 16),
+        Scalar::from_bits(-30 << 16),
+    ),
+    Vec3::new(
+        Scalar::from_bits(-2 << 16),
+        Scalar::from_bits(-1 << 16),
+        Scalar::from_bits(-30 << 16),
+    ),
+];
+static FLOOR_NORMALS: [Vec3; 4] = [
+    Vec3::from_int(-1, 1, 1),
+    Vec3::from_int(-1, 1, 1),
+    Vec3::from_int(1, 1, -1),
+    Vec3::from_int(1, 1, -1),
+];
+static FLOOR_UVS: [Uv; 4] = [
+    [Scalar::ZERO, Scalar::ZERO],
+    [Scalar::from_bits(2 << 16), Scalar::ZERO],
+    [Scalar::from_bits(2 << 16), Scalar::from_bits(16 << 16)],
+    [Scalar::ZERO, Scalar::from_bits(16 << 16)],
+];
+static FLOOR_TRIANGLES: [Triangle; 2] = [[0, 1, 2], [0, 2, 3]];
+
+/// The floor's mesh (see [`FLOOR_POSITIONS`]).
+pub fn floor_mesh() -> Option<Mesh<'static>> {
+    Mesh::new(&FLOOR_POSITIONS, &FLOOR_TRIANGLES)
+        .and_then(|m| m.with_normals(&FLOOR_NORMALS))
+        .and_then(|m| m.with_uvs(&FLOOR_UVS))
+        .ok()
+}
+
+/// The floor in frame `f`, turned 70 + f degrees about y so that depth changes steeply along
+/// each row, seen from `full`'s eye with the far plane at 40, u16 depth, in one of four ways:
+/// `textured` ([`TEXELS`], perspective-correct, flat Lambert), `textured-affine` (the same
+/// mapped affinely), `gouraud` (perspective-correct Gouraud, white) or `gouraud-affine`
+/// (Gouraud interpolated affinely). The perspective ones are variants of their own; the
+/// affine ones are there for the host test to tell them apart.
+pub fn floor(
+    kind: &str,
+    f: u32,
+    cache: &mut [ScreenVertex],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> Option<()> {
+    let mesh = floor_mesh()?;
+    let turn = Angle::from_degrees(70 + f as i32);
+    let model = Transform::new().rotated_y(turn).matrix();
+    let objects = [Object::new(&mesh, model, Rgb888::WHITE)];
+    let scene = Scene::new(&objects, sun());
+    let frame = camera_to(
+        W,
+        H,
+        Vec3::new(Scalar::ZERO, Scalar::ZERO, s(13, 5)),
+        s(40, 1),
+    )?;
+    let texture = Texture::new(Texels::Rgb565(&TEXELS), 64, 64).ok()?;
+    let affine = texture.with_mapping(Mapping::Affine);
+    let textured = |texture| Textured {
+        texture,
+        light: Flat,
+    };
+    match kind {
+        "textured" => depth_frame(frame, &scene, textured(&texture), cache, color, depth),
+        "textured-affine" => depth_frame(frame, &scene, textured(&affine), cache, color, depth),
+        "gouraud" => depth_frame(frame, &scene, PerspectiveGouraud, cache, color, depth),
+        "gouraud-affine" => depth_frame(frame, &scene, Gouraud, cache, color, depth),
+        _ => None,
+    }
+}
+
 /// `full`'s torus drawn twice in frame `f`, orange then blue at the very same depths (a tie at
 /// every pixel: strictly nearer keeps the orange, nearer-or-equal shows the blue), through
 /// variant `name` of the target (see [`VARIANTS`]). Returns the word to fold into the frame's
@@ -354,6 +444,9 @@ pub fn variant(
     }
     if name == "vertices" {
         return torus_vertices(mesh, f, cache);
+    }
+    if let Some(kind) = name.strip_prefix("floor-") {
+        return floor(kind, f, cache, color, depth).map(|()| 0);
     }
     let objects = [
         Object::new(mesh, torus_model(f), ORANGE),

@@ -5,8 +5,11 @@
 //! row set-up case into a band (`triangles`, see `scenes::random_mesh`): every u16 row and
 //! pixel loop each core compiles, checked against the host's (`tests/firmware.rs`); and the
 //! same random triangles shrunk inside every clip plane and culled to their front faces
-//! (`front`, every count in its hash); and `full`'s vertex stage alone (`vertices`, a hash of
-//! every vertex's position and depth). Not in footprint.md's table.
+//! (`front`, every count in its hash); `full`'s vertex stage alone (`vertices`, a hash of
+//! every vertex's position and depth); and a floor receding from 1.1 to 32.6 away, textured
+//! (`floor-textured`) and smooth (`floor-gouraud`), both perspective-correct: the exact
+//! divisions of their spans, which the torus presets' nearly affine triangles skip. Not in
+//! footprint.md's table.
 #![no_std]
 #![no_main]
 
