@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 #[cfg(test)]
 use embedded_graphics::pixelcolor::RgbColor;
 
-use crate::math::{magnitude_bits, DivideBy};
+use crate::math::{leading_zeros64, magnitude_bits, mul_wide_u32};
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 
 /// A source of colours along a span, started at its first pixel.
@@ -181,14 +181,15 @@ impl Paint for SmoothPaint {
 }
 
 /// Vertex colours interpolated perspective-correctly: each channel is `Σλᵢcᵢqᵢ / Σλᵢqᵢ` with
-/// screen-space weights `λᵢ` and `qᵢ ∝ 1/wᵢ`, one division per channel and pixel, clamped to
-/// the range of the vertex values like [`SmoothPaint`].
+/// screen-space weights `λᵢ` and `qᵢ ∝ 1/wᵢ`, rounded to nearest with 8 fraction bits,
+/// clamped to the range of the vertex values like [`SmoothPaint`], and rounded to 8 bits: the
+/// exact quotient at every pixel, by word products rather than 64-bit divisions.
 #[derive(Clone, Copy, Debug)]
 pub struct PerspectivePaint {
     /// `cₖ·q` per channel, then `q`.
     planes: [Plane; 4],
-    lo: [i64; 3],
-    hi: [i64; 3],
+    lo: [u8; 3],
+    hi: [u8; 3],
 }
 
 /// Weights `q` are scaled so that the largest of a triangle's is this: numerators `c·q` with
@@ -218,8 +219,14 @@ impl PerspectivePaint {
         };
         let den = q.map(|v| v << 16);
         let planes = Plane::new_each(p, [num(0), num(1), num(2), den], area2);
+        // The vertex values are whole channels: their ends are whole too.
         let (lo, hi) = channel_ranges(channel);
-        PerspectivePaint { planes, lo, hi }
+        let whole = |v: [i64; 3]| v.map(|c| (c >> RGB_FRAC).clamp(0, 255) as u8);
+        PerspectivePaint {
+            planes,
+            lo: whole(lo),
+            hi: whole(hi),
+        }
     }
 }
 
@@ -228,21 +235,77 @@ impl PerspectivePaint {
 pub struct PerspectiveCursor {
     acc: [i64; 4],
     step: [i64; 4],
-    lo: [i64; 3],
-    hi: [i64; 3],
+    lo: [u8; 3],
+    hi: [u8; 3],
+}
+
+/// The bits of [`perspective_channel`]'s shortened divisor.
+const SHORT_DIVISOR_BITS: u32 = 22;
+
+/// The largest denominator [`perspective_channel`] takes (a triangle's lie below 2⁴⁵): its
+/// products then stay inside 64 bits.
+const MOST_DENOMINATOR: i64 = 1 << 47;
+
+/// One channel of a [`PerspectivePaint`] at a pixel where its planes are `n = c·q` and
+/// `d = q·2¹⁶` (`1 ≤ d ≤ 2⁴⁷`): `c = round(n·2¹⁶ / d)` (ties away from zero, [`RGB_FRAC`]
+/// fraction bits; 0 for a negative `n`) clamped to `lo..=hi` and then rounded to 8 bits.
+///
+/// That is `⌊b / 2⁸d⌋` for `b = n·2¹⁶ + ⌊d/2⌋ + 2⁷d`, clamped to the 8-bit `lo..=hi` (nested
+/// floors of whole steps make one; rounding commutes with the clamp), a quotient that matters
+/// only below 2⁸. It is estimated from words: `b` and `whole = 2⁸d` shifted right by `shift`,
+/// which leaves the divisor at most [`SHORT_DIVISOR_BITS`] bits (at least 2²¹ where it shifts
+/// at all), and the dividend times `reciprocal`, `⌊(2³² − 1) / (that divisor + 1)⌋`. Every
+/// step rounds down, so the estimate is at most the quotient; where it is below 2⁸ it is short
+/// of it by at most two (the divisor's relative error is below 2⁻²⁰, or at most one unit
+/// where it is whole, and the dividend's floor costs below half a unit). The exact remainder
+/// (below 2⁶³: `whole` is at most 2⁵⁵) then steps it up: at most two turns of the loop.
+#[inline(always)]
+fn perspective_channel(
+    n: i64,
+    (whole, half_and_bias): (i64, i64),
+    (shift, reciprocal): (u32, u32),
+    (lo, hi): (u8, u8),
+) -> u8 {
+    // Wraps only for numerators no triangle has (inside one, |n| < 2⁴⁵).
+    let b = (n << 16).wrapping_add(half_and_bias);
+    if b < 0 {
+        return lo;
+    }
+    let Ok(t) = u32::try_from(b >> shift) else {
+        return hi;
+    };
+    let mut q = (mul_wide_u32(t, reciprocal) >> 32) as u32;
+    if q >= 256 {
+        return hi;
+    }
+    let (w_high, w_low) = ((whole >> 32) as u32, whole as u32);
+    let times_q = (((q * w_high) as u64) << 32) + mul_wide_u32(q, w_low);
+    let mut rest = b as u64 - times_q;
+    while rest >= whole as u64 {
+        rest -= whole as u64;
+        q += 1;
+    }
+    (q.min(255) as u8).clamp(lo, hi)
 }
 
 impl Iterator for PerspectiveCursor {
     type Item = Rgb888;
-    #[inline]
+    #[inline(always)]
     fn next(&mut self) -> Option<Rgb888> {
-        // One divisor for the three channels (one reciprocal on cores without a divide).
-        let by_q = DivideBy::new(self.acc[3].max(1));
+        // Shared by the channels: the divisor, exact and shortened to a word.
+        let d = self.acc[3].clamp(1, MOST_DENOMINATOR);
+        let whole = d << RGB_FRAC;
+        let half_and_bias = (d >> 1).wrapping_add(d << (RGB_FRAC - 1));
+        let shift = (64 - leading_zeros64(whole as u64)).saturating_sub(SHORT_DIVISOR_BITS);
+        let whole_short = ((whole >> shift) as u32).wrapping_add(1);
+        let reciprocal = u32::MAX / whole_short;
         let ch = |k: usize| {
-            // c·q / (q·2¹⁶) · 2¹⁶ = c with RGB_FRAC fraction bits.
-            let c = by_q.round(self.acc[k].max(0) << 16);
-            let c = c.clamp(self.lo[k], self.hi[k]);
-            ((c + (1 << (RGB_FRAC - 1))) >> RGB_FRAC).clamp(0, 255) as u8
+            perspective_channel(
+                self.acc[k],
+                (whole, half_and_bias),
+                (shift, reciprocal),
+                (self.lo[k], self.hi[k]),
+            )
         };
         let c = Rgb888::new(ch(0), ch(1), ch(2));
         let [a0, a1, a2, a3] = self.acc;
@@ -276,6 +339,81 @@ impl Paint for PerspectivePaint {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`perspective_channel`] by its definition: the rounded quotient by a 64-bit division,
+    /// clamped, then rounded to 8 bits.
+    fn channel_by_division(n: i64, d: i64, (lo, hi): (u8, u8)) -> u8 {
+        let c = crate::math::div_round(n.max(0) << 16, d.max(1));
+        let c = c.clamp(i64::from(lo) << RGB_FRAC, i64::from(hi) << RGB_FRAC);
+        ((c + (1 << (RGB_FRAC - 1))) >> RGB_FRAC).clamp(0, 255) as u8
+    }
+
+    /// The cursor's channel is the definition's for every divisor magnitude, at quotients
+    /// around every 8-bit rounding boundary, below zero and far above 255, and at random.
+    #[test]
+    fn perspective_channels_are_the_rounded_quotients() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15);
+        let cursor_channel = |n: i64, d: i64, range: (u8, u8)| {
+            let mut cursor = PerspectiveCursor {
+                acc: [n, n, n, d],
+                step: [0; 4],
+                lo: [range.0; 3],
+                hi: [range.1; 3],
+            };
+            let c = cursor.next().map(|c| [c.r(), c.g(), c.b()]);
+            assert_eq!(
+                c,
+                Some([channel_by_division(n, d, range); 3]),
+                "{n} {d} {range:?}"
+            );
+        };
+        let mut checked = 0;
+        for bits in 0..46u32 {
+            for _ in 0..2_000 {
+                let x = rng.next_u64();
+                // A divisor of `bits` bits, a quotient near a boundary v·2⁸ ± 2⁷ (or anywhere
+                // from below 0 to past 2¹⁷), and a numerator giving it (±1 unit around).
+                let d = ((x >> 20) & ((1 << bits) - 1) | 1 << bits) as i64;
+                let v = match x % 4 {
+                    0 => ((x >> 8) % 300) as i64 * 256 + 128,
+                    1 => ((x >> 8) % 300) as i64 * 256 - 128,
+                    _ => ((x >> 8) % (1 << 18)) as i64 - (1 << 16),
+                };
+                let n = ((i128::from(v) * i128::from(d)) >> 16) as i64;
+                let (a, b) = ((x >> 40) as u8, (x >> 48) as u8);
+                let range = (a.min(b), a.max(b));
+                for n in [n - 1, n, n + 1] {
+                    cursor_channel(n, d, range);
+                    cursor_channel(n, d, (0, 255));
+                    checked += 2;
+                }
+            }
+        }
+        assert_eq!(checked, 46 * 2_000 * 6);
+        // Planes no triangle has: any value, no panic, an answer within the range.
+        for _ in 0..100_000 {
+            let [n, d] = [
+                rng.next_u64() as i64,
+                rng.next_u64() as i64 >> (rng.next_u64() % 64),
+            ];
+            let mut cursor = PerspectiveCursor {
+                acc: [n, n >> 20, -n, d],
+                step: [d, n, 1, n],
+                lo: [10; 3],
+                hi: [20; 3],
+            };
+            for _ in 0..2 {
+                let c = cursor.next().map(|c| [c.r(), c.g(), c.b()]);
+                assert!(c.is_some_and(|c| c.iter().all(|v| (10..=20).contains(v))));
+            }
+        }
+        for d in [1, 2, 3, 255, 256, 257, (1 << 46) - 1, MOST_DENOMINATOR] {
+            for n in [-1, 0, 1, 127, 128, 129, 1 << 20, 1 << 40, (1 << 46) - 1] {
+                cursor_channel(n, d, (0, 255));
+                cursor_channel(n, d, (3, 200));
+            }
+        }
+    }
 
     /// The exact value at pixel `(x, y)` of the plane through `(p[i], v[i])`, as `num / den`
     /// with `den > 0`.
