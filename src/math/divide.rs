@@ -44,7 +44,7 @@ pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
 /// 32-bit cores a 64-bit division is a library routine of a few hundred instructions; this
 /// takes a few dozen with a hardware 32-bit divide (Cortex-M3/M4), and on Cortex-M0 two
 /// library 32-bit divisions still cost less than the 64-bit one.
-const fn div_u64_u32(n: u64, d: u32) -> u32 {
+pub(crate) const fn div_u64_u32(n: u64, d: u32) -> u32 {
     // Normalise: the divisor's top bit set. n · 2^s < d · 2^s · 2³² ≤ 2⁶⁴: nothing is lost.
     let s = leading_zeros32(d);
     let (hi, lo) = shl_words(n, s);

@@ -1,39 +1,56 @@
 //! Integer square root: the only root the pipeline takes (normals, light directions, camera
 //! axes), exact and free of floats.
 
-use super::scalar::mul_wide_u32;
+use super::divide::div_u64_u32;
+use super::scalar::{leading_zeros64, mul_wide_u32};
 
-/// `floor(sqrt(n))` of an unsigned integer expression of type `$t`, bit by bit: a pair of
-/// bits a step, shifts, adds and compares, no division (the one body of [`isqrt_u64`] and
-/// [`sqrt_above`]'s 32-bit root).
-macro_rules! root_by_bits {
-    ($n:expr, $t:ty) => {{
-        let n: $t = $n;
-        let mut rem = n;
-        let mut root: $t = 0;
-        let mut bit: $t = 1 << (<$t>::BITS - 2);
-        while bit > n {
-            bit >>= 2;
+/// `floor(sqrt(n))` of a word, bit by bit: a pair of bits a step, shifts, adds and compares,
+/// no division.
+const fn word_root(n: u32) -> u32 {
+    let mut rem = n;
+    let mut root = 0u32;
+    let mut bit = 1u32 << 30;
+    while bit > n {
+        bit >>= 2;
+    }
+    while bit != 0 {
+        if rem >= root + bit {
+            rem -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
         }
-        while bit != 0 {
-            if rem >= root + bit {
-                rem -= root + bit;
-                root = (root >> 1) + bit;
-            } else {
-                root >>= 1;
-            }
-            bit >>= 2;
-        }
-        root
-    }};
+        bit >>= 2;
+    }
+    root
 }
 
-/// `floor(sqrt(n))`, bit by bit: 32 steps of shifts, adds and compares, no division. Out of
-/// line: its callers take roots once per frame or object, not per vertex or triangle, and
-/// share one copy.
+/// `floor(sqrt(n))`: [`sqrt_above`]'s bound (within `1 + 2⁻¹⁴` of the root, or 1 above it,
+/// found in words) improved by one integer Newton step, one division of 64 by 32 bits, which
+/// stays at or above the root's floor and leaves it at most a few units above (the step's
+/// error is the bound's squared over twice the root: below 2⁻²⁸ of the root, plus one), then
+/// stepped down by squares. On 32-bit cores a 64-bit step takes several instructions: this
+/// is a fraction of the work of finding the root's 32 bits one at a time. Out of line: its
+/// callers share one copy.
 #[inline(never)]
 pub(crate) const fn isqrt_u64(n: u64) -> u64 {
-    root_by_bits!(n, u64)
+    // From (2³² − 1)² on, the root's floor is 2³² − 1 (and a word quotient below could
+    // overflow).
+    if n >= (u32::MAX as u64) * (u32::MAX as u64) {
+        return u32::MAX as u64;
+    }
+    // At or above √n, and below 2³² (√n < 2³² − 1 here): n / r ≤ √n is below 2³² too.
+    let above = sqrt_above(n);
+    let r = if above > u32::MAX as u64 {
+        u32::MAX
+    } else {
+        above as u32
+    };
+    let mut r = ((r as u64 + div_u64_u32(n, r) as u64) / 2) as u32;
+    while mul_wide_u32(r, r) > n {
+        r -= 1;
+    }
+    r as u64
 }
 
 /// `⌈√n⌉` for `n < 2⁶⁴ − 2³³` (three squared i32 magnitudes are below 3·2⁶²), which fits 32
@@ -46,13 +63,13 @@ pub(crate) const fn isqrt_ceil(n: u64) -> u32 {
 /// An upper bound on `√n`, within a factor `1 + 2⁻¹⁴` of it (or 1 above it), found in 32-bit
 /// words: `n`'s top bits below 2³¹ (an even shift `2k`), rounded up, their root rounded up, times
 /// 2^k. Where a bound serves, a fraction of [`isqrt_u64`]'s work on 32-bit cores (its 64-bit
-/// steps are several instructions each there, on Cortex-M0 about 1,400 a root).
+/// steps are several instructions each there).
 pub(crate) const fn sqrt_above(n: u64) -> u64 {
-    let bits = 64 - n.leading_zeros();
+    let bits = 64 - leading_zeros64(n);
     let k = bits.saturating_sub(31).div_ceil(2);
     // At least n / 2^2k, at most 2³¹.
     let top = (n >> (2 * k)) as u32 + 1;
-    let root = root_by_bits!(top, u32);
+    let root = word_root(top);
     // ⌈√top⌉ · 2^k ≥ √n.
     let root = if root * root < top { root + 1 } else { root };
     (root as u64) << k
@@ -186,11 +203,33 @@ mod tests {
                 "n = {n}"
             );
         }
+        let floor_root = |n: u64| {
+            let r = isqrt_u64(n) as u128;
+            assert!(
+                r * r <= n as u128 && (r + 1) * (r + 1) > n as u128,
+                "n = {n}"
+            );
+        };
+        // Both sides of every square (where a root from above must stop), at every magnitude,
+        // up to the largest.
         let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        for _ in 0..10_000 {
+        for _ in 0..200_000 {
             let x = rng.next_u64();
-            let r = isqrt_u64(x) as u128;
-            assert!(r * r <= x as u128 && (r + 1) * (r + 1) > x as u128);
+            floor_root(x);
+            floor_root(x >> (x % 64));
+            let k = (x >> 32) >> (x % 32);
+            for n in [k * k, (k * k).wrapping_sub(1), k * k + 1, k * k + 2 * k] {
+                floor_root(n);
+            }
+        }
+        let most = u32::MAX as u64;
+        for n in [
+            most * most - 1,
+            most * most,
+            most * most + 1,
+            (most - 1) * (most - 1),
+        ] {
+            floor_root(n);
         }
     }
 }
