@@ -6,8 +6,8 @@
 //! Blinn-Phong highlights, once per vertex from the mesh's normals, then colours interpolated
 //! across the triangle: affine in screen space, each channel rounded once to the target's own
 //! depth, every pixel a convex combination of the vertex colours) and [`PerspectiveGouraud`]
-//! (the same, interpolated perspective-correctly at three divisions per pixel;
-//! `docs/accuracy.md` measures the difference). [`Textured`] maps a
+//! (the same, interpolated perspective-correctly: one word division and a few products a
+//! pixel; `docs/accuracy.md` measures the difference). [`Textured`] maps a
 //! [`Texture`] across each triangle and scales its texels by one of
 //! the others' light.
 
@@ -217,8 +217,8 @@ pub struct Flat;
 pub struct Gouraud;
 
 /// [`Gouraud`] with perspective-correct interpolation: each colour is weighted by `1/w` as
-/// the f64 reference does, at the price of three divisions per pixel (`docs/accuracy.md`
-/// measures both). Under an orthographic projection it draws what [`Gouraud`] draws.
+/// the f64 reference does, at the price of a division per pixel, shared by the channels
+/// (`docs/accuracy.md` measures both). Under an orthographic projection it draws what [`Gouraud`] draws.
 ///
 /// `1/w` is not stored: for a perspective projection the depth `d = z/w` is `−a + b/w` (`a`,
 /// `b` from the projection's third row), so `1/w ∝ −a − d` is recovered from the depth every
