@@ -285,7 +285,8 @@ fn perspective_channel(
         rest -= whole as u64;
         q += 1;
     }
-    (q.min(255) as u8).clamp(lo, hi)
+    // At most `hi`: below 2⁸.
+    q.clamp(u32::from(lo), u32::from(hi)) as u8
 }
 
 impl Iterator for PerspectiveCursor {
