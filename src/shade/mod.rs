@@ -218,7 +218,8 @@ pub struct Gouraud;
 
 /// [`Gouraud`] with perspective-correct interpolation: each colour is weighted by `1/w` as
 /// the f64 reference does, at the price of a division per pixel, shared by the channels
-/// (`docs/accuracy.md` measures both). Under an orthographic projection it draws what [`Gouraud`] draws.
+/// (`docs/accuracy.md` measures both). Under an orthographic projection it draws what
+/// [`Gouraud`] draws.
 ///
 /// `1/w` is not stored: for a perspective projection the depth `d = z/w` is `−a + b/w` (`a`,
 /// `b` from the projection's third row), so `1/w ∝ −a − d` is recovered from the depth every
