@@ -2,7 +2,9 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use super::scalar::{is_short, magnitude_bits, mul_wide, shr_round, Scalar, UNIT_ONE};
+use super::scalar::{
+    is_short, magnitude_bits, mul_wide, mul_wide_u32, shr_round, Scalar, UNIT_ONE,
+};
 use super::sqrt::isqrt_u64;
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
@@ -201,8 +203,9 @@ pub(crate) fn unit_and_length(v: [i64; 3]) -> Option<([i32; 3], u64)> {
     let sum: u64 = scaled
         .iter()
         .map(|c| {
-            let a = c.unsigned_abs();
-            a * a
+            // At most 2³¹: a word.
+            let a = c.unsigned_abs() as u32;
+            mul_wide_u32(a, a)
         })
         .sum(); // each < 2^62 (after rounding at most 2^31 → 2^62), three sum below 2^64
     let len = isqrt_u64(sum); // in [2^30, 2^31·√3)
