@@ -197,7 +197,8 @@ pub(crate) fn unit_and_length(v: [i64; 3]) -> Option<([i32; 3], u64)> {
             // Rounding shift, away from zero.
             shr_round(c, shift as u32)
         } else {
-            c << (-shift) as u32
+            // Below 2³¹ in magnitude before and after: a word shift.
+            i64::from((c as i32) << (-shift) as u32)
         }
     });
     let sum: u64 = scaled
