@@ -62,8 +62,8 @@ pub(crate) const fn isqrt_ceil(n: u64) -> u32 {
 
 /// An upper bound on `√n`, within a factor `1 + 2⁻¹⁴` of it (or 1 above it), found in 32-bit
 /// words: `n`'s top bits below 2³¹ (an even shift `2k`), rounded up, their root rounded up, times
-/// 2^k. Where a bound serves, a fraction of [`isqrt_u64`]'s work on 32-bit cores (its 64-bit
-/// steps are several instructions each there).
+/// 2^k. Where a bound serves, it spares the Newton step and the squares [`isqrt_u64`] takes
+/// from it.
 pub(crate) const fn sqrt_above(n: u64) -> u64 {
     let bits = 64 - leading_zeros64(n);
     let k = bits.saturating_sub(31).div_ceil(2);
