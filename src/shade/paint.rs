@@ -63,6 +63,13 @@ impl Paint for SolidPaint {
 /// Vertex colours carry this many fraction bits in [`PerspectivePaint`]'s planes.
 const RGB_FRAC: u32 = 8;
 
+/// Per channel, the smallest and largest of the three vertex values `channel(k)`.
+fn channel_ranges(channel: impl Fn(usize) -> [i64; 3]) -> ([i64; 3], [i64; 3]) {
+    let lo = [0, 1, 2].map(|k| channel(k).into_iter().min().unwrap_or(0));
+    let hi = [0, 1, 2].map(|k| channel(k).into_iter().max().unwrap_or(0));
+    (lo, hi)
+}
+
 /// A channel value as a [`WordPlane`] takes it: in the channel's depth with 6 fraction bits
 /// (below 2¹⁴), shifted by 16, which the walk doubles, so that a channel is its bits 23 to 30.
 const CHANNEL_SHIFT: u32 = 16;
@@ -212,17 +219,13 @@ impl PerspectivePaint {
         };
         let den = q.map(|v| v << 16);
         let planes = Plane::new_each(p, [num(0), num(1), num(2), den], area2);
-        // Per channel, the least or the greatest of the vertices' whole values.
-        let end = |pick: fn(i32, i32) -> i32| {
-            [0, 1, 2].map(|k| {
-                let [a, b, c] = rgb.map(|v| v.get(k).copied().unwrap_or(0));
-                pick(pick(a, b), c).clamp(0, 255) as u8
-            })
-        };
+        // The vertex values are whole channels: their ends are whole too.
+        let (lo, hi) = channel_ranges(channel);
+        let whole = |v: [i64; 3]| v.map(|c| (c >> RGB_FRAC).clamp(0, 255) as u8);
         PerspectivePaint {
             planes,
-            lo: end(i32::min),
-            hi: end(i32::max),
+            lo: whole(lo),
+            hi: whole(hi),
         }
     }
 }
