@@ -254,6 +254,41 @@ fn prepared_frame_drawn_from_two_threads_equals_one_pass() {
     assert!(image == one_pass.pixels);
 }
 
+/// Many models stacked down the screen, each band meeting a few of them: every band sets up
+/// only the models it meets, each with its own vertices, and the image equals one pass (in
+/// bands of one row, of a prime and of the `bands` preset's 12), every model seen.
+#[test]
+fn bands_of_many_models_equal_one_pass() {
+    let models: Vec<Model<'_>> = (0..12)
+        .map(|i| {
+            let (column, row) = (f64::from(i % 3), f64::from(i / 3));
+            Model::new(
+                &CUBE,
+                Rgb888::new(60 + 15 * i as u8, 200, 255 - 10 * i as u8),
+            )
+            .scaled(0.35)
+            .rotated_y(25 * i)
+            .rotated_x(10 * i)
+            .translated([0.9 * column - 0.9, 1.05 - 0.7 * row, 0.0])
+        })
+        .collect();
+    let (one_pass, stats) = render(&models, 240, 0);
+    assert!(stats.drawn >= 12 * 3, "{stats:?}");
+    for rows in [1, 7, 12] {
+        let (banded, _) = render(&models, rows, 12 * 12);
+        assert!(banded.pixels == one_pass.pixels, "{rows}-row bands");
+    }
+    // Every model shows: without it the image differs.
+    for i in 0..models.len() {
+        let mut others = models.clone();
+        others.remove(i);
+        assert!(
+            render(&others, 240, 0).0.pixels != one_pass.pixels,
+            "model {i}"
+        );
+    }
+}
+
 /// A wireframe model and a solid one in one scene: the cube's edges behind the torus are
 /// hidden by it, those in front are drawn over it (golden image), and the image is the same
 /// in bands.

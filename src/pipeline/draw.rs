@@ -500,11 +500,15 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let mut stats = Stats::default();
         // Counts of a triangle's second look (clipped again, culled after clipping) go here.
         let mut again = Stats::default();
+        let meets = |bin: &Bin| i32::from(bin.top) < y1 && i32::from(bin.bottom) >= y0;
         let mut rest = bins;
         while let Some(object) = rest.first().map(Bin::object) {
-            // An object's bins are a run.
+            // An object's bins are a run; only an object that meets the band's rows is set up.
             let (run, after) = rest.split_at(rest.partition_point(|b| b.object == object));
             rest = after;
+            let Some(first) = run.iter().position(meets) else {
+                continue;
+            };
             let Some(mut setup) = object
                 .checked_sub(tag)
                 .and_then(|j| self.objects(band).nth(j.into()))
@@ -512,8 +516,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 continue;
             };
             let triangles = setup.object.mesh.triangles();
-            for bin in run {
-                if i32::from(bin.top) >= y1 || i32::from(bin.bottom) < y0 {
+            for bin in run.get(first..).unwrap_or(&[]) {
+                if !meets(bin) {
                     continue;
                 }
                 // A bin's rows are its triangle's own: only the pieces of a clipped one
