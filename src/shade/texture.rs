@@ -353,7 +353,12 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
     /// The tiled form where the texture and the mapping allow it (see [`TiledPaint`]).
     #[inline(always)]
     fn visit<U: PaintUser>(&self, user: U) -> U::Output {
-        match (&self.coords, self.sampler.tiled565()) {
+        // The texels cut to the image's own (a texture holds at least those).
+        let tiled = self.sampler.tiled565().and_then(|(texels, [w, h])| {
+            let texels = texels.get(..1usize << ((w + h) & 31))?;
+            Some((texels, [w, h]))
+        });
+        match (&self.coords, tiled) {
             (Coords::Walks(walks), Some((texels, [width_bits, height_bits]))) => {
                 user.with(&TiledPaint {
                     paint: self,
@@ -399,6 +404,7 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
 #[derive(Debug)]
 pub struct TiledPaint<'p, 't, L> {
     paint: &'p TexturePaint<'t, L>,
+    /// The image's texels, exactly a power of two of them (see [`TiledCursor`]).
     texels: &'t [Rgb565],
     /// The coordinate walks shifted up to the top of a word.
     walks: [WordPlane; 2],
@@ -409,6 +415,8 @@ pub struct TiledPaint<'p, 't, L> {
 /// The running texture coordinates and light of a [`TiledPaint`] along a span.
 #[derive(Debug)]
 pub struct TiledCursor<'p, L: Paint + 'p> {
+    /// The image's texels, exactly a power of two of them: a texel's index, already below
+    /// their number, is masked by it less one, which the compiler knows needs no bounds test.
     texels: &'p [Rgb565],
     /// Shifts from a coordinate (the image's fraction bits at the top of a word) down to its
     /// texel column and row (32 less the sides' bits, at most 31), and the row's up into an
@@ -465,7 +473,7 @@ impl<L: Paint> Iterator for TiledCursor<'_, L> {
         let i = ((t as u32).wrapping_shr(down) << row) | (s as u32).wrapping_shr(across);
         let raw = self
             .texels
-            .get(i as usize)
+            .get(i as usize & self.texels.len().wrapping_sub(1))
             .map_or([0; 3], |&c| rgb565_channels(c.into_storage()));
         // The scaling of `Sampler::lit`, written out in both: shared through a function, even
         // inlined, both loops compiled longer.
