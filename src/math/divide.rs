@@ -544,7 +544,7 @@ impl ShortQuotients {
 /// 32-bit words. The step leaves the root exact or one below, for every such `den`
 /// (`reciprocal16_is_exact` tries each): one test of the remainder `2³¹ − x·den` against `den`
 /// makes it exact, where a loop of up to four steps either way measured slower. Outside that range the result means nothing, but nothing overflows.
-fn reciprocal16(den: u32) -> u32 {
+pub(crate) fn reciprocal16(den: u32) -> u32 {
     // x0 ≈ 2³¹ / den (the table's 2⁴⁷ / (den · 2¹⁶)), below 2¹⁶.
     let x0 = RECIPROCALS
         .get((den.wrapping_sub(1) >> 8) as usize & 127)

@@ -31,7 +31,7 @@ pub(crate) use scalar::{
 };
 
 pub(crate) use divide::{
-    div_floor, div_round, div_round_word, fraction_in_words, DivideBy, ShortQuotients,
+    div_floor, div_round, div_round_word, fraction_in_words, reciprocal16, DivideBy, ShortQuotients,
 };
 #[cfg(test)]
 pub(crate) use face::shrink_below;

@@ -4,7 +4,9 @@ use embedded_graphics::pixelcolor::Rgb888;
 #[cfg(test)]
 use embedded_graphics::pixelcolor::RgbColor;
 
-use crate::math::{leading_zeros64, magnitude_bits, mul_wide_u32};
+use crate::math::{
+    leading_zeros64, magnitude_bits, mul_short_u32, mul_wide_u32, reciprocal16, NARROW_CORE,
+};
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 
 /// A source of colours along a span, started at its first pixel.
@@ -246,24 +248,116 @@ const SHORT_DIVISOR_BITS: u32 = 22;
 /// products then stay inside 64 bits.
 const MOST_DENOMINATOR: i64 = 1 << 47;
 
+/// How [`perspective_channel`] estimates its quotient from words: the dividend shifted right
+/// by `shift`, times `reciprocal`, shifted right by 32 (cores with a long multiply and a
+/// divide instruction) or 23 (cores without: see [`Estimate::of`]).
+#[derive(Clone, Copy, Debug)]
+struct Estimate {
+    shift: u32,
+    reciprocal: u32,
+    /// The form of cores without a long multiply and a divide instruction.
+    narrow: bool,
+}
+
+impl Estimate {
+    /// The estimate for the divisor `whole` (`2⁸ ≤ whole < 2⁵⁶`, `bits` long), in the form of
+    /// cores without a long multiply and a divide instruction (`narrow`) or the other; both are
+    /// tested on every host.
+    ///
+    /// With a long multiply and a divide instruction: `whole` shifted right by `shift`, which
+    /// leaves it at most [`SHORT_DIVISOR_BITS`] bits (at least 2²¹ where it shifts at all),
+    /// and `reciprocal = ⌊(2³² − 1) / (that + 1)⌋`; the dividend is shifted the same way.
+    ///
+    /// Without them, where a division is a library routine: the divisor's top 16 bits
+    /// `D = ⌊whole / 2^s⌋ + 1` in (2¹⁵, 2¹⁶] (`s = bits − 16`, negative for a short `whole`,
+    /// which is then shifted left) and `reciprocal = ⌊2³¹ / D⌋` below 2¹⁶, from a table and
+    /// a Newton step; the dividend is shifted by `s + 8` (at least 1), and a dividend whose
+    /// shifted value reaches 2¹⁶ has a quotient above 2⁸. The product of two values below
+    /// 2¹⁶ fits a word, and shifted by 23 it is at most `b / whole`, short of it by less than
+    /// two: `D` errs by at most 2⁻¹⁵ of itself, the reciprocal's floor by less than 2⁻¹⁵, each
+    /// less than 2⁻⁷ of a quotient below 2⁸; the dividend's floor costs less than 2¹⁶ / 2²³,
+    /// and the last floor less than one.
+    #[inline(always)]
+    fn of(whole: i64, bits: u32, narrow: bool) -> Estimate {
+        if narrow {
+            // The top 16 bits, in words where 64-bit shifts are routines.
+            let (high, low) = ((whole >> 32) as u32, whole as u32);
+            let top = match bits {
+                48.. => high >> (bits - 48),
+                33..=47 => (high << (48 - bits)) | (low >> (bits - 16)),
+                16..=32 => low >> (bits - 16),
+                _ => low << (16 - bits),
+            };
+            Estimate {
+                shift: bits.wrapping_sub(8),
+                reciprocal: reciprocal16(top.wrapping_add(1)),
+                narrow,
+            }
+        } else {
+            let shift = bits.saturating_sub(SHORT_DIVISOR_BITS);
+            let short = ((whole >> shift) as u32).wrapping_add(1);
+            Estimate {
+                shift,
+                reciprocal: u32::MAX / short,
+                narrow,
+            }
+        }
+    }
+
+    /// The estimate of `⌊b / whole⌋` for `b ≥ 0`, at most it and short of it by at most two
+    /// where it is below 2⁸; `None` where the quotient is at least 2⁸.
+    #[inline(always)]
+    fn quotient(&self, b: i64) -> Option<u32> {
+        let q = if self.narrow {
+            // `b >> shift` (shift at least 1) in words, where 64-bit shifts are routines.
+            let (high, low) = ((b >> 32) as u32, b as u32);
+            let t = if self.shift >= 32 {
+                high >> (self.shift - 32)
+            } else if high >> self.shift == 0 {
+                (high << (32 - self.shift)) | (low >> self.shift)
+            } else {
+                return None;
+            };
+            if t >= 1 << 16 {
+                return None;
+            }
+            t.wrapping_mul(self.reciprocal) >> 23
+        } else {
+            let t = u32::try_from(b >> self.shift).ok()?;
+            (mul_wide_u32(t, self.reciprocal) >> 32) as u32
+        };
+        (q < 256).then_some(q)
+    }
+}
+
+/// What [`perspective_channel`] takes of the denominator plane's value `d` at a pixel, for
+/// every channel: `whole = 2⁸d` and `⌊d/2⌋ + 2⁷d` (`d` held to `1..=`[`MOST_DENOMINATOR`]),
+/// and the estimate of quotients by `whole` in the `narrow` form or the other.
+#[inline(always)]
+fn divisor(d: i64, narrow: bool) -> ((i64, i64), Estimate) {
+    let d = d.clamp(1, MOST_DENOMINATOR);
+    let whole = d << RGB_FRAC;
+    let half_and_bias = (d >> 1).wrapping_add(d << (RGB_FRAC - 1));
+    let bits = 64 - leading_zeros64(whole as u64);
+    ((whole, half_and_bias), Estimate::of(whole, bits, narrow))
+}
+
 /// One channel of a [`PerspectivePaint`] at a pixel where its planes are `n = c·q` and
 /// `d = q·2¹⁶` (`1 ≤ d ≤ 2⁴⁷`): `c = round(n·2¹⁶ / d)` (ties away from zero, [`RGB_FRAC`]
 /// fraction bits; 0 for a negative `n`) clamped to `lo..=hi` and then rounded to 8 bits.
 ///
 /// That is `⌊b / 2⁸d⌋` for `b = n·2¹⁶ + ⌊d/2⌋ + 2⁷d`, clamped to the 8-bit `lo..=hi` (nested
 /// floors of whole steps make one; rounding commutes with the clamp), a quotient that matters
-/// only below 2⁸. It is estimated from words: `b` and `whole = 2⁸d` shifted right by `shift`,
-/// which leaves the divisor at most [`SHORT_DIVISOR_BITS`] bits (at least 2²¹ where it shifts
-/// at all), and the dividend times `reciprocal`, `⌊(2³² − 1) / (that divisor + 1)⌋`. Every
-/// step rounds down, so the estimate is at most the quotient; where it is below 2⁸ it is short
-/// of it by at most two (the divisor's relative error is below 2⁻²⁰, or at most one unit
-/// where it is whole, and the dividend's floor costs below half a unit). The exact remainder
+/// only below 2⁸. It is estimated from words (see [`Estimate`]): at most the quotient, and
+/// where it is below 2⁸ short of it by at most two (the divisor's relative error is below
+/// 2⁻²⁰, or at most one unit where it is whole, and the dividend's floor costs below half a
+/// unit, with a divide instruction; see [`Estimate::of`] without one). The exact remainder
 /// (below 2⁶³: `whole` is at most 2⁵⁵) then steps it up: at most two turns of the loop.
 #[inline(always)]
 fn perspective_channel(
     n: i64,
     (whole, half_and_bias): (i64, i64),
-    (shift, reciprocal): (u32, u32),
+    estimate: &Estimate,
     (lo, hi): (u8, u8),
 ) -> u8 {
     // Wraps only for numerators no triangle has (inside one, |n| < 2⁴⁵).
@@ -271,15 +365,12 @@ fn perspective_channel(
     if b < 0 {
         return lo;
     }
-    let Ok(t) = u32::try_from(b >> shift) else {
+    let Some(mut q) = estimate.quotient(b) else {
         return hi;
     };
-    let mut q = (mul_wide_u32(t, reciprocal) >> 32) as u32;
-    if q >= 256 {
-        return hi;
-    }
+    // q below 2⁸: its product with the low word is a short one.
     let (w_high, w_low) = ((whole >> 32) as u32, whole as u32);
-    let times_q = (((q * w_high) as u64) << 32) + mul_wide_u32(q, w_low);
+    let times_q = (((q * w_high) as u64) << 32) + mul_short_u32(q as i32, w_low) as u64;
     let mut rest = b as u64 - times_q;
     while rest >= whole as u64 {
         rest -= whole as u64;
@@ -294,22 +385,15 @@ impl Iterator for PerspectiveCursor {
     #[inline(always)]
     fn next(&mut self) -> Option<Rgb888> {
         // Shared by the channels: the divisor, exact and shortened to a word.
-        let d = self.acc[3].clamp(1, MOST_DENOMINATOR);
-        let whole = d << RGB_FRAC;
-        let half_and_bias = (d >> 1).wrapping_add(d << (RGB_FRAC - 1));
-        let shift = (64 - leading_zeros64(whole as u64)).saturating_sub(SHORT_DIVISOR_BITS);
-        let whole_short = ((whole >> shift) as u32).wrapping_add(1);
-        let reciprocal = u32::MAX / whole_short;
-        let ch = |k: usize| {
-            perspective_channel(
-                self.acc[k],
-                (whole, half_and_bias),
-                (shift, reciprocal),
-                (self.lo[k], self.hi[k]),
-            )
-        };
-        let c = Rgb888::new(ch(0), ch(1), ch(2));
+        let (divisor, estimate) = divisor(self.acc[3], NARROW_CORE);
         let [a0, a1, a2, a3] = self.acc;
+        let ([l0, l1, l2], [h0, h1, h2]) = (self.lo, self.hi);
+        // Written out: a closure over the channels stays a call at opt-level "s".
+        let c = Rgb888::new(
+            perspective_channel(a0, divisor, &estimate, (l0, h0)),
+            perspective_channel(a1, divisor, &estimate, (l1, h1)),
+            perspective_channel(a2, divisor, &estimate, (l2, h2)),
+        );
         let [s0, s1, s2, s3] = self.step;
         self.acc = [
             a0.wrapping_add(s0),
@@ -414,6 +498,56 @@ mod tests {
                 cursor_channel(n, d, (3, 200));
             }
         }
+    }
+
+    /// Both forms of the estimate, whichever the core running the test takes, at every
+    /// divisor size and around every quotient below 2⁸ and past it: never above the quotient,
+    /// short of it by at most two below 2⁸ (what the correction loop's bound rests on), `None`
+    /// only at 2⁸ and above; and the channel is the definition's.
+    #[test]
+    fn both_estimates_stay_within_two_below_the_quotient() {
+        let mut rng = crate::testing::XorShift(0x2545_F491_4F6C_DD1D);
+        let mut checked = 0;
+        for narrow in [false, true] {
+            // Divisors below 2⁴⁷ (`divisor` holds larger ones to it).
+            for bits in 0..47u32 {
+                for _ in 0..3_000 {
+                    let x = rng.next_u64();
+                    let d = ((x >> 16) & ((1 << bits) - 1) | 1 << bits) as i64;
+                    let ((whole, half_and_bias), estimate) = divisor(d, narrow);
+                    // A dividend around every quotient up to past 2⁸, and anywhere beyond.
+                    let q = if x.is_multiple_of(3) {
+                        (x >> 8) % (1 << 20)
+                    } else {
+                        (x >> 8) % 260
+                    };
+                    let b0 = i128::from(whole) * i128::from(q as i64);
+                    for b in [b0 - 1, b0, b0 + 1, b0 + i128::from(whole) / 2] {
+                        let Ok(b) = i64::try_from(b) else { continue };
+                        if b < 0 {
+                            continue;
+                        }
+                        let exact = b / whole;
+                        match estimate.quotient(b) {
+                            Some(e) => assert!(
+                                i64::from(e) <= exact && exact <= i64::from(e) + 2,
+                                "{narrow} {d} {b}: {e} for {exact}"
+                            ),
+                            None => assert!(exact >= 256, "{narrow} {d} {b}: None for {exact}"),
+                        }
+                        let n = (b - half_and_bias) >> 16;
+                        let range = ((x >> 40) as u8 % 128, 128 + (x >> 48) as u8 % 128);
+                        assert_eq!(
+                            perspective_channel(n, (whole, half_and_bias), &estimate, range),
+                            channel_by_division(n, d, range),
+                            "{narrow} {n} {d}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 2 * 47 * 3_000 * 3, "{checked}");
     }
 
     /// The exact value at pixel `(x, y)` of the plane through `(p[i], v[i])`, as `num / den`
