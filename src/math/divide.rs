@@ -52,28 +52,65 @@ pub(crate) const fn div_u64_u32(n: u64, d: u32) -> u32 {
 }
 
 /// `⌊(hi · 2³² + lo) / v⌋` for a normalised `v` (top bit set) and `hi < v`: two 16-bit digits.
+/// Where a division is a library routine, each digit's first estimate comes from one
+/// reciprocal of the divisor's top half instead (see [`by_reciprocal`]).
 #[inline(always)]
 const fn div_normalized(hi: u32, lo: u32, v: u32) -> u32 {
     const B: u32 = 1 << 16;
     let (vn1, vn0) = (v >> 16, v & 0xFFFF);
     let (un1, un0) = (lo >> 16, lo & 0xFFFF);
-    let q1 = quotient_digit(hi, un1, vn1, vn0);
+    // vn1 is in [2¹⁵, 2¹⁶): vn1 + 1 in reciprocal16's range.
+    let r = if NARROW_CORE {
+        reciprocal16(vn1 + 1)
+    } else {
+        0
+    };
+    let q1 = quotient_digit(hi, un1, (vn1, vn0), r);
     let un21 = hi
         .wrapping_mul(B)
         .wrapping_add(un1)
         .wrapping_sub(q1.wrapping_mul(v));
-    let q0 = quotient_digit(un21, un0, vn1, vn0);
+    let q0 = quotient_digit(un21, un0, (vn1, vn0), r);
     q1 * B + q0
 }
 
-/// One 16-bit digit of `(top · 2¹⁶ + next) / v`, `v = vn1 · 2¹⁶ + vn0` normalised (top bit
-/// set), `top < v`: estimated from the top 32 bits by the divisor's top 16, then corrected
-/// (at most twice). Every product and sum stays within 32 bits.
+/// `(⌊top / vn1⌋, top mod vn1)` for `2¹⁵ ≤ vn1 < 2¹⁶`, from `r = ⌊2³¹ / (vn1 + 1)⌋` (tested on
+/// every host): `top · r / 2³¹` in two word products of `top`'s halves is at most the
+/// quotient and short of it by less than eight (`r` errs by less than `2³¹ / vn1²` plus one,
+/// that is less than four units of a quotient below 2¹⁷ + 2, and the floors by less than
+/// two), which steps of the remainder make up. Every product fits a word.
+// Out of line: both digits call it, and in line it measured little faster for more flash.
+#[inline(never)]
+const fn by_reciprocal(top: u32, vn1: u32, r: u32) -> (u32, u32) {
+    let mut q = reciprocal_estimate(top, r);
+    let mut rest = top - q * vn1;
+    while rest >= vn1 {
+        q += 1;
+        rest -= vn1;
+    }
+    (q, rest)
+}
+
+/// `⌊top · r / 2³¹⌋` less at most one, in two word products of `top`'s halves: `th · r` is at
+/// most `(2¹⁶ − 1)²` and the low product's top half below 2¹⁶, so their sum fits.
 #[inline(always)]
-const fn quotient_digit(top: u32, next: u32, vn1: u32, vn0: u32) -> u32 {
+const fn reciprocal_estimate(top: u32, r: u32) -> u32 {
+    let (th, tl) = (top >> 16, top & 0xFFFF);
+    (th * r + ((tl * r) >> 16)) >> 15
+}
+
+/// One 16-bit digit of `(top · 2¹⁶ + next) / v`, `v = vn1 · 2¹⁶ + vn0` normalised (top bit
+/// set), `top < v`: estimated from the top 32 bits by the divisor's top 16 (by a division, or
+/// from `r` where a division is a library routine: see [`by_reciprocal`]), then corrected (at
+/// most twice). Every product and sum stays within 32 bits.
+#[inline(always)]
+const fn quotient_digit(top: u32, next: u32, (vn1, vn0): (u32, u32), r: u32) -> u32 {
     const B: u32 = 1 << 16;
-    let mut q = top / vn1;
-    let mut rhat = top - q * vn1;
+    let (mut q, mut rhat) = if NARROW_CORE {
+        by_reciprocal(top, vn1, r)
+    } else {
+        (top / vn1, top % vn1)
+    };
     while q >= B || q * vn0 > B * rhat + next {
         q -= 1;
         rhat += vn1;
@@ -544,12 +581,10 @@ impl ShortQuotients {
 /// 32-bit words. The step leaves the root exact or one below, for every such `den`
 /// (`reciprocal16_is_exact` tries each): one test of the remainder `2³¹ − x·den` against `den`
 /// makes it exact, where a loop of up to four steps either way measured slower. Outside that range the result means nothing, but nothing overflows.
-pub(crate) fn reciprocal16(den: u32) -> u32 {
+pub(crate) const fn reciprocal16(den: u32) -> u32 {
     // x0 ≈ 2³¹ / den (the table's 2⁴⁷ / (den · 2¹⁶)), below 2¹⁶.
-    let x0 = RECIPROCALS
-        .get((den.wrapping_sub(1) >> 8) as usize & 127)
-        .copied()
-        .unwrap_or(0) as i32;
+    // The index, masked to 7 bits, lies in the table's 128 entries.
+    let x0 = RECIPROCALS[(den.wrapping_sub(1) >> 8) as usize & 127] as i32;
     // den · x0 is within 2⁻⁸ of 2³¹: e below 2²³, and x0 · e / 2⁸ below 2³¹.
     let e = (1u32 << 31).wrapping_sub(den.wrapping_mul(x0 as u32)) as i32;
     let x = x0.wrapping_add(x0.wrapping_mul(e >> 8) >> 23) as u32;
@@ -1033,6 +1068,40 @@ mod tests {
         for n in [i64::MIN, i64::MIN + 1, i64::MAX, -5, -4, -1, 0, 1, 4, 5] {
             assert_eq!(div.div_round(n), div_round(n, 3), "{n}");
         }
+    }
+
+    /// The digit of cores without a divide instruction, on every host: for every top half
+    /// `vn1` of a normalised divisor, at the ends of the dividends a digit takes (below
+    /// `(vn1 + 1) · 2¹⁶`) and at random, the estimate is at most the quotient and short of
+    /// it by less than eight, and the steps make it exact.
+    #[test]
+    fn digits_by_reciprocal_are_exact() {
+        let mut rng = crate::testing::XorShift(0x0DDB_1A5E_5BAD_5EED);
+        let mut worst = 0;
+        for vn1 in 1u32 << 15..1 << 16 {
+            let r = reciprocal16(vn1 + 1);
+            let most = ((vn1 + 1) << 16).wrapping_sub(1).max(vn1 << 16);
+            for top in [
+                0,
+                1,
+                vn1 - 1,
+                vn1,
+                vn1 << 15,
+                most - 1,
+                most,
+                rng.next_u64() as u32 % most,
+            ] {
+                let (q, rest) = (top / vn1, top % vn1);
+                let estimate = reciprocal_estimate(top, r);
+                assert!(
+                    estimate <= q && q - estimate < 8,
+                    "{top} / {vn1}: {estimate}"
+                );
+                worst = worst.max(q - estimate);
+                assert_eq!(by_reciprocal(top, vn1, r), (q, rest), "{top} / {vn1}");
+            }
+        }
+        assert!(worst >= 2, "the estimate is exercised short: {worst}");
     }
 
     /// The 16-bit reciprocal is exact for every divisor of its range.
