@@ -76,9 +76,9 @@ const fn div_normalized(hi: u32, lo: u32, v: u32) -> u32 {
 
 /// `(⌊top / vn1⌋, top mod vn1)` for `2¹⁵ ≤ vn1 < 2¹⁶`, from `r = ⌊2³¹ / (vn1 + 1)⌋` (tested on
 /// every host): `top · r / 2³¹` in two word products of `top`'s halves is at most the
-/// quotient and short of it by less than eight (`r` errs by less than `2³¹ / vn1²` plus one,
-/// that is less than four units of a quotient below 2¹⁷ + 2, and the floors by less than
-/// two), which steps of the remainder make up. Every product fits a word.
+/// quotient and short of it by less than eight (`r` lies below `2³¹ / vn1` by less than
+/// `2³¹ / vn1²` plus one, which costs less than six units for a `top` below 2³², and the
+/// floors less than two), which steps of the remainder make up. Every product fits a word.
 // Out of line: both digits call it, and in line it measured little faster for more flash.
 #[inline(never)]
 const fn by_reciprocal(top: u32, vn1: u32, r: u32) -> (u32, u32) {
