@@ -186,18 +186,21 @@ pub(crate) const fn first_centre_from32(v: i32) -> i32 {
     v.wrapping_add(SUBPIXEL_SCALE / 2 - 1) >> crate::math::SUBPIXEL_BITS
 }
 
-/// `ceil(n / d)` for `d > 0`.
-pub(crate) const fn ceil_div(n: i64, d: i64) -> i64 {
-    let q = n.div_euclid(d);
-    if n.rem_euclid(d) != 0 {
-        q + 1
-    } else {
-        q
+/// `ceil(n / d)` for `d > 0`: [`floor_div`] of `n + d − 1` (`−floor(−n / d)` where that
+/// would overflow).
+pub(crate) fn ceil_div(n: i64, d: i64) -> i64 {
+    match n.checked_add(d - 1) {
+        Some(m) => floor_div(m, d),
+        None => floor_div(n.saturating_neg(), d).saturating_neg(),
     }
 }
 
-/// `floor(n / d)` for `d > 0`.
-pub(crate) const fn floor_div(n: i64, d: i64) -> i64 {
+/// `floor(n / d)` for `d > 0`: in words where both fit 32 bits (a 64-bit division is a long
+/// library routine on 32-bit cores).
+pub(crate) fn floor_div(n: i64, d: i64) -> i64 {
+    if let (Ok(n32), Ok(d32)) = (i32::try_from(n), i32::try_from(d)) {
+        return i64::from(n32.div_euclid(d32));
+    }
     n.div_euclid(d)
 }
 
@@ -427,6 +430,45 @@ mod tests {
             b.step();
             assert_eq!(fields(&a), fields(&b), "{n0} {den} {step}");
         }
+    }
+
+    /// Floor and ceiling quotients, in words and in 64 bits, equal the definitions at the
+    /// edges of 32 bits, at the ends of i64 and at random.
+    #[test]
+    fn floor_and_ceiling_quotients() {
+        let by_i128 = |n: i64, d: i64| {
+            let (n, d) = (i128::from(n), i128::from(d));
+            (n.div_euclid(d), -(-n).div_euclid(d))
+        };
+        let mut rng = crate::testing::XorShift(0x1234_5678_9ABC_DEF1);
+        let edges = [
+            0,
+            1,
+            2,
+            15,
+            16,
+            17,
+            i64::from(i32::MAX),
+            i64::from(i32::MAX) + 1,
+            i64::MAX,
+        ];
+        let mut values: std::vec::Vec<i64> =
+            edges.iter().flat_map(|&e| [e, -e, e - 1, -e + 1]).collect();
+        values.extend((0..2_000).map(|k| (rng.next_u64() as i64) >> (k % 64)));
+        values.push(i64::MIN);
+        let mut checked = 0;
+        for &n in &values {
+            for &d in &values {
+                if d <= 0 {
+                    continue;
+                }
+                let (floor, ceil) = by_i128(n, d);
+                assert_eq!(i128::from(floor_div(n, d)), floor, "{n} / {d}");
+                assert_eq!(i128::from(ceil_div(n, d)), ceil, "{n} / {d}");
+                checked += 1;
+            }
+        }
+        assert!(checked > 1_000_000, "{checked}");
     }
 
     /// `floor_divmod` is floor division, and the division-free quotients of 32-bit operands
