@@ -4,7 +4,7 @@
 use embedded_graphics::prelude::Point;
 
 use super::{ceil_div, first_centre_from, floor_div, FloorStepper, PixelRect, ScreenPoint};
-use crate::math::SUBPIXEL_SCALE;
+use crate::math::{SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -69,7 +69,11 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     let (mut i0, mut i1) = if dmaj > 0 {
         (first_centre_from(a.0), first_centre_from(b.0))
     } else {
-        (floor_div(b.0 - HALF, S) + 1, floor_div(a.0 - HALF, S) + 1)
+        // ⌊v / S⌋ by a shift (S is a power of two).
+        (
+            ((b.0 - HALF) >> SUBPIXEL_BITS) + 1,
+            ((a.0 - HALF) >> SUBPIXEL_BITS) + 1,
+        )
     };
     i0 = i0.max(lo.0 as i64);
     i1 = i1.min(hi.0 as i64);
@@ -79,19 +83,25 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     let c = sign * (a.1 * dmaj + (HALF - a.0) * dmin);
     let step = sign * S * dmin;
     // Keep the columns whose minor coordinate lies in [lo.1, hi.1); minor(i) is monotonic.
-    let n_lo = (lo.1 as i64).saturating_mul(den);
-    let n_hi = (hi.1 as i64).saturating_mul(den);
-    if step > 0 {
-        i0 = i0.max(ceil_div(n_lo.saturating_sub(c), step));
-        i1 = i1.min(ceil_div(n_hi.saturating_sub(c), step));
-    } else if step < 0 {
-        let p = -step;
-        i0 = i0.max(floor_div(c.saturating_sub(n_hi), p) + 1);
-        i1 = i1.min(floor_div(c.saturating_sub(n_lo), p) + 1);
-    } else {
-        let m = floor_div(c, den);
-        if m < lo.1 as i64 || m >= hi.1 as i64 {
-            return empty;
+    // It is ⌊y / S⌋ for the line's y at a column centre between the endpoints, so it lies
+    // between their rows: where those lie in [lo.1, hi.1), every column is kept, without the
+    // divisions that find where the line leaves.
+    let rows = (a.1.min(b.1) >> SUBPIXEL_BITS, a.1.max(b.1) >> SUBPIXEL_BITS);
+    if rows.0 < lo.1 as i64 || rows.1 >= hi.1 as i64 {
+        let n_lo = (lo.1 as i64).saturating_mul(den);
+        let n_hi = (hi.1 as i64).saturating_mul(den);
+        if step > 0 {
+            i0 = i0.max(ceil_div(n_lo.saturating_sub(c), step));
+            i1 = i1.min(ceil_div(n_hi.saturating_sub(c), step));
+        } else if step < 0 {
+            let p = -step;
+            i0 = i0.max(floor_div(c.saturating_sub(n_hi), p) + 1);
+            i1 = i1.min(floor_div(c.saturating_sub(n_lo), p) + 1);
+        } else {
+            let m = floor_div(c, den);
+            if m < lo.1 as i64 || m >= hi.1 as i64 {
+                return empty;
+            }
         }
     }
     if i0 >= i1 {
