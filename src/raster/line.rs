@@ -4,7 +4,7 @@
 use embedded_graphics::prelude::Point;
 
 use super::{ceil_div, first_centre_from, floor_div, FloorStepper, PixelRect, ScreenPoint};
-use crate::math::{SUBPIXEL_BITS, SUBPIXEL_SCALE};
+use crate::math::{mul_wide, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -78,10 +78,13 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     i0 = i0.max(lo.0 as i64);
     i1 = i1.min(hi.0 as i64);
     // minor(i) = floor(N(i) / den), N(i) = c + i·step (signs folded so that den > 0).
-    let sign = dmaj.signum();
+    // The sign folded in by negation, not by a product (a library routine on some cores).
+    let signed = |v: i64| if dmaj < 0 { -v } else { v };
     let den = S * dmaj.abs();
-    let c = sign * (a.1 * dmaj + (HALF - a.0) * dmin);
-    let step = sign * S * dmin;
+    // Coordinates within ±COORD_LIMIT: every factor fits a word.
+    let wide = |x: i64, y: i64| mul_wide(x as i32, y as i32);
+    let c = signed(wide(a.1, dmaj) + wide(HALF - a.0, dmin));
+    let step = signed(S * dmin);
     // Keep the columns whose minor coordinate lies in [lo.1, hi.1); minor(i) is monotonic.
     // It is ⌊y / S⌋ for the line's y at a column centre between the endpoints, so it lies
     // between their rows: where those lie in [lo.1, hi.1), every column is kept, without the
