@@ -766,8 +766,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             let triangles = setup.object.mesh.triangles();
             add_count(&mut stats.primitives, triangles.len());
             for tri in triangles {
-                let vs = tri.map(|i| setup.vertices.get(i as usize).copied());
-                let [Some(a), Some(b), Some(c)] = vs else {
+                let Some([a, b, c]) = setup.corners(tri) else {
                     bump(&mut stats.invalid);
                     continue;
                 };
