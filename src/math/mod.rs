@@ -27,7 +27,8 @@ pub use vector::Vec3;
 
 pub(crate) use scalar::{
     below_bits, leading_zeros64, magnitude_bits, map3, mul_short, mul_short_u32, mul_shr30_short,
-    mul_wide, mul_wide_u32, short_sides_cross, shr_round, DEPTH_ONE, NARROW_CORE, UNIT_ONE,
+    mul_wide, mul_wide_u32, short_sides_cross, shr_low_word, shr_round, DEPTH_ONE, NARROW_CORE,
+    UNIT_ONE,
 };
 
 pub(crate) use divide::{

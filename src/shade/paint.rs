@@ -5,7 +5,8 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::pixelcolor::RgbColor;
 
 use crate::math::{
-    leading_zeros64, magnitude_bits, mul_short_u32, mul_wide_u32, reciprocal16, NARROW_CORE,
+    leading_zeros64, magnitude_bits, mul_short_u32, mul_wide_u32, reciprocal16, shr_low_word,
+    NARROW_CORE,
 };
 use crate::raster::{AreaWalks, Plane, ScreenPoint, Span, WordPlane};
 
@@ -241,7 +242,7 @@ pub struct PerspectiveCursor {
     hi: [u8; 3],
 }
 
-/// The bits of [`perspective_channel`]'s shortened divisor.
+/// The bits of the shortened divisor of [`Estimate`]'s form for cores with a divide instruction.
 const SHORT_DIVISOR_BITS: u32 = 22;
 
 /// The largest denominator [`perspective_channel`] takes (a triangle's lie below 2⁴⁵): its
@@ -266,7 +267,9 @@ impl Estimate {
     ///
     /// With a long multiply and a divide instruction: `whole` shifted right by `shift`, which
     /// leaves it at most [`SHORT_DIVISOR_BITS`] bits (at least 2²¹ where it shifts at all),
-    /// and `reciprocal = ⌊(2³² − 1) / (that + 1)⌋`; the dividend is shifted the same way.
+    /// and `reciprocal = ⌊(2³² − 1) / (that + 1)⌋`; the dividend is shifted the same way. The
+    /// divisor's relative error is below 2⁻²⁰ (or at most one unit where it is whole) and the
+    /// dividend's floor costs below half a unit: the estimate is short by at most two.
     ///
     /// Without them, where a division is a library routine: the divisor's top 16 bits
     /// `D = ⌊whole / 2^s⌋ + 1` in (2¹⁵, 2¹⁶] (`s = bits − 16`, negative for a short `whole`,
@@ -281,12 +284,10 @@ impl Estimate {
     fn of(whole: i64, bits: u32, narrow: bool) -> Estimate {
         if narrow {
             // The top 16 bits, in words where 64-bit shifts are routines.
-            let (high, low) = ((whole >> 32) as u32, whole as u32);
-            let top = match bits {
-                48.. => high >> (bits - 48),
-                33..=47 => (high << (48 - bits)) | (low >> (bits - 16)),
-                16..=32 => low >> (bits - 16),
-                _ => low << (16 - bits),
+            let top = if bits >= 16 {
+                shr_low_word(whole, bits - 16) as u32
+            } else {
+                (whole as u32) << (16 - bits)
             };
             Estimate {
                 shift: bits.wrapping_sub(8),
@@ -348,11 +349,10 @@ fn divisor(d: i64, narrow: bool) -> ((i64, i64), Estimate) {
 ///
 /// That is `⌊b / 2⁸d⌋` for `b = n·2¹⁶ + ⌊d/2⌋ + 2⁷d`, clamped to the 8-bit `lo..=hi` (nested
 /// floors of whole steps make one; rounding commutes with the clamp), a quotient that matters
-/// only below 2⁸. It is estimated from words (see [`Estimate`]): at most the quotient, and
-/// where it is below 2⁸ short of it by at most two (the divisor's relative error is below
-/// 2⁻²⁰, or at most one unit where it is whole, and the dividend's floor costs below half a
-/// unit, with a divide instruction; see [`Estimate::of`] without one). The exact remainder
-/// (below 2⁶³: `whole` is at most 2⁵⁵) then steps it up: at most two turns of the loop.
+/// only below 2⁸. It is estimated from words: at most the quotient, and where it is below 2⁸
+/// short of it by at most two (each form's bound is argued at [`Estimate::of`]). The exact
+/// remainder (below 2⁶³: `whole` is at most 2⁵⁵) then steps it up: at most two turns of the
+/// loop.
 #[inline(always)]
 fn perspective_channel(
     n: i64,
