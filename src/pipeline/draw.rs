@@ -506,20 +506,25 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             // An object's bins are a run; only an object that meets the band's rows is set up.
             let (run, after) = rest.split_at(rest.partition_point(|b| b.object == object));
             rest = after;
-            let Some(first) = run.iter().position(meets) else {
-                continue;
-            };
-            let Some(mut setup) = object
-                .checked_sub(tag)
-                .and_then(|j| self.objects(band).nth(j.into()))
-            else {
-                continue;
-            };
-            let triangles = setup.object.mesh.triangles();
-            for bin in run.get(first..).unwrap_or(&[]) {
+            // Set up at the first bin that meets the band's rows.
+            let mut set_up = None;
+            for bin in run {
                 if !meets(bin) {
                     continue;
                 }
+                let setup = match &mut set_up {
+                    Some(setup) => setup,
+                    None => {
+                        let found = object
+                            .checked_sub(tag)
+                            .and_then(|j| self.objects(band).nth(j.into()));
+                        let Some(setup) = found else {
+                            break;
+                        };
+                        set_up.insert(setup)
+                    }
+                };
+                let triangles = setup.object.mesh.triangles();
                 // A bin's rows are its triangle's own: only the pieces of a clipped one
                 // (binned for every row) are tested against the band's rows again.
                 let clipped = bin.bottom == Bin::EVERY_ROW.1;
@@ -543,7 +548,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                 };
                 self.triangle(
                     target,
-                    &setup,
+                    setup,
                     (k, tri),
                     setup.inside,
                     self.frame.cull,
