@@ -143,7 +143,7 @@ pub(crate) fn saturate(v: i64) -> Scalar {
 }
 
 /// Exact cross product of raw vectors whose components fit in i32 (each term < 2⁶³).
-#[inline]
+#[inline(never)]
 pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
     // Products of i32 factors lie in [−2⁶² + 2³¹, 2⁶²], so a difference of two lies within
