@@ -229,15 +229,24 @@ fn cross_unit(a: [i32; 3], b: [i32; 3]) -> [i32; 3] {
 
 /// Rows `axis` (Q2.30 → Q16.16) with `−axis · eye` in the last column.
 fn view_from_axes(axes: [[i32; 3]; 3], eye: Vec3) -> Mat4 {
-    let e = eye.to_bits().map(i64::from);
-    let row = |a: [i32; 3]| {
-        let d = a[0] as i64 * e[0] + a[1] as i64 * e[1] + a[2] as i64 * e[2];
-        let t = (-shr_round(d, 30)).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
-        let q = a.map(|c| shr_round(c as i64, 14) as i32);
-        [q[0], q[1], q[2], t]
-    };
     let [x, y, z] = axes;
-    Mat4::from_bits([row(x), row(y), row(z), [0, 0, 0, 1 << 16]])
+    let e = eye.to_bits();
+    Mat4::from_bits([
+        view_row(x, e),
+        view_row(y, e),
+        view_row(z, e),
+        [0, 0, 0, 1 << 16],
+    ])
+}
+
+/// A row of [`view_from_axes`]: `axis` (Q2.30 → Q16.16) and `−axis · eye`. Out of line: one
+/// copy serves the three rows.
+#[inline(never)]
+fn view_row(a: [i32; 3], e: [i32; 3]) -> [i32; 4] {
+    let d = a[0] as i64 * e[0] as i64 + a[1] as i64 * e[1] as i64 + a[2] as i64 * e[2] as i64;
+    let t = (-shr_round(d, 30)).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+    let q = a.map(|c| shr_round(c as i64, 14) as i32);
+    [q[0], q[1], q[2], t]
 }
 
 /// A camera placement that shows a whole box: where to put a look-at camera and which near and
