@@ -16,7 +16,6 @@ use super::scalar::{leading_zeros32, mul_wide, mul_wide_u32, shl_words, NARROW_C
 
 /// `n / d` rounded to nearest with ties away from zero; `d` must be positive (a non-positive
 /// `d` returns 0). Never overflows.
-#[inline(never)]
 pub(crate) const fn div_round(n: i64, d: i64) -> i64 {
     if d <= 0 {
         return 0;
