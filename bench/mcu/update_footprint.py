@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Rewrites the numbers of docs/footprint.md's table (and its goal rows) from run.sh output,
-and its table of the largest functions of `full` on thumbv6m from the firmware run.sh built.
+its table of the largest functions of `full` on thumbv6m from the firmware run.sh built, and
+its table of `full`'s flash by library function (flash.py, which builds it with line tables).
 
     bench/mcu/run.sh > results.txt; BOARD=microbit bench/mcu/run.sh >> results.txt
     python3 bench/mcu/update_footprint.py results.txt
@@ -68,5 +69,14 @@ if elf.exists() and start in text and end in text:
     text = text[:i] + "\n" + "\n".join(table) + "\n" + text[j:]
 elif start in text:
     print(f"no {elf}: the symbol table is left as it was (run bench/mcu/run.sh first)")
+
+# Where the library's flash in `full` on thumbv6m goes, by source function (flash.py).
+start, end = "<!-- sources -->", "<!-- /sources -->"
+if start in text and end in text:
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from flash import table as flash_table
+
+    i, j = text.index(start) + len(start), text.index(end)
+    text = text[:i] + "\n" + flash_table("full", "thumbv6m-none-eabi", 15) + "\n" + text[j:]
 doc.write_text(text)
 print(f"updated {doc} from {len(rows)} results")
