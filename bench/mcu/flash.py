@@ -19,7 +19,7 @@ import re
 import subprocess
 import sys
 
-from profile import HERE, build
+from profile import HERE, build, chains
 
 # The crate's own source files, as the line tables name them.
 SOURCE = os.path.join(os.path.dirname(os.path.dirname(HERE)), "src") + os.sep
@@ -62,25 +62,12 @@ def crate_function(frames, symbol):
 
 def bytes_by_function(binary):
     halfwords = [(a, name) for start, end, name in code_symbols(binary) for a in range(start, end, 2)]
-    out = subprocess.run(["addr2line", "-a", "-f", "-i", "-C", "-e", binary]
-                         + [hex(a) for a, _ in halfwords], capture_output=True, text=True).stdout
     symbol_of = dict(halfwords)
     counts = collections.Counter()
-    address, frames = None, []
-
-    def close():
-        if address is not None:
-            found = crate_function(list(zip(frames[0::2], frames[1::2])), symbol_of[address])
-            if found:
-                counts[found] += 2
-
-    for line in out.splitlines():
-        if line.startswith("0x"):
-            close()
-            address, frames = int(line, 16), []
-        else:
-            frames.append(line)
-    close()
+    for address, frames in chains(binary, [a for a, _ in halfwords], functions=True).items():
+        found = crate_function(list(zip(frames[0::2], frames[1::2])), symbol_of[address])
+        if found:
+            counts[found] += 2
     return counts
 
 

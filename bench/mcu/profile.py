@@ -115,26 +115,31 @@ def symbols(binary):
     return of, frame
 
 
+def chains(binary, addresses, functions=False):
+    """addr2line's inlining chain of each address, innermost first: its source lines, or with
+    `functions` each frame's function name followed by its line."""
+    flags = ["-a", "-i"] + (["-f", "-C"] if functions else [])
+    out = subprocess.run(["addr2line"] + flags + ["-e", binary] + [hex(a) for a in addresses],
+                         capture_output=True, text=True).stdout
+    found, current = {}, None
+    for line in out.splitlines():
+        if line.startswith("0x"):
+            current = int(line, 16)
+            found[current] = []
+        elif current is not None:
+            found[current].append(line)
+    return found
+
+
 def lines(binary, addresses):
     """The source line of each address: the innermost one in this repository's code (inlined
     library code counts where the crate's code used it), else the innermost one."""
-    out = subprocess.run(["addr2line", "-a", "-i", "-e", binary] + [hex(a) for a in addresses],
-                         capture_output=True, text=True).stdout.splitlines()
     short = lambda l: "/".join(l.split(" (")[0].split("/")[-3:])
     ours = lambda l: "/rustc/" not in l and "/.cargo/" not in l and "??" not in l
-    found, chain, current = {}, [], None
-
-    def close():
-        if current is not None:
-            mine = [l for l in chain if ours(l)]
-            found[current] = short((mine or chain or ["?"])[0])
-    for line in out:
-        if line.startswith("0x"):
-            close()
-            current, chain = int(line, 16), []
-        else:
-            chain.append(line)
-    close()
+    found = {}
+    for address, chain in chains(binary, addresses).items():
+        mine = [l for l in chain if ours(l)]
+        found[address] = short((mine or chain or ["?"])[0])
     return found
 
 
