@@ -19,22 +19,10 @@ import re
 import subprocess
 import sys
 
-from profile import HERE, build, chains
+from profile import HERE, build, chains, code_symbols
 
 # The crate's own source files, as the line tables name them.
 SOURCE = os.path.join(os.path.dirname(os.path.dirname(HERE)), "src") + os.sep
-
-
-def code_symbols(binary):
-    """(start, end, name) of every code symbol (mapping symbols, `$t` and the like, left out)."""
-    out = subprocess.run(["nm", "-S", "-C", binary], capture_output=True, text=True).stdout
-    symbols = []
-    for line in out.splitlines():
-        parts = line.split(" ", 3)
-        if len(parts) == 4 and parts[2] in "tT" and not parts[3].startswith("$"):
-            start = int(parts[0], 16) & ~1
-            symbols.append((start, start + int(parts[1], 16), parts[3]))
-    return symbols
 
 
 def short(name):

@@ -98,14 +98,22 @@ def executed(log, is_call, start):
     return count, calls
 
 
+def code_symbols(binary):
+    """(start, end, name) of every code symbol, by address (mapping symbols, `$t` and the
+    like, left out)."""
+    out = subprocess.run(["nm", "-S", "-C", "-n", binary], capture_output=True, text=True).stdout
+    found = []
+    for line in out.splitlines():
+        parts = line.split(" ", 3)
+        if len(parts) == 4 and parts[2] in "tT" and not parts[3].startswith("$"):
+            start = int(parts[0], 16) & ~1
+            found.append((start, start + int(parts[1], 16), parts[3]))
+    return found
+
+
 def symbols(binary):
     """The function holding an address, and the address of the harness's frame function."""
-    table = []
-    nm = subprocess.run(["nm", "-C", "-n", binary], capture_output=True, text=True).stdout
-    for line in nm.splitlines():
-        parts = line.split(" ", 2)
-        if len(parts) == 3 and parts[1] in "tT" and not parts[2].startswith("$"):
-            table.append((int(parts[0], 16) & ~1, parts[2]))
+    table = [(start, name) for start, _, name in code_symbols(binary)]
     starts = [s for s, _ in table]
 
     def of(address):
