@@ -328,22 +328,8 @@ impl DivideBy {
         self.round(n << 30)
     }
 
-    /// [`round`](Self::round)`(n << shift)` for `shift ≤ 14` (and `n << shift`
-    /// within i64): on 32-bit cores with a divide instruction, a divisor below 2¹⁷ and `|n|`
-    /// below 2³² (most depth gradients of small triangles) by [`shifted_by_short`], two
-    /// divides in 32-bit words.
-    #[inline(always)]
-    pub(crate) fn round_shifted(&self, n: i64, shift: u32) -> i64 {
-        if self.d32 > 0 && self.d32 < 1 << SHIFTED_DIVISOR_BITS && shift <= MAX_SHIFT {
-            if let Ok(m) = u32::try_from(n.unsigned_abs()) {
-                return with_sign_of(n, shifted_by_short(m, shift, self.d32 as u32));
-            }
-        }
-        self.round(n << shift)
-    }
-
-    /// [`round_shifted`](Self::round_shifted) (for `shift ≤ 28`) where it fits an i32, else
-    /// `None`; by [`shifted_i32_in_words`] where it applies (the depth and colour gradients of
+    /// [`round`](Self::round)`(n << shift)` (for `shift ≤ 28`, and `n << shift` within i64)
+    /// where it fits an i32, else `None`; by [`shifted_i32_in_words`] where it applies (the depth and colour gradients of
     /// a divisor with a word copy, which 32-bit cores with a divide instruction keep).
     #[inline(always)]
     pub(crate) fn round_shifted_i32(&self, n: i64, shift: u32) -> Option<i32> {
@@ -352,7 +338,7 @@ impl DivideBy {
                 return Some(q);
             }
         }
-        i32::try_from(self.round_shifted(n, shift)).ok()
+        i32::try_from(self.round(n << shift)).ok()
     }
 
     /// [`div_round`]`(n, d)`.
@@ -731,10 +717,10 @@ mod tests {
         );
     }
 
-    /// `DivideBy::round_shifted_i32` is `round_shifted` where that fits an i32, at the ends of
-    /// i32 too.
+    /// `DivideBy::round_shifted_i32` is `round` of the shifted numerator where that fits an
+    /// i32, at the ends of i32 too.
     #[test]
-    fn round_shifted_i32_is_round_shifted_in_a_word() {
+    fn round_shifted_i32_is_round_of_the_shifted_in_a_word() {
         let mut rng = crate::testing::XorShift(0x94D0_49BB_1331_11EBu64);
         let mut fits = 0;
         for i in 0..200_000u32 {
@@ -747,7 +733,7 @@ mod tests {
                 _ => 1 + ((x >> 8) as i64 & 0x3FFF_FFFF),
             };
             let by = DivideBy::new(d);
-            let expected = i32::try_from(by.round_shifted(n, s)).ok();
+            let expected = i32::try_from(by.round(n << s)).ok();
             assert_eq!(by.round_shifted_i32(n, s), expected, "{n} {s} {d}");
             fits += expected.is_some() as u32;
         }
@@ -762,7 +748,7 @@ mod tests {
             .chain([(1 << 27, 4, 1), (-(1 << 30), 1, 1)])
         {
             let by = DivideBy::new(d);
-            let expected = i32::try_from(by.round_shifted(n, s)).ok();
+            let expected = i32::try_from(by.round(n << s)).ok();
             assert_eq!(by.round_shifted_i32(n, s), expected, "{n} {s} {d}");
         }
         assert_eq!(
@@ -770,21 +756,6 @@ mod tests {
             Some(i32::MIN)
         );
         assert_eq!(DivideBy::new(0).round_shifted_i32(5, 3), Some(0));
-    }
-
-    /// `DivideBy::round_shifted` is `round` of the shifted numerator on every core (on this
-    /// host through the general path; the 32-bit path is `shifted_by_short`, tested above).
-    #[test]
-    fn round_shifted_equals_round() {
-        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15u64);
-        for _ in 0..100_000 {
-            let x = rng.next_u64();
-            let n = (x as i64) >> (18 + x % 46);
-            let d = 1 + ((x >> 8) as i64 & 0x3_FFFF);
-            let by = DivideBy::new(d);
-            let s = (x >> 59) as u32 % 15;
-            assert_eq!(by.round_shifted(n, s), by.round(n << s), "{n} {s} {d}");
-        }
     }
 
     /// The 32-bit division path gives the 64-bit path's quotient wherever it applies.

@@ -184,8 +184,8 @@ impl AreaDivisor {
             (nx, ny)
         };
         let (gx, gy) = (
-            self.by_area.round_shifted(nx, shift),
-            self.by_area.round_shifted(ny, shift),
+            self.by_area.round(nx << shift),
+            self.by_area.round(ny << shift),
         );
         // The centre of pixel (0, 0) in sub-pixels from the vertex.
         let half = SUBPIXEL_SCALE as i64 / 2;
@@ -304,10 +304,7 @@ impl WordPlane {
         // |n · 2^shift| < 2⁴⁸: the shifted numerators, the quotients and their products with
         // the offsets (within ±2⁴) stay far inside i64.
         let by = DivideBy::new(den);
-        let (sx, sy) = (
-            by.round_shifted(nx << shift, 5),
-            by.round_shifted(ny << shift, 5),
-        );
+        let (sx, sy) = (by.round(nx << shift << 5), by.round(ny << shift << 5));
         let reference = Reference::of(p[0]);
         let offset = sx
             .wrapping_mul(reference.dx as i64)
