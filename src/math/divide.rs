@@ -247,22 +247,12 @@ const fn div_round_u32(n: i64, d: i64) -> Option<i64> {
     Some(with_sign_of(n, (a as u32 / d as u32) as u64))
 }
 
-/// [`div_round_i32`] by a divisor below 2³¹ known not to be zero (no test of it).
+/// [`div_round`] of 32-bit operands in 32-bit words, exactly, for a divisor below 2³¹ known not
+/// to be zero (no test of it): the one quotient beyond i32, 2³¹ (of `i32::MIN / 1`), is
+/// negated after wrapping to the true `−2³¹`.
 #[inline(always)]
 pub(crate) const fn div_round_word(n: i32, d: NonZeroU32) -> i32 {
-    div_round_by(n, d.get())
-}
-
-/// [`div_round`] of 32-bit operands (`d > 0`) in 32-bit words, exactly: the one quotient
-/// beyond i32, 2³¹ (of `i32::MIN / 1`), is negated after wrapping to the true `−2³¹`.
-#[inline(always)]
-const fn div_round_i32(n: i32, d: i32) -> i32 {
-    div_round_by(n, d as u32)
-}
-
-/// [`div_round_i32`]'s and [`div_round_word`]'s one body, for `0 < d < 2³¹`.
-#[inline(always)]
-const fn div_round_by(n: i32, d: u32) -> i32 {
+    let d = d.get();
     // |n| ≤ 2³¹ and d/2 < 2³⁰: the sum fits u32.
     let q = ((n.unsigned_abs() + d / 2) / d) as i32;
     if n < 0 {
@@ -278,7 +268,7 @@ const fn div_round_by(n: i32, d: u32) -> i32 {
 pub(crate) struct DivideBy {
     d: i64,
     /// `d` where it is a positive i32 and the core divides words in one instruction, else 0:
-    /// checked once for [`round_i32`](Self::round_i32)'s divisions.
+    /// checked once for [`round_shifted_i32`](Self::round_shifted_i32)'s divisions.
     d32: i32,
     by: Option<Divisor>,
 }
@@ -306,19 +296,6 @@ impl DivideBy {
             d32: 0,
             by: None,
         }
-    }
-
-    /// [`round`](Self::round) for numerators that usually fit 32 bits (a vertex's x and y):
-    /// on 32-bit cores with a divide instruction (Cortex-M3/M4) that case in line and in 32-bit
-    /// words, one divide and a few instructions instead of a call and 64-bit signs.
-    #[inline(always)]
-    pub(crate) fn round_i32(&self, n: i64) -> i64 {
-        if self.d32 > 0 {
-            if let Ok(n) = i32::try_from(n) {
-                return div_round_i32(n, self.d32) as i64;
-            }
-        }
-        self.round(n)
     }
 
     /// [`round`](Self::round)`(n · 2³⁰)` for `0 ≤ n ≤ d`, which the caller knows (a vertex's
@@ -813,7 +790,8 @@ mod tests {
                 None => (rng.next_u64() as i32) >> (i % 32),
             };
             let expected = div_round(n as i64, d as i64);
-            assert_eq!(div_round_i32(n, d) as i64, expected, "{n} / {d}");
+            let d = NonZeroU32::new(d as u32).unwrap_or(NonZeroU32::MIN);
+            assert_eq!(div_round_word(n, d) as i64, expected, "{n} / {d}");
         }
     }
 
@@ -1007,7 +985,6 @@ mod tests {
                 (x as i64) >> (x % 64),
                 i64::MIN,
             ] {
-                assert_eq!(known.round_i32(n), tested.round_i32(n), "{n} / {d}");
                 assert_eq!(known.round(n), tested.round(n), "{n} / {d}");
             }
             let z = (x % (d as u64 + 1)) as i64;

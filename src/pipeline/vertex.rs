@@ -402,7 +402,7 @@ fn project_reduced(xh: i64, yh: i64, z: i64, w: i64, m: &ScreenMap) -> Option<(S
     let lim = PIPELINE_LIMIT as i64;
     let by_w = DivideBy::new(w);
     let (sx, sy) = if m.snap == 0 {
-        (by_w.round_i32(xh), by_w.round_i32(yh))
+        (by_w.round(xh), by_w.round(yh))
     } else {
         // One rounding to the coarser grid (no double rounding through sixteenths).
         let (g, wg) = (m.snap, w << m.snap);
