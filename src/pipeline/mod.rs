@@ -234,9 +234,8 @@ impl Frame {
             // Clip coordinates known to need no reduction (every unit-scale scene).
             let fits = clip_from_model.fits_32_bits(extent);
             // Every vertex known inside every plane (an object on screen and beyond the near
-            // plane): no vertex is tested against them. The test costs about what it saves 130
-            // vertices on the Cortex-M0, 110 on the M4 (about 5,000): smaller meshes test each
-            // vertex.
+            // plane): no vertex is tested against them. The sphere test costs about what testing
+            // `SPHERE_TEST_VERTICES` vertices does: smaller meshes test each vertex.
             let known = if fits && object.mesh.positions().len() >= SPHERE_TEST_VERTICES {
                 map.known(&clip_from_model, object.mesh.radius())
             } else {
