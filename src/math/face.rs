@@ -3,8 +3,7 @@
 //! that a kept normal and one found every frame are the same.
 
 use super::{
-    below_bits, cross_in_words, cross_short, cross_wide, magnitude_bits, map3, mul_wide,
-    NewtonDirection,
+    below_bits, cross_in_words, cross_wide, magnitude_bits, map3, mul_wide, NewtonDirection,
 };
 
 /// Shifts a vector so that its largest component is below 2³⁰ (no division, no sqrt): enough
@@ -74,16 +73,11 @@ pub(crate) fn face_direction(
         map3(shrink([d(q0, a0), d(q1, a1), d(q2, a2)]), |c| c as i32)
     };
     let (u, v) = (edge(b), edge(c));
-    // Edges within ±2¹⁵: the exact cross product in words. It lies within ±(2³¹ − 2¹⁵), where
-    // `shrink_below(…, 31)` leaves it too: the same direction whichever way it is found.
-    if normal_matrix.is_none() {
-        // Every edge of the mesh within ±(2¹⁵ − 1), as the torus': no test of each.
-        if edge_extent < 1 << 15 {
-            return cross_in_words(u, v);
-        }
-        if let Some(n) = cross_short(u, v) {
-            return n;
-        }
+    // Every edge of the mesh within ±(2¹⁵ − 1), as the torus': the exact cross product in words,
+    // with no test of each edge. It lies within ±(2³¹ − 2¹⁵), where `shrink_below(…, 31)`
+    // leaves it too: the same direction whichever way it is found.
+    if normal_matrix.is_none() && edge_extent < 1 << 15 {
+        return cross_in_words(u, v);
     }
     // Both edges are below 2³⁰ after `shrink`: 32-bit factors, an exact cross product.
     let n = cross_wide(u, v);

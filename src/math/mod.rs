@@ -41,6 +41,5 @@ pub(crate) use sqrt::{isqrt_ceil, isqrt_u64, sqrt_above};
 #[cfg(test)]
 pub(crate) use vector::dot_wide;
 pub(crate) use vector::{
-    cosine_unit, cross_in_words, cross_short, cross_wide, dot_is_positive, normalize,
-    unit_and_length,
+    cosine_unit, cross_in_words, cross_wide, dot_is_positive, normalize, unit_and_length,
 };

@@ -121,13 +121,6 @@ pub(crate) const fn below_bits(v: i64, bits: u32) -> bool {
     (v as u64).wrapping_add(limit - 1) < 2 * limit - 1
 }
 
-/// True for `d` in [−2¹⁵, 2¹⁵): two such factors make a 32-bit product within ±2³⁰, and the
-/// difference of two such products still fits 32 bits.
-#[inline(always)]
-pub(crate) const fn is_short(d: i32) -> bool {
-    (d.wrapping_add(1 << 15) as u32) < 1 << 16
-}
-
 /// `ux·vy − vx·uy` in 32-bit words, of factors known to be short (within ±2¹⁵), untested: each product within ±2³⁰, their
 /// difference within ±(2³¹ − 2¹⁵). Other factors give a meaningless value, but nothing
 /// overflows.

@@ -2,9 +2,7 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use super::scalar::{
-    is_short, magnitude_bits, mul_wide, mul_wide_u32, shr_round, Scalar, UNIT_ONE,
-};
+use super::scalar::{magnitude_bits, mul_wide, mul_wide_u32, shr_round, Scalar, UNIT_ONE};
 use super::sqrt::isqrt_u64;
 
 /// A point or direction with [`Scalar`] (Q16.16) components.
@@ -155,19 +153,9 @@ pub(crate) fn cross_wide(a: [i32; 3], b: [i32; 3]) -> [i64; 3] {
     ]
 }
 
-/// [`cross_wide`] in 32-bit words, for vectors whose six components all lie in [−2¹⁵, 2¹⁵)
-/// ([`is_short`]: the edges of most triangles): every product lies within ±2³⁰ and every
-/// difference of two within ±2³¹, so each component is exact in an i32. `None` otherwise.
-#[inline(always)]
-pub(crate) fn cross_short(a: [i32; 3], b: [i32; 3]) -> Option<[i32; 3]> {
-    let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
-    let short =
-        is_short(a0) & is_short(a1) & is_short(a2) & is_short(b0) & is_short(b1) & is_short(b2);
-    short.then(|| cross_in_words(a, b))
-}
-
-/// [`cross_short`] without its test, for vectors the caller knows to lie in [−2¹⁵, 2¹⁵) (for
-/// others a wrapped value, never an overflow).
+/// [`cross_wide`] in 32-bit words, for vectors the caller knows to have their six components
+/// in [−2¹⁵, 2¹⁵): every product lies within ±2³⁰ and every difference of two within ±2³¹, so
+/// each component is exact in an i32 (for other vectors a wrapped value, never an overflow).
 #[inline(always)]
 pub(crate) fn cross_in_words(a: [i32; 3], b: [i32; 3]) -> [i32; 3] {
     let ([a0, a1, a2], [b0, b1, b2]) = (a, b);
