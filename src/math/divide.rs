@@ -223,10 +223,10 @@ fn shifted_i32_in_words(n: i64, s: u32, d: u32) -> Option<i32> {
 pub(crate) const fn fraction_in_words(n: u32, d: NonZeroU32) -> i64 {
     let d = d.get();
     // `div_round(n << 30, d)` without its sign and saturation, which n ≥ 0 and the bound need
-    // not, in three 32-bit divides: the numerator's low 30 bits are zero. With n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂, n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) +
-    // r₂·2⁴ + ⌊d/2⌋, whose last part divides to at most 16. n ≤ d < 2¹⁹: every shifted value
-    // below fits a word, and the sum is at most 2³⁰ (the sums wrap, without meaning, only for
-    // an n beyond d).
+    // not, in three 32-bit divides: the numerator's low 30 bits are zero. With
+    // n·2¹³ = q₁·d + r₁ and r₁·2¹³ = q₂·d + r₂, n·2³⁰ + ⌊d/2⌋ = d·(q₁·2¹⁷ + q₂·2⁴) + r₂·2⁴ + ⌊d/2⌋,
+    // whose last part divides to at most 16. n ≤ d < 2¹⁹: every shifted value below fits a
+    // word, and the sum is at most 2³⁰ (the sums wrap, without meaning, only for an n beyond d).
     let t = n << 13;
     let (q1, r1) = (t / d, t % d);
     let t = r1 << 13;
@@ -306,8 +306,9 @@ impl DivideBy {
     }
 
     /// [`round`](Self::round)`(n << shift)` (for `shift ≤ 28`, and `n << shift` within i64)
-    /// where it fits an i32, else `None`; by [`shifted_i32_in_words`] where it applies (the depth and colour gradients of
-    /// a divisor with a word copy, which 32-bit cores with a divide instruction keep).
+    /// where it fits an i32, else `None`; by [`shifted_i32_in_words`] where it applies (the
+    /// depth and colour gradients of a divisor with a word copy, which 32-bit cores with a
+    /// divide instruction keep).
     #[inline(always)]
     pub(crate) fn round_shifted_i32(&self, n: i64, shift: u32) -> Option<i32> {
         if self.d32 > 0 && self.d32 < 1 << SHIFTED_DIVISOR_BITS && shift <= 2 * MAX_SHIFT {
@@ -543,7 +544,8 @@ impl ShortQuotients {
 /// `⌊2³¹ / den⌋` for `2¹⁵ < den ≤ 2¹⁶`, from a table seed of 8 bits and one Newton step in
 /// 32-bit words. The step leaves the root exact or one below, for every such `den`
 /// (`reciprocal16_is_exact` tries each): one test of the remainder `2³¹ − x·den` against `den`
-/// makes it exact, where a loop of up to four steps either way measured slower. Outside that range the result means nothing, but nothing overflows.
+/// makes it exact, where a loop of up to four steps either way measured slower. Outside that
+/// range the result means nothing, but nothing overflows.
 pub(crate) const fn reciprocal16(den: u32) -> u32 {
     // x0 ≈ 2³¹ / den (the table's 2⁴⁷ / (den · 2¹⁶)), below 2¹⁶.
     // The index, masked to 7 bits, lies in the table's 128 entries.

@@ -121,9 +121,9 @@ pub(crate) const fn below_bits(v: i64, bits: u32) -> bool {
     (v as u64).wrapping_add(limit - 1) < 2 * limit - 1
 }
 
-/// `ux·vy − vx·uy` in 32-bit words, of factors known to be short (within ±2¹⁵), untested: each product within ±2³⁰, their
-/// difference within ±(2³¹ − 2¹⁵). Other factors give a meaningless value, but nothing
-/// overflows.
+/// `ux·vy − vx·uy` in 32-bit words, of factors known to be short (within ±2¹⁵), untested: each
+/// product within ±2³⁰, their difference within ±(2³¹ − 2¹⁵). Other factors give a meaningless
+/// value, but nothing overflows.
 #[inline(always)]
 pub(crate) const fn short_sides_cross(ux: i32, uy: i32, vx: i32, vy: i32) -> i64 {
     ux.wrapping_mul(vy).wrapping_sub(vx.wrapping_mul(uy)) as i64
