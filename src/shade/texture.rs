@@ -70,20 +70,11 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         let sampler = Sampler::new(texture);
         let [u0, v0] = uv[0];
         let base = texture_coords(u0, v0, sampler.repeats());
-        // Differences from vertex 0 (t runs down: 1 − v), Q16.16, held within the spread
-        // (clamped only where one is beyond it). Written out: at the firmware's opt-level "s"
-        // an array's `map` stays a loop.
+        // Differences from vertex 0 (t runs down: 1 − v), Q16.16, held within the spread.
+        // Written out: at the firmware's opt-level "s" an array's `map` stays a loop.
         let [_, [ua, va], [ub, vb]] = *uv;
-        let d = |from: i32, to: i32| to.saturating_sub(from);
-        let (mut s1, mut s2, mut t1, mut t2) = (d(u0, ua), d(u0, ub), d(va, v0), d(vb, v0));
-        let (most_s, most_t) = (
-            s1.unsigned_abs().max(s2.unsigned_abs()),
-            t1.unsigned_abs().max(t2.unsigned_abs()),
-        );
-        if most_s.max(most_t) > SPREAD_UV as u32 {
-            let held = |d: i32| d.clamp(-SPREAD_UV, SPREAD_UV);
-            (s1, s2, t1, t2) = (held(s1), held(s2), held(t1), held(t2));
-        }
+        let d = |from: i32, to: i32| to.saturating_sub(from).clamp(-SPREAD_UV, SPREAD_UV);
+        let (s1, s2, t1, t2) = (d(u0, ua), d(u0, ub), d(va, v0), d(vb, v0));
         let gains = sampler.gains(depths);
         let perspective = match (texture.mapping(), depths_for_q) {
             (Mapping::Perspective, Some((offset, z)))
