@@ -262,6 +262,9 @@ pub struct Texture<'a> {
     mapping: Mapping,
     /// Pixels between exact divisions along a span (at least 1).
     run: u8,
+    /// The sides' bits where both are powers of two from 2 up, else zeros (see
+    /// `Sampler::tiled565`): found once here rather than for each triangle.
+    tile_bits: [u8; 2],
 }
 
 impl<'a> Texture<'a> {
@@ -286,6 +289,15 @@ impl<'a> Texture<'a> {
             filter: Filter::Nearest,
             mapping: Mapping::Perspective,
             run: RUN,
+            tile_bits: if width > 1
+                && height > 1
+                && width.is_power_of_two()
+                && height.is_power_of_two()
+            {
+                [width.trailing_zeros() as u8, height.trailing_zeros() as u8]
+            } else {
+                [0; 2]
+            },
         })
     }
 
@@ -439,6 +451,8 @@ pub(crate) struct Sampler<'a> {
     mask: i32,
     /// Pixels between exact divisions along a span (perspective, at least 1).
     pub(crate) run: u8,
+    /// See [`Texture`]'s.
+    tile_bits: [u8; 2],
 }
 
 impl<'a> Sampler<'a> {
@@ -463,6 +477,7 @@ impl<'a> Sampler<'a> {
                 (_, Texels::Rgb565Be(s)) => Read::Rgb565Be(s),
             },
             run: texture.run,
+            tile_bits: texture.tile_bits,
         }
     }
 
@@ -526,12 +541,9 @@ impl<'a> Sampler<'a> {
     /// `None`.
     #[inline(always)]
     pub(crate) fn tiled565(&self) -> Option<(&'a [Rgb565], [u32; 2])> {
-        let tiles = |side: u32| side > 1 && side.is_power_of_two();
+        let [w, h] = self.tile_bits;
         match self.read {
-            Read::Rgb565(s) if self.repeats() && tiles(self.width) && tiles(self.height) => Some((
-                s,
-                [self.width.trailing_zeros(), self.height.trailing_zeros()],
-            )),
+            Read::Rgb565(s) if self.repeats() && w != 0 => Some((s, [u32::from(w), u32::from(h)])),
             _ => None,
         }
     }
