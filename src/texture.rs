@@ -451,7 +451,7 @@ pub(crate) struct Sampler<'a> {
     mask: i32,
     /// Pixels between exact divisions along a span (perspective, at least 1).
     pub(crate) run: u8,
-    /// See [`Texture`]'s.
+    /// The texture's tiled sides' bits, copied (see [`tiled565`](Self::tiled565)).
     tile_bits: [u8; 2],
 }
 
@@ -602,6 +602,29 @@ impl<'a> Sampler<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The tiled form is taken exactly by repeating, nearest-read Rgb565 textures whose sides
+    /// are both powers of two from 2 up, with the sides' bits, whatever the builder methods
+    /// change after `Texture::new`.
+    #[test]
+    fn tiled_form_is_taken_by_power_of_two_repeating_rgb565() {
+        let texels = [Rgb565::BLACK; 128 * 64];
+        let rgb888 = [Rgb888::BLACK; 64 * 64];
+        let tiled = |t: Texture<'_>| Sampler::new(&t).tiled565().map(|(_, bits)| bits);
+        let rgb565 = |w: u16, h: u16| Texture::new(Texels::from(&texels[..]), w, h).unwrap();
+        assert_eq!(tiled(rgb565(64, 64)), Some([6, 6]));
+        assert_eq!(tiled(rgb565(128, 32)), Some([7, 5]));
+        assert_eq!(tiled(rgb565(2, 2)), Some([1, 1]));
+        for (w, h) in [(1, 64), (64, 1), (48, 64), (64, 48), (3, 3)] {
+            assert_eq!(tiled(rgb565(w, h)), None, "{w}x{h}");
+        }
+        let square = rgb565(64, 64).with_mapping(Mapping::Affine).with_run(4);
+        assert_eq!(tiled(square), Some([6, 6]));
+        assert_eq!(tiled(square.with_wrap(Wrap::Clamp)), None);
+        assert_eq!(tiled(square.with_filter(Filter::Bilinear)), None);
+        let other = Texture::new(Texels::from(&rgb888[..]), 64, 64).unwrap();
+        assert_eq!(tiled(other), None);
+    }
 
     /// Every format reads the colour it stores, and Rgb565 bytes read as the colour does.
     #[test]

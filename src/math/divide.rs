@@ -188,8 +188,9 @@ const MAX_SHIFT: u32 = 14;
 /// q·d + r`, it is `q · 2^s + ⌊(r · 2^s + ⌊d/2⌋) / d⌋`, and for `s ≤ 14`, `r · 2^s + ⌊d/2⌋` lies
 /// below `2¹⁷ · 2¹⁴ + 2¹⁶`, a 32-bit word; a longer shift takes the remainder on in two steps
 /// (`r · 2¹⁴ = q₂·d + r₂`, then `r₂` shifted by the rest). This is the magnitude [`div_round`]
-/// rounds for a numerator `±m · 2^s`: the depth gradients of most small triangles (a numerator
-/// below 2³² shifted by 14) in two divides, their colour gradients (shifted by 27) in three.
+/// rounds for a numerator `±m · 2^s`: the steps of a small triangle's word walks (see
+/// [`DivideBy::round_shifted_i32`]), its depth and texture coordinates (numerators shifted by
+/// 5 and 8) in two divides, its colour channels (shifted by 21) in three.
 #[inline(always)]
 const fn shifted_by_short(m: u32, s: u32, d: u32) -> u64 {
     let (q, r) = (m / d, m % d);

@@ -242,7 +242,7 @@ pub struct PerspectiveCursor {
     hi: [u8; 3],
 }
 
-/// The bits of the shortened divisor of [`Estimate`]'s form for cores with a divide instruction.
+/// The most bits of [`Estimate`]'s shortened divisor on cores with a divide instruction.
 const SHORT_DIVISOR_BITS: u32 = 22;
 
 /// The largest denominator [`perspective_channel`] takes (a triangle's lie below 2⁴⁵): its
