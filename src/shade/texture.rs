@@ -70,10 +70,11 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         let sampler = Sampler::new(texture);
         let [u0, v0] = uv[0];
         let base = texture_coords(u0, v0, sampler.repeats());
-        // Differences from vertex 0 (t runs down: 1 − v), Q16.16, held within the spread.
+        // Differences from vertex 0 (t runs down: 1 − v), Q16.16, held within the spread: in
+        // [−2²⁵, 2²⁵), a signed 26-bit range, which one saturating instruction clamps to.
         // Written out: at the firmware's opt-level "s" an array's `map` stays a loop.
         let [_, [ua, va], [ub, vb]] = *uv;
-        let d = |from: i32, to: i32| to.saturating_sub(from).clamp(-SPREAD_UV, SPREAD_UV);
+        let d = |from: i32, to: i32| to.saturating_sub(from).clamp(-SPREAD_UV, SPREAD_UV - 1);
         let (s1, s2, t1, t2) = (d(u0, ua), d(u0, ub), d(va, v0), d(vb, v0));
         let gains = sampler.gains(depths);
         let perspective = match (texture.mapping(), depths_for_q) {
