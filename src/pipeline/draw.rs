@@ -14,7 +14,7 @@ use crate::buffer::{
     ScreenTriangle, TargetColor,
 };
 use crate::math::{map3, Mat4, Normalize, NARROW_CORE};
-use crate::mesh::{FaceNormal, Object, Triangle};
+use crate::mesh::{FaceNormal, Object, Triangle, Uv};
 use crate::raster::{line_pixels, PixelRect, ScreenPoint};
 use crate::scene::{LightColor, Lighting};
 use crate::shade::{FaceInputs, Paint, PaintUser, Shading};
@@ -163,9 +163,14 @@ impl<const N: usize> ObjectSetup<'_, N> {
     /// The UV of vertex `index`, raw Q16.16 (zero where the mesh has none).
     #[inline(always)]
     fn uv(&self, index: u16) -> [i32; 2] {
+        uv_of(self.object.mesh.uvs().unwrap_or(&[]), index)
+    }
+
+    /// The UVs of a triangle's vertices (see [`uv`](Self::uv)), the mesh's read once.
+    #[inline(always)]
+    fn uvs(&self, tri: &Triangle) -> [[i32; 2]; 3] {
         let uvs = self.object.mesh.uvs().unwrap_or(&[]);
-        uvs.get(index as usize)
-            .map_or([0; 2], |[u, v]| [u.to_bits(), v.to_bits()])
+        map3(*tri, |i| uv_of(uvs, i))
     }
 
     fn clip_from_model(&self) -> Mat4 {
@@ -203,6 +208,13 @@ impl<const N: usize> ObjectSetup<'_, N> {
             },
         }
     }
+}
+
+/// UV `index` of `uvs`, raw Q16.16 (zero past their end).
+#[inline(always)]
+fn uv_of(uvs: &[Uv], index: u16) -> [i32; 2] {
+    uvs.get(index as usize)
+        .map_or([0; 2], |[u, v]| [u.to_bits(), v.to_bits()])
 }
 
 /// Rows `[ceil((min−8)/16), ceil((max−8)/16))` of a triangle overlap the clip's rows.
@@ -390,7 +402,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     NO_VARYINGS.rgb
                 },
                 uv: if S::TEXTURED {
-                    uv = tri.map(|i| setup.uv(i));
+                    uv = setup.uvs(tri);
                     &uv
                 } else {
                     NO_VARYINGS.uv
