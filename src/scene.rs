@@ -344,9 +344,6 @@ pub struct Lighting<const N: usize> {
     ambient: LightColor,
     lights: heapless::Vec<PreparedLight, N>,
     points: heapless::Vec<PreparedPoint, N>,
-    /// True while the ambient colour and every directional light are grey (equal channels) and
-    /// there is no point light: Lambert then sums one channel for all three.
-    grey: bool,
     /// True while every channel of the ambient colour and of every light lies in [0, 1] (the
     /// usual lights): Lambert's sums then fit words (see
     /// [`channels_in_words`](Self::channels_in_words)).
@@ -366,7 +363,6 @@ impl<const N: usize> Lighting<N> {
             ambient,
             lights: heapless::Vec::new(),
             points: heapless::Vec::new(),
-            grey: r == g && g == b,
             unit: unit_channel(r as i64) && unit_channel(g as i64) && unit_channel(b as i64),
         }
     }
@@ -383,8 +379,6 @@ impl<const N: usize> Lighting<N> {
             return Err(LightError::Full);
         }
         self.lights.push(prepared).map_err(|_| LightError::Full)?;
-        let [r, g, b] = prepared.color;
-        self.grey &= r == g && g == b;
         self.unit &= prepared.color.iter().all(|&c| unit_channel(c.into()));
         Ok(())
     }
@@ -400,7 +394,6 @@ impl<const N: usize> Lighting<N> {
         }
         let prepared = PreparedPoint::new(&light);
         self.points.push(prepared).map_err(|_| LightError::Full)?;
-        self.grey = false;
         self.unit &= prepared.color.iter().all(|&c| unit_channel(c.into()));
         Ok(())
     }
@@ -474,12 +467,6 @@ impl<const N: usize> Lighting<N> {
         self.points.iter().take(if POINT_LIGHT { N } else { 0 })
     }
 
-    /// True when the ambient colour and every directional light are grey, there is no point
-    /// light, and the sums fit words ([`channels_in_words`](Self::channels_in_words)).
-    pub(crate) fn grey_in_words(&self) -> bool {
-        self.grey && self.channels_in_words()
-    }
-
     /// True when every channel lies in [0, 1] and there are at most 2¹³ lights: a light's term
     /// (its channel times a cosine below 2³¹ in Q2.30) is then below 2¹⁷ in Q16.16, and the
     /// ambient and all terms of a channel sum below 2³¹.
@@ -511,7 +498,6 @@ impl<const N: usize> Lighting<N> {
             ambient: self.ambient,
             lights,
             points: heapless::Vec::new(),
-            grey: self.grey,
             unit: self.unit,
         })
     }

@@ -30,18 +30,7 @@ fn lambert_by<const N: usize>(
     at: &[i64; 3],
     cosine: impl Fn(&[i32; 3]) -> i32,
 ) -> Rgb888 {
-    if lighting.grey_in_words() {
-        // Grey ambient and lights in [0, 1] (the usual kind): one sum in a word serves the
-        // three channels, each term below 2¹⁷ and the sum below 2³¹.
-        let ambient = lighting.ambient().r.to_bits();
-        let s = lighting.lights().fold(ambient, |s, light| {
-            let d = cosine(&light.direction);
-            s.wrapping_add(term_in_words(light.color[0] as u32, d as u32) as i32)
-        });
-        let s = s.clamp(0, 1 << 16);
-        return Rgb888::new(lit(base.r(), s), lit(base.g(), s), lit(base.b(), s));
-    }
-    // Otherwise a sum per channel, from the cosines gathered here: the directional lights',
+    // A sum per channel, from the cosines gathered here: the directional lights',
     // then the point lights' (together at most N).
     let mut cosines = [0; N];
     let mut slots = cosines.iter_mut();
@@ -448,9 +437,8 @@ mod tests {
         assert_eq!(lambert(base, Some([0, 1 << 30, 0]), &[0; 3], &hot), base);
     }
 
-    /// The sums in words (every channel in [0, 1]; one sum for grey lights) equal the sums in
-    /// 64 bits, for one to three lights, grey and coloured; an overbright light takes the
-    /// 64-bit sums.
+    /// The sums in words (every channel in [0, 1]) equal the sums in 64 bits, for one to three
+    /// lights, grey and coloured; an overbright light takes the 64-bit sums.
     #[test]
     fn sums_in_words_equal_the_wide_sums() {
         let color = |r: f64, g: f64, b: f64| {
@@ -493,8 +481,6 @@ mod tests {
                     lighting.push(light).unwrap();
                 }
                 assert_eq!(lighting.channels_in_words(), !overbright);
-                // The first set is grey: one sum for the three channels.
-                assert_eq!(lighting.grey_in_words(), k == 0 && !overbright);
                 for _ in 0..5_000 {
                     let v = [(); 3].map(|_| rng.within(1 << 20) as i64);
                     let n = normalize(v);
