@@ -262,8 +262,6 @@ impl Frame {
                 } else {
                     let c = match &split {
                         Some(h) => h.transform(p.to_bits()),
-                        // Known short (`fits` implies the extent below 2²⁹).
-                        None if fits => clip_from_model.transform_short(p.to_bits()),
                         None => clip_from_model.transform_within(p.to_bits(), extent),
                     };
                     outcode_and_project(c, &map, fits, known)
