@@ -262,9 +262,9 @@ pub struct Texture<'a> {
     mapping: Mapping,
     /// Pixels between exact divisions along a span (at least 1).
     run: u8,
-    /// The sides' bits where both are powers of two from 2 up, else zeros (see
-    /// `Sampler::tiled565`): found once here rather than for each triangle.
-    tile_bits: [u8; 2],
+    /// How triangles read it: made with the texture and again at each change of it, so that
+    /// each textured triangle refers to it rather than making its own.
+    sampler: Sampler<'a>,
 }
 
 impl<'a> Texture<'a> {
@@ -281,7 +281,7 @@ impl<'a> Texture<'a> {
                 given: texels.len(),
             });
         }
-        Ok(Texture {
+        let texture = Texture {
             texels,
             width,
             height,
@@ -289,28 +289,29 @@ impl<'a> Texture<'a> {
             filter: Filter::Nearest,
             mapping: Mapping::Perspective,
             run: RUN,
-            tile_bits: if width > 1
-                && height > 1
-                && width.is_power_of_two()
-                && height.is_power_of_two()
-            {
-                [width.trailing_zeros() as u8, height.trailing_zeros() as u8]
-            } else {
-                [0; 2]
-            },
-        })
+            sampler: Sampler::EMPTY,
+        };
+        Ok(texture.sampled())
+    }
+
+    /// The texture with its sampler made from its other fields.
+    const fn sampled(self) -> Self {
+        Texture {
+            sampler: Sampler::new(&self),
+            ..self
+        }
     }
 
     /// With `wrap` outside [0, 1).
     #[must_use]
     pub const fn with_wrap(self, wrap: Wrap) -> Self {
-        Texture { wrap, ..self }
+        Texture { wrap, ..self }.sampled()
     }
 
     /// Sampled by `filter`.
     #[must_use]
     pub const fn with_filter(self, filter: Filter) -> Self {
-        Texture { filter, ..self }
+        Texture { filter, ..self }.sampled()
     }
 
     /// Mapped by `mapping`.
@@ -325,7 +326,7 @@ impl<'a> Texture<'a> {
     #[must_use]
     pub const fn with_run(self, pixels: u8) -> Self {
         let run = if pixels == 0 { 1 } else { pixels };
-        Texture { run, ..self }
+        Texture { run, ..self }.sampled()
     }
 
     /// Width in texels.
@@ -375,7 +376,7 @@ impl<'a> Texture<'a> {
     /// light.
     #[must_use]
     pub fn sample(&self, u: i32, v: i32) -> Rgb888 {
-        let sampler = Sampler::new(self);
+        let sampler = &self.sampler;
         let scale = sampler.gains([255; 3]).map(|g| g * 255);
         let [r, g, b] = sampler.lit(texture_coords(u, v, sampler.repeats()), scale);
         Rgb888::new(r, g, b)
@@ -427,7 +428,7 @@ pub(crate) fn rgb565_channels(v: u16) -> [u32; 3] {
 /// the four nearest blended. It repeats [`Texels`]' variants on purpose: one flat tag for
 /// format and filter, so that one match a pixel decides both (a flag beside `Texels`, or an
 /// `Option<Texels>`, measured slower in the span loop).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 enum Read<'a> {
     Rgb565(&'a [Rgb565]),
     Bgr565(&'a [Bgr565]),
@@ -438,9 +439,9 @@ enum Read<'a> {
     Bilinear,
 }
 
-/// A texture as each triangle's paint reads it (copied into the paint: the texels' slice,
-/// the sides and how they are read).
-#[derive(Clone, Copy, Debug)]
+/// A texture as each triangle's paint reads it: the texels' slice, the sides and how they are
+/// read, found from the texture's settings once (the texture keeps it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) struct Sampler<'a> {
     texels: Texels<'a>,
     read: Read<'a>,
@@ -451,18 +452,37 @@ pub(crate) struct Sampler<'a> {
     mask: i32,
     /// Pixels between exact divisions along a span (perspective, at least 1).
     pub(crate) run: u8,
-    /// The texture's tiled sides' bits, copied (see [`tiled565`](Self::tiled565)).
+    /// The sides' bits where both are powers of two from 2 up, else zeros (see
+    /// [`tiled565`](Self::tiled565)).
     tile_bits: [u8; 2],
 }
 
 impl<'a> Sampler<'a> {
+    /// A sampler of no texels (for a texture being made).
+    const EMPTY: Self = Sampler {
+        texels: Texels::Gray8(&[]),
+        read: Read::Gray8(&[]),
+        width: 1,
+        height: 1,
+        mask: -1,
+        run: 1,
+        tile_bits: [0; 2],
+    };
+
+    /// The texture's sampler.
     #[inline(always)]
-    pub(crate) fn new(texture: &Texture<'a>) -> Self {
+    pub(crate) fn of(texture: &'a Texture<'a>) -> &'a Self {
+        &texture.sampler
+    }
+
+    /// The sampler of `texture`'s settings (its own sampler aside).
+    const fn new(texture: &Texture<'a>) -> Self {
+        // `Texture::new` takes no side of 0.
         Sampler {
             texels: texture.texels,
-            width: u32::from(texture.width).max(1),
-            height: u32::from(texture.height).max(1),
-            mask: if texture.wrap == Wrap::Repeat {
+            width: texture.width as u32,
+            height: texture.height as u32,
+            mask: if matches!(texture.wrap, Wrap::Repeat) {
                 COORD_ONE - 1
             } else {
                 -1
@@ -477,7 +497,18 @@ impl<'a> Sampler<'a> {
                 (_, Texels::Rgb565Be(s)) => Read::Rgb565Be(s),
             },
             run: texture.run,
-            tile_bits: texture.tile_bits,
+            tile_bits: if texture.width > 1
+                && texture.height > 1
+                && texture.width.is_power_of_two()
+                && texture.height.is_power_of_two()
+            {
+                [
+                    texture.width.trailing_zeros() as u8,
+                    texture.height.trailing_zeros() as u8,
+                ]
+            } else {
+                [0; 2]
+            },
         }
     }
 
@@ -605,12 +636,15 @@ mod tests {
 
     /// The tiled form is taken exactly by repeating, nearest-read Rgb565 textures whose sides
     /// are both powers of two from 2 up, with the sides' bits, whatever the builder methods
-    /// change after `Texture::new`.
+    /// change after `Texture::new`; the sampler a texture keeps is the one its settings make.
     #[test]
     fn tiled_form_is_taken_by_power_of_two_repeating_rgb565() {
         let texels = [Rgb565::BLACK; 128 * 64];
         let rgb888 = [Rgb888::BLACK; 64 * 64];
-        let tiled = |t: Texture<'_>| Sampler::new(&t).tiled565().map(|(_, bits)| bits);
+        let tiled = |t: Texture<'_>| {
+            assert_eq!(*Sampler::of(&t), Sampler::new(&t));
+            Sampler::of(&t).tiled565().map(|(_, bits)| bits)
+        };
         let rgb565 = |w: u16, h: u16| Texture::new(Texels::from(&texels[..]), w, h).unwrap();
         assert_eq!(tiled(rgb565(64, 64)), Some([6, 6]));
         assert_eq!(tiled(rgb565(128, 32)), Some([7, 5]));

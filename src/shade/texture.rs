@@ -32,7 +32,7 @@ const WALK_SHIFT: u32 = COORD_BITS - 17;
 /// is), in the target's channel depths.
 #[derive(Clone, Debug)]
 pub struct TexturePaint<'t, L> {
-    sampler: Sampler<'t>,
+    sampler: &'t Sampler<'t>,
     light: L,
     /// Per channel, the gain from the texels' depth to the target's (see [`Sampler::gains`]).
     gains: [u32; 3],
@@ -60,14 +60,14 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
     /// after subtracting them (see `FaceInputs::inverse_w_offset`); `None` for an orthographic
     /// one.
     pub(crate) fn new(
-        texture: &Texture<'t>,
+        texture: &'t Texture<'t>,
         p: &[ScreenPoint; 3],
         uv: &[[i32; 2]; 3],
         depths_for_q: Option<(i64, [i32; 3])>,
         area2: i64,
         (light, depths): (L, [u8; 3]),
     ) -> Self {
-        let sampler = Sampler::new(texture);
+        let sampler = Sampler::of(texture);
         let [u0, v0] = uv[0];
         let base = texture_coords(u0, v0, sampler.repeats());
         // Differences from vertex 0 (t runs down: 1 − v), Q16.16, held within the spread: in
@@ -79,7 +79,7 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         let gains = sampler.gains(depths);
         let perspective = match (texture.mapping(), depths_for_q) {
             (Mapping::Perspective, Some((offset, z)))
-                if !nearly_affine(offset, z, texel_range([s1, s2], [t1, t2], &sampler)) =>
+                if !nearly_affine(offset, z, texel_range([s1, s2], [t1, t2], sampler)) =>
             {
                 Some((offset, z))
             }
@@ -511,7 +511,7 @@ mod tests {
     fn nearly_affine_triangles_err_below_an_eighth_of_a_texel() {
         let texels = [Rgb565::BLACK; 64 * 32];
         let texture = Texture::new(Texels::Rgb565(&texels), 64, 32).unwrap();
-        let sampler = Sampler::new(&texture);
+        let sampler = Sampler::of(&texture);
         let mut rng = XorShift(0x2545_F491_4F6C_DD1D);
         let (mut affine, mut tried) = (0, 0);
         for _ in 0..4_000 {
@@ -523,7 +523,7 @@ mod tests {
             let z = [0; 3].map(|_: i32| far - rng.within(spread).abs());
             let offset = i64::from(far) + i64::from(far >> rng.pick(&[0, 3, 6]));
             tried += 1;
-            if !nearly_affine(offset, z, texel_range([s1, s2], [t1, t2], &sampler)) {
+            if !nearly_affine(offset, z, texel_range([s1, s2], [t1, t2], sampler)) {
                 continue;
             }
             affine += 1;
@@ -560,13 +560,13 @@ mod tests {
         assert!(nearly_affine(
             offset,
             z,
-            texel_range([ten, ten], [0, 0], &sampler)
+            texel_range([ten, ten], [0, 0], sampler)
         ));
         // Ten texels on either side: twenty across, and the bound no longer holds.
         assert!(!nearly_affine(
             offset,
             z,
-            texel_range([ten, -ten], [0, 0], &sampler)
+            texel_range([ten, -ten], [0, 0], sampler)
         ));
     }
 }
