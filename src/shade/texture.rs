@@ -34,9 +34,9 @@ const WALK_SHIFT: u32 = COORD_BITS - 17;
 pub struct TexturePaint<'t, L> {
     sampler: &'t Sampler<'t>,
     light: L,
-    /// Per channel, the gain from the texels' depth to the target's (see [`Sampler::gains`]).
-    gains: [u32; 3],
-    /// A solid light's scales (see [`Sampler::lit`]).
+    /// A solid light's scales (see [`Sampler::lit`]); for another light, per channel, the gain
+    /// from the texels' depth to the target's (see [`Sampler::gains`]), which each pixel's light
+    /// scales.
     scale: [u32; 3],
     /// Vertex 0's texture coordinates.
     base: [i32; 2],
@@ -89,9 +89,11 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
         // perspective variant, far larger, only where needed.
         let mut paint = TexturePaint {
             sampler,
-            scale: scales(light.solid().unwrap_or(Rgb888::WHITE), gains),
+            scale: match light.solid().filter(|_| L::SOLID) {
+                Some(solid) => scales(solid, gains),
+                None => gains,
+            },
             light,
-            gains,
             base,
             coords: Coords::Walks(if perspective.is_none() {
                 let by_area = AreaWalks::new(area2);
@@ -210,7 +212,7 @@ pub struct TextureCursor<'p, 't, L: Paint> {
     /// Pixels the current run has left (perspective: at none, the next pixel starts the next
     /// run), or more than any span has.
     left: u32,
-    /// The paint's solid light's scales, copied once a span (read at every pixel).
+    /// The paint's scales (see [`TexturePaint`]), copied once a span (read at every pixel).
     scale: [u32; 3],
 }
 
@@ -321,7 +323,7 @@ impl<L: Paint> Iterator for TextureCursor<'_, '_, L> {
         let scale = if L::SOLID {
             self.scale
         } else {
-            scales(self.light.next().unwrap_or(Rgb888::WHITE), paint.gains)
+            scales(self.light.next().unwrap_or(Rgb888::WHITE), paint.scale)
         };
         let [r, g, b] = paint.sampler.lit(self.c, scale);
         let [s, t] = self.c;
@@ -415,8 +417,7 @@ pub struct TiledCursor<'p, L: Paint + 'p> {
     /// index (the width's bits).
     shifts: (u32, u32, u32),
     light: L::Cursor<'p>,
-    gains: [u32; 3],
-    /// The solid light's scales (see [`TextureCursor`]).
+    /// The paint's scales or gains (see [`TexturePaint`]).
     scale: [u32; 3],
     c: [i32; 2],
     step: [i32; 2],
@@ -441,7 +442,6 @@ impl<'t, L: Paint> Paint for TiledPaint<'_, 't, L> {
             texels: self.texels,
             shifts: self.shifts,
             light: paint.light.cursor(span),
-            gains: paint.gains,
             scale: paint.scale,
             c,
             step,
@@ -457,7 +457,7 @@ impl<L: Paint> Iterator for TiledCursor<'_, L> {
         let scale = if L::SOLID {
             self.scale
         } else {
-            scales(self.light.next().unwrap_or(Rgb888::WHITE), self.gains)
+            scales(self.light.next().unwrap_or(Rgb888::WHITE), self.scale)
         };
         let [s, t] = self.c;
         let (across, down, row) = self.shifts;
