@@ -30,8 +30,8 @@ fn lambert_by<const N: usize>(
     at: &[i64; 3],
     cosine: impl Fn(&[i32; 3]) -> i32,
 ) -> Rgb888 {
-    // A sum per channel, from the cosines gathered here: the directional lights',
-    // then the point lights' (together at most N).
+    // A sum per channel, from the cosines gathered here: the directional lights', then the
+    // point lights' (together at most N).
     let mut cosines = [0; N];
     let mut slots = cosines.iter_mut();
     for (light, d) in lighting.lights().zip(slots.by_ref()) {

@@ -123,8 +123,8 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
 }
 
 /// The walk of one texture coordinate whose vertex values are `base` plus `0`, `d1` and `d2`
-/// (differences from vertex 0's, Q16.16, within ±2²⁵): the differences made positive (within
-/// [0, 2²⁶]), walked doubled and shifted into texture coordinates, with a bias that makes
+/// (differences from vertex 0's, Q16.16, in [−2²⁵, 2²⁵)): the differences made positive (in
+/// [0, 2²⁶)), walked doubled and shifted into texture coordinates, with a bias that makes
 /// vertex 0's walk value its own coordinate.
 #[inline(always)]
 fn coordinate_walk(
@@ -347,7 +347,9 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
     /// The tiled form where the texture and the mapping allow it (see [`TiledPaint`]).
     #[inline(always)]
     fn visit<U: PaintUser>(&self, user: U) -> U::Output {
-        // The texels cut to the image's own (a texture holds at least those).
+        // The texels cut to the image's own (a texture holds at least those), here rather than
+        // once in the sampler: the span loop then sees their number as the power of two it
+        // masks an index by, and needs no bounds test (kept in the sampler, it measured slower).
         let tiled = self.sampler.tiled565().and_then(|(texels, [w, h])| {
             let texels = texels.get(..1usize << ((w + h) & 31))?;
             Some((texels, [w, h]))
