@@ -61,11 +61,12 @@ def executed(log, is_call, start):
     library calls counted by calling block: a block of a library routine entered from a block
     that `is_call(previous, pc)` accepts.
 
-    A block's address may be translated more than once, and not always to the same length:
-    under `-icount` QEMU also translates blocks cut short to the instructions left in the
-    budget. Each run is counted against the translation current when it ran."""
+    A block's address may have more than one translation at once, of different lengths: under
+    `-icount` QEMU also translates blocks cut short to the instructions left in the budget, and
+    keeps them beside the whole ones. A translation is told apart by its address and its
+    compile flags (which hold the cut's length), as each run's trace line gives them; a run is
+    counted against the translation of both."""
     blocks, current, addrs = {}, None, []
-    version = collections.Counter()
     runs = collections.Counter()
     calls = collections.Counter()
     previous = None
@@ -79,15 +80,20 @@ def executed(log, is_call, start):
                     current = a
                 addrs.append(a)
             elif line.startswith(b"Trace"):
+                # "Trace 0: <host code> [cs_base/pc/flags/cflags] symbol"
+                fields = line.split(b"[", 1)[1].split(b"]", 1)[0].split(b"/")
+                pc = int(fields[1], 16)
+                key = (pc, fields[3])
                 if current is not None:
-                    version[current] += 1
-                    blocks[(current, version[current])], current = addrs, None
-                pc = int(line.split(b"/")[1], 16)
+                    # The block just translated is the one this line runs.
+                    if current == pc:
+                        blocks[key] = addrs
+                    current = None
                 if start is not None:
                     if pc != start:
                         continue
                     start = None
-                runs[(pc, version[pc])] += 1
+                runs[key] += 1
                 if previous is not None and is_call(previous, pc):
                     calls[(pc, previous)] += 1
                 previous = pc
