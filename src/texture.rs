@@ -107,7 +107,7 @@ impl<'a> Texels<'a> {
 impl Texels<'_> {
     /// The largest value of each channel: 31, 63 and 31 for 16-bit formats, 255 for others.
     #[inline(always)]
-    pub(crate) fn depths(&self) -> [u8; 3] {
+    pub(crate) const fn depths(&self) -> [u8; 3] {
         match self {
             Texels::Rgb565(_) | Texels::Bgr565(_) | Texels::Rgb565Be(_) => [31, 63, 31],
             _ => [255; 3],
@@ -455,6 +455,9 @@ pub(crate) struct Sampler<'a> {
     /// The sides' bits where both are powers of two from 2 up, else zeros (see
     /// [`tiled565`](Self::tiled565)).
     tile_bits: [u8; 2],
+    /// Whether the texels' channels are 16-bit colours' (depths 31, 63, 31), not 8 bits:
+    /// decided once here, for each triangle's [`gains`](Self::gains).
+    sixteen_bit: bool,
 }
 
 impl<'a> Sampler<'a> {
@@ -467,6 +470,7 @@ impl<'a> Sampler<'a> {
         mask: -1,
         run: 1,
         tile_bits: [0; 2],
+        sixteen_bit: false,
     };
 
     /// The texture's sampler.
@@ -509,6 +513,7 @@ impl<'a> Sampler<'a> {
             } else {
                 [0; 2]
             },
+            sixteen_bit: matches!(texture.texels.depths(), [31, 63, 31]),
         }
     }
 
@@ -529,9 +534,10 @@ impl<'a> Sampler<'a> {
     #[inline(always)]
     pub(crate) fn gains(&self, target: [u8; 3]) -> [u32; 3] {
         let [r, g, b] = target;
-        match self.texels.depths() {
-            [31, 63, 31] => [gain(r, 31), gain(g, 63), gain(b, 31)],
-            _ => [gain(r, 255), gain(g, 255), gain(b, 255)],
+        if self.sixteen_bit {
+            [gain(r, 31), gain(g, 63), gain(b, 31)]
+        } else {
+            [gain(r, 255), gain(g, 255), gain(b, 255)]
         }
     }
 

@@ -673,6 +673,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             normal_matrix,
             normalize: self.frame.precision.normalize(),
             vertices: v,
+            screen: &p,
             // Read by per-vertex shading only: for the others the argument is dead, and the
             // compiler drops it from the call.
             colors: if S::PER_VERTEX {

@@ -79,9 +79,9 @@ impl Plane {
         })
     }
 
-    /// The numerators of the gradients along x and y of the plane through `(p[i], v[i])`
-    /// (every `v[i]` in [0, 2³⁰], coordinates within the pipeline's ±(2¹⁵ − 16)), over the
-    /// doubled signed area: exact, within ±2⁴⁷, from 32-bit differences and short products.
+    /// The numerators of the gradients along x and y of the plane through `(p[i], v[i])` (`v[1]`
+    /// and `v[2]` within 2³⁰ of `v[0]`, coordinates within the pipeline's ±(2¹⁵ − 16)), over
+    /// the doubled signed area: exact, within ±2⁴⁷, from 32-bit differences and short products.
     #[inline(always)]
     pub(crate) fn numerators(p: &[ScreenPoint; 3], v: [i32; 3]) -> (i64, i64) {
         let [a, b, c] = *p;
@@ -205,7 +205,7 @@ impl AreaDivisor {
 /// and its value at a reference pixel beside the first vertex (the pixel whose column holds
 /// the vertex, on the first row at or below it) from the vertex's own value and those steps,
 /// kept as its value at pixel (0, 0) modulo 2³². The values walked are twice the plane's (for
-/// vertex values `v` in [0, 2³⁰]) plus a `bias`.
+/// vertex values `v` within 2³⁰ of each other) plus a `bias`.
 ///
 /// Each rounded step errs by at most half a unit, so the value at pixel `(x, y)` errs from the
 /// exact one by at most `(|x − x_r| + |y − y_r|) / 2 + 5/4` units: below 2¹² + 2 for the
@@ -239,10 +239,12 @@ impl AreaWalks {
         AreaWalks { area, short }
     }
 
-    /// The walk of the plane through `(p[i], v[i] · 2^shift)` (each of those in [0, 2³⁰]; the
-    /// `v[i]` below 2¹⁴ where `shift` is 16 or more) with `bias` added; `None` where its steps
-    /// do not fit 32 bits (a triangle nearly edge-on). Shifting the values rather than the
-    /// numerators keeps those short (colour channels, with 6 fraction bits, are shifted by 16).
+    /// The walk of the plane through `(p[i], v[i] · 2^shift)` with `bias` added, for `v[1]` and
+    /// `v[2]` within 2³⁰ of `v[0]` (depths and colour channels in [0, 2³⁰], or a texture
+    /// coordinate's differences from vertex 0's with `v[0]` 0), in [0, 2¹⁴) where `shift` is 16
+    /// or more; `None` where its steps do not fit 32 bits (a triangle nearly edge-on). Shifting
+    /// the values rather than the numerators keeps those short (colour channels, with 6
+    /// fraction bits, are shifted by 16).
     #[inline(always)]
     pub(crate) fn walk(
         &self,
@@ -530,7 +532,7 @@ mod tests {
     }
 
     /// The numerators are the exact ones: at the corners of the range (coordinates ±2¹⁵,
-    /// values 0 and 2³⁰) and at random.
+    /// values 0 and 2³⁰, or differences of ±2³⁰ from 0) and at random.
     #[test]
     fn numerators_are_exact() {
         let cases = numerator_cases(
@@ -538,7 +540,14 @@ mod tests {
             0x9E37_79B9_7F4A_7C15,
             |rng| rng.within(1 << 29) + (1 << 29),
         );
-        for (p, v) in cases {
+        // And differences from a vertex 0 of 0 (a texture coordinate's), of either sign.
+        let differences = numerator_cases(
+            [-(1 << 30), 1 << 30, -1, (1 << 30) - 1],
+            0xBB67_AE85_84CA_A73B,
+            |rng| rng.within(1 << 30),
+        )
+        .map(|(p, v)| (p, [0, v[1], v[2]]));
+        for (p, v) in cases.chain(differences) {
             let exact = (
                 (v[1] - v[0]) as i64 * (p[2].y - p[0].y) as i64
                     - (v[2] - v[0]) as i64 * (p[1].y - p[0].y) as i64,

@@ -59,6 +59,8 @@ pub struct FaceInputs<'a> {
     pub(crate) normalize: Normalize,
     /// Per vertex: snapped screen position and depth (Q1.30).
     pub(crate) vertices: &'a [(ScreenPoint, i32); 3],
+    /// The snapped screen positions alone, as the triangle walk takes them.
+    pub(crate) screen: &'a [ScreenPoint; 3],
     /// Per vertex: lit colour, whole channels 0..=255 (Gouraud; zeros for other shadings).
     pub(crate) colors: &'a [[i32; 3]; 3],
     /// Per vertex: UV, raw Q16.16 (textured shadings; zeros for the others).
@@ -101,10 +103,6 @@ impl<'a> FaceInputs<'a> {
         });
         let w = self.model_matrix.transform_within(mean, self.extents.0);
         [w[0], w[1], w[2]]
-    }
-
-    fn screen(&self) -> [ScreenPoint; 3] {
-        map3(*self.vertices, |v| v.0)
     }
 
     fn vertex_rgb(&self) -> [[i32; 3]; 3] {
@@ -247,7 +245,7 @@ impl<'t, L: Shading> Textured<'t, L> {
     fn across<P: Paint>(&self, face: &FaceInputs<'_>, light: P) -> TexturePaint<'t, P> {
         TexturePaint::new(
             self.texture,
-            &face.screen(),
+            face.screen,
             face.uvs,
             Self::depths_for_q(face),
             face.area2,
@@ -336,7 +334,7 @@ impl Shading for Gouraud {
     }
     const PER_VERTEX: bool = true;
     fn paint<const N: usize>(&self, face: &FaceInputs<'_>, _: &Lighting<N>) -> SmoothPaint {
-        SmoothPaint::new(&face.screen(), face.vertex_rgb(), face.area2, face.channels)
+        SmoothPaint::new(face.screen, face.vertex_rgb(), face.area2, face.channels)
     }
 }
 
@@ -352,6 +350,6 @@ impl Shading for PerspectiveGouraud {
             Some(offset) => map3(*face.vertices, |v| offset.saturating_sub(v.1 as i64)),
             None => [1; 3],
         };
-        PerspectivePaint::new(&face.screen(), face.vertex_rgb(), q, face.area2)
+        PerspectivePaint::new(face.screen, face.vertex_rgb(), q, face.area2)
     }
 }

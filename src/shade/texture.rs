@@ -123,9 +123,8 @@ impl<'t, L: Paint> TexturePaint<'t, L> {
 }
 
 /// The walk of one texture coordinate whose vertex values are `base` plus `0`, `d1` and `d2`
-/// (differences from vertex 0's, Q16.16, in [−2²⁵, 2²⁵)): the differences made positive (in
-/// [0, 2²⁶)), walked doubled and shifted into texture coordinates, with a bias that makes
-/// vertex 0's walk value its own coordinate.
+/// (differences from vertex 0's, Q16.16, in [−2²⁵, 2²⁵)): the differences walked doubled and
+/// shifted into texture coordinates, from vertex 0's own coordinate.
 #[inline(always)]
 fn coordinate_walk(
     by_area: &AreaWalks,
@@ -133,12 +132,7 @@ fn coordinate_walk(
     (d1, d2): (i32, i32),
     base: i32,
 ) -> WordPlane {
-    let v = [
-        SPREAD_UV,
-        d1.wrapping_add(SPREAD_UV),
-        d2.wrapping_add(SPREAD_UV),
-    ];
-    by_area.walk_any(p, v, WALK_SHIFT, base.wrapping_sub(SPREAD as i32))
+    by_area.walk_any(p, [0, d1, d2], WALK_SHIFT, base)
 }
 
 /// The weights `q ∝ 1/w` of vertices at depths `z` (`offset − z`, positive), scaled so that
