@@ -166,11 +166,17 @@ impl<const N: usize> ObjectSetup<'_, N> {
         uv_of(self.object.mesh.uvs().unwrap_or(&[]), index)
     }
 
-    /// The UVs of a triangle's vertices (see [`uv`](Self::uv)), the mesh's read once.
+    /// The UVs of a triangle's vertices (zeros where the mesh has none), the mesh's read once
+    /// and one test of the largest index bounding the three reads (the compiler drops their
+    /// own): a mesh has a UV for each position, and its indices are below their number.
     #[inline(always)]
     fn uvs(&self, tri: &Triangle) -> [[i32; 2]; 3] {
         let uvs = self.object.mesh.uvs().unwrap_or(&[]);
-        map3(*tri, |i| uv_of(uvs, i))
+        let [a, b, c] = *tri;
+        match uvs.get(..=usize::from(a.max(b).max(c))) {
+            Some(uvs) => map3(*tri, |i| uv_of(uvs, i)),
+            None => [[0; 2]; 3],
+        }
     }
 
     fn clip_from_model(&self) -> Mat4 {
