@@ -1,6 +1,8 @@
 //! Attribute planes: depth and colour as linear functions of screen position through the three
 //! snapped vertices (affine in screen space, which is exact for depth after projection).
 
+use core::cell::Cell;
+
 use super::{first_centre_from32, ScreenPoint};
 use crate::math::{
     mul_short, DivideBy, ShortQuotients, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE,
@@ -221,11 +223,15 @@ pub(crate) struct WordPlane {
     pub(crate) sy: i32,
 }
 
-/// The division by a triangle's doubled signed area (non-zero) that its [`WordPlane`]s share:
-/// prepared once on cores without a divide instruction.
+/// The division by a triangle's doubled signed area (non-zero) that its [`WordPlane`]s share,
+/// prepared once: short quotients on cores without a divide instruction, and a [`DivideBy`]
+/// for the other cores (and for the steps short quotients decline).
 pub(crate) struct AreaWalks {
     area: i64,
     short: Option<ShortQuotients>,
+    /// The [`DivideBy`] of the area's magnitude, made by the first walk that needs it and kept
+    /// for the triangle's other walks.
+    by: Cell<Option<DivideBy>>,
 }
 
 impl AreaWalks {
@@ -236,7 +242,24 @@ impl AreaWalks {
         } else {
             None
         };
-        AreaWalks { area, short }
+        AreaWalks {
+            area,
+            short,
+            by: Cell::new(None),
+        }
+    }
+
+    /// The division by the area's magnitude `den`, prepared once.
+    #[inline(always)]
+    fn divide_by(&self, den: i64) -> DivideBy {
+        match self.by.get() {
+            Some(by) => by,
+            None => {
+                let by = DivideBy::new(den);
+                self.by.set(Some(by));
+                by
+            }
+        }
     }
 
     /// The walk of the plane through `(p[i], v[i] · 2^shift)` with `bias` added, for `v[1]` and
@@ -261,7 +284,7 @@ impl AreaWalks {
         } else {
             Plane::numerators(p, v)
         };
-        let (sx, sy) = word_steps(nx, ny, shift, self.area, self.short.as_ref())?;
+        let (sx, sy) = word_steps(nx, ny, shift, self)?;
         let reference = Reference::of(p[0]);
         let offset = reference.offset(sx, sy);
         let at_ref = (v[0] << shift)
@@ -394,16 +417,10 @@ impl Reference {
 /// steps below 2³⁰), by two 15-bit digits each through `short`, the area's magnitude prepared
 /// (fewer instructions than through a reciprocal to 32 bits); elsewhere by [`DivideBy`].
 #[inline(always)]
-fn word_steps(
-    nx: i64,
-    ny: i64,
-    shift: u32,
-    area: i64,
-    short: Option<&ShortQuotients>,
-) -> Option<(i32, i32)> {
-    let (nx, ny, den) = Plane::over_positive_area(nx, ny, area);
+fn word_steps(nx: i64, ny: i64, shift: u32, walks: &AreaWalks) -> Option<(i32, i32)> {
+    let (nx, ny, den) = Plane::over_positive_area(nx, ny, walks.area);
     let shift = shift + 5;
-    if let Some(by) = short {
+    if let Some(by) = &walks.short {
         if let (Some(sx), Some(sy)) = (
             by.round_below_2_30(nx << shift),
             by.round_below_2_30(ny << shift),
@@ -411,7 +428,7 @@ fn word_steps(
             return Some((sx, sy));
         }
     }
-    let by = DivideBy::new(den);
+    let by = walks.divide_by(den);
     Some((
         by.round_shifted_i32(nx, shift)?,
         by.round_shifted_i32(ny, shift)?,
