@@ -358,6 +358,7 @@ impl<'t, L: Paint> Paint for TexturePaint<'t, L> {
                         walks[1].shifted_up(32 - COORD_BITS),
                     ],
                     shifts: (32 - width_bits, 32 - height_bits, width_bits),
+                    half: core::hint::black_box(1 << (SCALE_BITS - 1)),
                 })
             }
             _ => user.with(self),
@@ -400,6 +401,10 @@ pub struct TiledPaint<'p, 't, L> {
     walks: [WordPlane; 2],
     /// See [`TiledCursor`].
     shifts: (u32, u32, u32),
+    /// Half a unit of the scaled channels, a value the compiler does not see: held in a
+    /// register, each channel's rounding then joins its multiply (one multiply-accumulate on
+    /// cores that have it, where a constant took a multiply and an addition).
+    half: u32,
 }
 
 /// The running texture coordinates and light of a [`TiledPaint`] along a span.
@@ -415,6 +420,8 @@ pub struct TiledCursor<'p, L: Paint + 'p> {
     light: L::Cursor<'p>,
     /// The paint's scales or gains (see [`TexturePaint`]).
     scale: [u32; 3],
+    /// Half a unit of the scaled channels, which rounds them (see [`TiledPaint`]).
+    half: u32,
     c: [i32; 2],
     step: [i32; 2],
 }
@@ -439,6 +446,7 @@ impl<'t, L: Paint> Paint for TiledPaint<'_, 't, L> {
             shifts: self.shifts,
             light: paint.light.cursor(span),
             scale: paint.scale,
+            half: self.half,
             c,
             step,
         }
@@ -465,7 +473,7 @@ impl<L: Paint> Iterator for TiledCursor<'_, L> {
             .map_or([0; 3], |&c| rgb565_channels(c.into_storage()));
         // The scaling of `Sampler::lit`, written out in both: shared through a function, even
         // inlined, both loops compiled longer.
-        let half = 1 << (SCALE_BITS - 1);
+        let half = self.half;
         let ch = |k: usize| (raw[k].wrapping_mul(scale[k]).wrapping_add(half) >> SCALE_BITS) as u8;
         let [r, g, b] = [ch(0), ch(1), ch(2)];
         let [ds, dt] = self.step;
