@@ -38,6 +38,12 @@ impl ScreenTriangle {
         ScreenTriangle { p, z, area }
     }
 
+    /// The snapped vertices.
+    #[inline(always)]
+    pub(crate) fn points(&self) -> &[ScreenPoint; 3] {
+        &self.p
+    }
+
     /// Its spans clipped to `clip`, walked as the pipeline's triangles are.
     #[inline(always)]
     fn spans(&self, clip: PixelRect) -> TriangleWalk<PipelineEdge> {

@@ -235,9 +235,7 @@ fn rows_overlap(p: &[ScreenPoint; 3], clip: &PixelRect) -> bool {
 
 fn fill<T: RasterTarget, P: Paint, B: Carrier>(
     target: &mut T,
-    p: [ScreenPoint; 3],
-    z: [i32; 3],
-    area: i64,
+    triangle: &ScreenTriangle,
     paint: &P,
     carries: &mut B,
     stats: &mut Stats,
@@ -245,7 +243,7 @@ fn fill<T: RasterTarget, P: Paint, B: Carrier>(
     bump(&mut stats.drawn);
     paint.visit(Fill {
         target,
-        triangle: &ScreenTriangle::new(p, z, area),
+        triangle,
         carries,
         stats,
     })
@@ -665,7 +663,8 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         if setup.band && !rows_overlap(&p, &target.clip()) {
             return Ok(());
         }
-        let z = map3(*v, |v| v.1);
+        // Made before the paint, which reads its points.
+        let triangle = ScreenTriangle::new(p, map3(*v, |v| v.1), area);
         // Flat shading in model space where the model matrix allows it (see `in_model_space`).
         let lighting = setup.lighting();
         let normal_matrix = (!setup.in_model_space).then_some(&setup.normal_matrix);
@@ -679,7 +678,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             normal_matrix,
             normalize: self.frame.precision.normalize(),
             vertices: v,
-            screen: &p,
+            screen: triangle.points(),
             // Read by per-vertex shading only: for the others the argument is dead, and the
             // compiler drops it from the call.
             colors: if S::PER_VERTEX {
@@ -699,17 +698,10 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         // Gouraud needs per-vertex normals; without them the object is shaded flat.
         if !S::PER_VERTEX || setup.object.mesh.normals().is_some() {
             let paint = self.shading.paint(&face, lighting);
-            fill(target, p, z, area, &paint, carries, stats)
+            fill(target, &triangle, &paint, carries, stats)
         } else {
-            fill(
-                target,
-                p,
-                z,
-                area,
-                &self.shading.fallback(&face, lighting),
-                carries,
-                stats,
-            )
+            let paint = self.shading.fallback(&face, lighting);
+            fill(target, &triangle, &paint, carries, stats)
         }
     }
 
