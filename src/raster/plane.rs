@@ -414,8 +414,9 @@ impl Reference {
 /// The steps `round(32·n·2^shift / area)` of gradient numerators over the doubled signed area
 /// (per pixel, 16 sub-pixels, in units of half the shifted values'), where both fit an i32.
 /// On cores without a divide instruction, for the usual triangle (a doubled area below 2²⁹,
-/// steps below 2³⁰), by two 15-bit digits each through `short`, the area's magnitude prepared
-/// (fewer instructions than through a reciprocal to 32 bits); elsewhere by [`DivideBy`].
+/// steps below 2³⁰), by two 15-bit digits each through the walks' short quotients, the area's
+/// magnitude prepared (fewer instructions than through a reciprocal to 32 bits); elsewhere by
+/// the triangle's [`DivideBy`], made by the first walk that needs it.
 #[inline(always)]
 fn word_steps(nx: i64, ny: i64, shift: u32, walks: &AreaWalks) -> Option<(i32, i32)> {
     let (nx, ny, den) = Plane::over_positive_area(nx, ny, walks.area);
