@@ -15,6 +15,9 @@ The log is large (about 1.5 GB for `full` on the M0) and is deleted afterwards.
 
 With ASM=<part of a function name> it also prints that function's disassembly (llvm-objdump),
 each instruction with the times it ran per frame: the place to read a hot loop.
+With AGAINST=<preset> it profiles both presets on the core and prints what the first runs
+beyond the second, by function and by source line (the harness's code left out): where a
+preset's cost over its base goes, as the `ratio` goals weigh it.
 """
 
 import bisect
@@ -157,10 +160,10 @@ def lines(binary, addresses):
     return found
 
 
-def main():
-    preset = sys.argv[1] if len(sys.argv) > 1 else "full"
-    target = sys.argv[2] if len(sys.argv) > 2 else "thumbv6m-none-eabi"
-    top = int(sys.argv[3]) if len(sys.argv) > 3 else 40
+def profile(preset, target):
+    """Runs `preset` on `target` under the trace: its result line, instructions per address,
+    each address's function and source line, the library calls by callee and calling line,
+    and the binary (all counts over every drawn frame)."""
     binary = build(preset, target, os.path.join(HERE, "target", "profile"))
     symbol, frame = symbols(binary)
     names = {}
@@ -170,7 +173,6 @@ def main():
             names[pc] = symbol(pc)
         return names[pc]
 
-    harness = lambda name: any(h in name for h in HARNESS)
     library = lambda pc: LIBRARY.search(name_of(pc)) is not None
 
     def is_call(previous, pc):
@@ -181,30 +183,78 @@ def main():
         result = trace(binary, target, log)
         count, raw_calls = executed(log, is_call, frame)
     where = lines(binary, sorted(count))
-    per = lambda n: n / FRAMES_DRAWN
-    by_function = collections.Counter()
-    by_line = collections.Counter()
-    for a, n in count.items():
-        by_function[name_of(a)] += n
-        by_line[where[a]] += n
     caller_line = lines(binary, sorted({p for _, p in raw_calls}))
     calls = collections.Counter()
     for (pc, previous), n in raw_calls.items():
         calls[(name_of(pc), caller_line.get(previous, "?"))] += n
-    print(f"{preset} on {target} ({machine(target)}): {' '.join(result)}")
+    by_function = collections.Counter()
+    by_line = collections.Counter()
+    library_lines = collections.Counter()
+    for a, n in count.items():
+        name = name_of(a)
+        by_function[name] += n
+        by_line[where[a]] += n
+        if not harness(name):
+            library_lines[where[a]] += n
+    return {"result": result, "count": count, "where": where, "calls": calls, "binary": binary,
+            "by_function": by_function, "by_line": by_line, "library_lines": library_lines}
+
+
+def harness(name):
+    return any(h in name for h in HARNESS)
+
+
+def per(n):
+    return n / FRAMES_DRAWN
+
+
+def report(preset, target, top):
+    p = profile(preset, target)
+    count = p["count"]
+    print(f"{preset} on {target} ({machine(target)}): {' '.join(p['result'])}")
     print(f"traced instructions per drawn frame, harness included: {per(sum(count.values())):,.0f}\n")
     print("by function:")
-    for name, n in by_function.most_common(top):
+    for name, n in p["by_function"].most_common(top):
         mark = "  (harness)" if harness(name) else ""
         print(f"  {per(n):>11,.0f}  {name[:100]}{mark}")
     print("\nlibrary calls per frame, by the line that makes them (first block of a call):")
-    for (name, line), n in calls.most_common(top):
+    for (name, line), n in p["calls"].most_common(top):
         print(f"  {per(n):>8,.0f}  {name[:40]:40}  {line}")
     print("\nbusiest source lines (inlined code counts where it was written):")
-    for line, n in by_line.most_common(top):
+    for line, n in p["by_line"].most_common(top):
         print(f"  {per(n):>11,.0f}  {line}")
     if os.environ.get("ASM"):
-        disassembly(binary, os.environ["ASM"], lambda a: per(count.get(a, 0)), where)
+        disassembly(p["binary"], os.environ["ASM"], lambda a: per(count.get(a, 0)), p["where"])
+
+
+def compare(preset, base, target, top):
+    """What `preset` runs beyond `base` on one core, per frame: by function and by source line,
+    the harness's code left out, the largest differences either way first."""
+    ours, theirs = profile(preset, target), profile(base, target)
+    for p, name in ((ours, preset), (theirs, base)):
+        print(f"{name} on {target}: {' '.join(p['result'])}")
+
+    def table(title, key):
+        a, b = ours[key], theirs[key]
+        rows = [(per(a[k] - b[k]), per(a[k]), per(b[k]), k) for k in set(a) | set(b)
+                if not (key == "by_function" and harness(k))]
+        rows.sort(key=lambda r: -abs(r[0]))
+        print(f"\n{title}: {preset} less {base}, {preset}, {base}")
+        print(f"  {sum(r[0] for r in rows):>+11,.0f}  (all of them)")
+        for d, x, y, k in rows[:top]:
+            print(f"  {d:>+11,.0f}  {x:>11,.0f}  {y:>11,.0f}  {k[:100]}")
+    table("by function", "by_function")
+    table("by source line (the harness's code left out)", "library_lines")
+
+
+def main():
+    preset = sys.argv[1] if len(sys.argv) > 1 else "full"
+    target = sys.argv[2] if len(sys.argv) > 2 else "thumbv6m-none-eabi"
+    top = int(sys.argv[3]) if len(sys.argv) > 3 else 40
+    if os.environ.get("AGAINST"):
+        compare(preset, os.environ["AGAINST"], target, top)
+    else:
+        report(preset, target, top)
 
 
 def disassembly(binary, part, runs, where):
