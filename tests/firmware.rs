@@ -8,6 +8,10 @@
 #[allow(dead_code)]
 mod scenes;
 
+/// The `variants` preset's `wire-depth` configuration, as its firmware compiles it.
+#[path = "../bench/mcu/src/wire_depth.rs"]
+mod wire_depth;
+
 /// The board firmwares' drawing code (`boards/showcase`), as the `boards` preset runs it.
 #[path = "../boards/showcase/src/scene.rs"]
 #[allow(dead_code)]
@@ -111,7 +115,11 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
             let h = chain(|f| {
                 fb.fill(Rgb565::BLACK);
                 depth.fill(u16::MAX);
-                let word = variant(name, &mesh, &random, f, &mut cache2, &mut fb, &mut depth);
+                let word = if name == "wire-depth" {
+                    wire_depth::wire_depth(&mesh, f, true, &mut cache2, &mut fb, &mut depth)
+                } else {
+                    variant(name, &mesh, &random, f, &mut cache2, &mut fb, &mut depth)
+                };
                 frame_hash(&fb) ^ word.unwrap_or(0)
             });
             (key, h)
@@ -225,6 +233,39 @@ fn host_hashes() -> Vec<(&'static str, u32)> {
     ];
     hashes.extend(variant_hashes);
     hashes
+}
+
+/// The `wire-depth` variant draws what it is there to check: the wireframe (drawn first) and
+/// the solid torus, whose surface hides part of the lines behind it though they were drawn
+/// before it, and which they in turn cross in front of.
+#[test]
+fn wire_depth_variant_hides_the_lines_behind_the_solid() {
+    let (mut p, mut n, mut t) = torus_storage(TORUS_VERTICES, TORUS_TRIANGLES);
+    let mesh = torus_mesh(&mut p, &mut n, &mut t);
+    let mut cache = vec![ScreenVertex::DEFAULT; 2 * TORUS_VERTICES];
+    let (mut fb, mut depth) = (
+        vec![Rgb565::BLACK; (W * H) as usize],
+        vec![0u16; (W * H) as usize],
+    );
+    let blue = Rgb565::from(wire_depth::WIRE_BLUE);
+    let mut count = |solid| {
+        wire_depth::wire_depth(&mesh, 0, solid, &mut cache, &mut fb, &mut depth).expect("drawn");
+        let lines = fb.iter().filter(|&&c| c == blue).count();
+        (
+            lines,
+            fb.iter()
+                .filter(|&&c| c != blue && c != Rgb565::BLACK)
+                .count(),
+        )
+    };
+    let (alone, none) = count(false);
+    let (hidden, surface) = count(true);
+    assert_eq!(none, 0);
+    assert!(alone > 2000 && surface > 10_000, "{alone} {surface}");
+    assert!(
+        hidden > alone / 10 && hidden < alone * 9 / 10,
+        "{hidden} of {alone}"
+    );
 }
 
 #[test]

@@ -44,7 +44,8 @@ def machine(target):
 def build(preset, target, target_dir):
     env = dict(os.environ, CARGO_PROFILE_RELEASE_S_DEBUG="line-tables-only")
     # The presets that need features of their own (as run.sh builds them).
-    features = {"knobs": ["--features", "micromath"], "phong": ["--features", "phong"]}.get(preset, [])
+    features = {"knobs": ["--features", "micromath"], "phong": ["--features", "phong"],
+                "variants": ["--features", "wireframe"]}.get(preset, [])
     subprocess.run(["cargo", "build", "--quiet", "--profile", "release-s", "--target", target,
                     "--target-dir", target_dir, "--bin", preset] + features,
                    cwd=HERE, env=env, check=True)

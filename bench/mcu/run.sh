@@ -45,11 +45,12 @@ else
     # keeping them.
     [[ ${NORMALS:-kept} == per-frame ]] && features+=(--features per-frame-normals)
 fi
-# `knobs` (every configuration of docs/accuracy.md) needs micromath, and `phong` the library's
-# point lights and highlights; ask for each alone, as the other presets would then be built
-# with them too.
+# `knobs` (every configuration of docs/accuracy.md) needs micromath, `phong` the library's
+# point lights and highlights, and `variants` its wireframes; ask for each alone, as the other
+# presets would then be built with them too.
 [[ " $PRESETS " == *" knobs "* ]] && features+=(--features micromath)
 [[ " $PRESETS " == *" phong "* ]] && features+=(--features phong)
+[[ " $PRESETS " == *" variants "* ]] && features+=(--features wireframe)
 OPT=${OPT:-s}
 CHECK=${CHECK:-0}
 QEMU_TIMEOUT=${QEMU_TIMEOUT:-600}

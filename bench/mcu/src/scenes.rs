@@ -253,8 +253,11 @@ pub fn full(
 /// the near plane), then [`random_mesh`] drawn whole (`triangles`) and, shrunk inside every
 /// clip plane, culled to its front faces (`front`), `full`'s vertex stage alone (`vertices`,
 /// see [`torus_vertices`]), and last the receding [`floor`] textured and smooth, perspective-
-/// correct (`floor-textured`, `floor-gouraud`: the spans' exact divisions).
-pub const VARIANTS: [&str; 10] = [
+/// correct (`floor-textured`, `floor-gouraud`: the spans' exact divisions), and `full`'s torus
+/// solid with a second one through it as a depth-tested wireframe (`wire-depth`, drawn by
+/// `wire_depth.rs` rather than [`variant`]: outside this library, its code moves no other
+/// preset's).
+pub const VARIANTS: [&str; 11] = [
     "less",
     "less-counted",
     "less-or-equal",
@@ -265,6 +268,7 @@ pub const VARIANTS: [&str; 10] = [
     "vertices",
     "floor-textured",
     "floor-gouraud",
+    "wire-depth",
 ];
 
 /// Triangles of the `triangles` variant's mesh ([`random_mesh`]), three vertices each.

@@ -8,7 +8,9 @@
 //! (`front`, every count in its hash); `full`'s vertex stage alone (`vertices`, a hash of
 //! every vertex's position and depth); and a floor receding from 1.1 to 32.6 away, textured
 //! (`floor-textured`) and smooth (`floor-gouraud`), both perspective-correct: the exact
-//! divisions of their spans, which the torus presets' nearly affine triangles skip. Not in
+//! divisions of their spans, which the torus presets' nearly affine triangles skip; and the
+//! torus solid with a second one through it as a wireframe, depth-tested against it by the
+//! `Renderer` (`wire-depth`: built with the library's `wireframe` feature, so alone). Not in
 //! footprint.md's table.
 #![no_std]
 #![no_main]
@@ -22,6 +24,13 @@ use fixed3d::pipeline::ScreenVertex;
 use mcu_bench::scenes::*;
 use mcu_bench::{storage, torus_storage, Op};
 use panic_semihosting as _;
+
+// `wire-depth`: outside the library every preset links (see the file).
+#[path = "../wire_depth.rs"]
+mod wire_depth;
+mod scenes {
+    pub use mcu_bench::scenes::*;
+}
 
 #[entry]
 fn main() -> ! {
@@ -44,7 +53,11 @@ fn main() -> ! {
             0
         }
         Op::Draw(f) => {
-            let word = variant(name, &mesh, &random, f, cache, fb, depth);
+            let word = if name == "wire-depth" {
+                wire_depth::wire_depth(&mesh, f, true, cache, fb, depth)
+            } else {
+                variant(name, &mesh, &random, f, cache, fb, depth)
+            };
             counts.set(word.unwrap_or(0));
             word.is_some() as u32
         }
