@@ -98,10 +98,19 @@ impl<'a, T: Copy> Grid<'a, T> {
         self.index(x, y).and_then(|i| self.cells.get_mut(i))
     }
 
+    /// Row `y`'s cells; `None` outside the grid.
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [T]> {
+        // A negative row lies past the height too, as a word: one test. Below the height the
+        // row lies within the `width · height` cells, which `new` checked fit: its start is a
+        // word product that never wraps (a checked product is a 64-bit one on cores without a
+        // long multiply).
+        let y = y as u32;
+        if y >= self.height {
+            return None;
+        }
         let w = self.width as usize;
-        let start = usize::try_from(y).ok()?.checked_mul(w)?;
-        self.cells.get_mut(start..start.checked_add(w)?)
+        let start = (y as usize).wrapping_mul(w);
+        self.cells.get_mut(start..start.wrapping_add(w))
     }
 }
 

@@ -422,19 +422,22 @@ where
             return;
         };
         let mut depth = LineDepth::new(za, zb, start, run);
-        let width = self.color.width() as usize;
         let y0 = self.clip.y0;
+        let (width, rows) = (self.color.width() as usize, self.color.height());
         let (colors, depths) = (self.color.cells_all_mut(), self.depth.cells_all_mut());
         let (mut fragments, mut failed) = (0u32, 0u32);
         for p in pixels {
             let z = depth.at(if x_major { p.x } else { p.y });
-            let Ok(i) = usize::try_from(p.y.wrapping_sub(y0)) else {
+            // The pixels lie in the clip rectangle, inside the buffers. A row outside them (a
+            // negative one too, as a word) is skipped all the same, and so is a negative
+            // column (the sum overflows, or lies past the cells). The row's start is a word
+            // product below `width · height`: a checked one is a 64-bit product on cores
+            // without a long multiply.
+            let row = p.y.wrapping_sub(y0) as u32;
+            if row >= rows {
                 continue;
-            };
-            let Some(i) = i
-                .checked_mul(width)
-                .and_then(|r| r.checked_add(p.x as usize))
-            else {
+            }
+            let Some(i) = (row as usize).wrapping_mul(width).checked_add(p.x as usize) else {
                 continue;
             };
             if let (Some(d), Some(c)) = (depths.get_mut(i..=i), colors.get_mut(i..=i)) {
