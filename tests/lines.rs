@@ -118,6 +118,28 @@ fn t30_far_endpoints_and_edges_of_the_screen() {
             SCREEN
         )
     );
+    // Between the screen and the coordinate limit, both ways round: a line whose first column
+    // is on screen has it set up in words at the largest differences there are.
+    let on_screen = ScreenPoint::new(21, 30);
+    for (fx, fy) in [
+        (far, far),
+        (-far, far),
+        (far, -far),
+        (-far, -far),
+        (far, 37),
+        (-far, -5),
+        (3, far),
+        (-9, -far),
+    ] {
+        let off = ScreenPoint::new(fx, fy);
+        for (a, b) in [(on_screen, off), (off, on_screen)] {
+            assert_eq!(
+                crate_line(a, b, SCREEN),
+                model_line(a, b, SCREEN),
+                "{a:?} {b:?}"
+            );
+        }
+    }
     // Beyond the coordinate limit: rejected as a whole.
     assert_eq!(
         line_pixels(ScreenPoint::new(-far - 1, 0), c(3, 3), SCREEN).count(),
@@ -157,6 +179,18 @@ proptest! {
                                         x0 in -4i32..12, y0 in -4i32..12, w in 0i32..20, h in 0i32..20) {
         let (a, b) = (ScreenPoint::new(ax, ay), ScreenPoint::new(bx, by));
         let clip = PixelRect::new(x0, y0, x0 + w, y0 + h);
+        prop_assert_eq!(crate_line(a, b, clip), model_line(a, b, clip));
+    }
+
+    /// M10: lines that start inside the clip rectangle (their first column set up in words,
+    /// from the endpoint the walk starts by, forwards and backwards) equal the model too.
+    #[test]
+    fn m10_lines_started_inside_the_clip_equal_the_model(
+        ax in -64i32..(40 * 16), ay in -64i32..(40 * 16),
+        bx in -64i32..(40 * 16), by in -64i32..(40 * 16),
+    ) {
+        let (a, b) = (ScreenPoint::new(ax, ay), ScreenPoint::new(bx, by));
+        let clip = PixelRect::new(-8, -8, 48, 48);
         prop_assert_eq!(crate_line(a, b, clip), model_line(a, b, clip));
     }
 

@@ -3,8 +3,10 @@
 
 use embedded_graphics::prelude::Point;
 
-use super::{ceil_div, first_centre_from, floor_div, FloorStepper, PixelRect, ScreenPoint};
-use crate::math::{mul_wide, SUBPIXEL_BITS, SUBPIXEL_SCALE};
+use super::{
+    ceil_div, first_centre_from, floor_div, floor_divmod, FloorStepper, PixelRect, ScreenPoint,
+};
+use crate::math::{mul_wide, NARROW_CORE, SUBPIXEL_BITS, SUBPIXEL_SCALE};
 
 const S: i64 = SUBPIXEL_SCALE as i64;
 const HALF: i64 = S / 2;
@@ -83,7 +85,11 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     let den = S * dmaj.abs();
     // Coordinates within ±COORD_LIMIT: every factor fits a word.
     let wide = |x: i64, y: i64| mul_wide(x as i32, y as i32);
-    let c = signed(wide(a.1, dmaj) + wide(HALF - a.0, dmin));
+    let at_zero = || signed(wide(a.1, dmaj) + wide(HALF - a.0, dmin));
+    // N(0): found here where products are cheap; where they are not, only for the lines that
+    // need it (those cut at the clip's rows, or not set up in words; see below).
+    let early = if NARROW_CORE { None } else { Some(at_zero()) };
+    let c = || early.unwrap_or_else(at_zero);
     let step = signed(S * dmin);
     // Keep the columns whose minor coordinate lies in [lo.1, hi.1); minor(i) is monotonic.
     // It is ⌊y / S⌋ for the line's y at a column centre between the endpoints, so it lies
@@ -91,6 +97,7 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     // divisions that find where the line leaves.
     let rows = (a.1.min(b.1) >> SUBPIXEL_BITS, a.1.max(b.1) >> SUBPIXEL_BITS);
     if rows.0 < lo.1 as i64 || rows.1 >= hi.1 as i64 {
+        let c = c();
         let n_lo = (lo.1 as i64).saturating_mul(den);
         let n_hi = (hi.1 as i64).saturating_mul(den);
         if step > 0 {
@@ -110,12 +117,71 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     if i0 >= i1 {
         return empty;
     }
+    // Where a word divides in one instruction and a long product is one too, the general
+    // set-up costs no more than the words below, and their test would cost each line.
+    let minor = if NARROW_CORE {
+        // den ≥ 16 (|dmaj| ≥ 1); quotients and remainders within words, as in
+        // `RationalStepper::new`.
+        let (q, r) = first_in_words((a, b), i0, (dmaj, dmin), den).unwrap_or_else(|| {
+            let (q, r) = floor_divmod(c() + wide(i0, step), den);
+            (q as i32, r as i32)
+        });
+        FloorStepper::from_quotient(q, r, den as i32, step as i32)
+    } else {
+        FloorStepper::new(c() + wide(i0, step), den, step)
+    };
     LinePixels {
-        minor: FloorStepper::new(c + i0 * step, den, step),
+        minor,
         major: i0 as i32,
         major_end: i1 as i32,
         swapped,
     }
+}
+
+/// The walk of a line from `a` to `b` ((major, minor) sub-pixel coordinates, `dmaj` and
+/// `dmin` their differences, `den` and `step` its denominator and step as `line_pixels` folds
+/// their signs) at column `i0`, in words, where `i0` is the first column of the endpoint the
+/// walk starts by (a going forward, b backward: every line but those a clip cuts at their
+/// start); `None` at another column.
+///
+/// `N(i0)` is `signed(p.1·dmaj + t·dmin)` for either endpoint p (both lie on the line) with
+/// `t = S·i0 + HALF − p.0`. With p.1 = S·k + m it is k·den plus `signed(m·dmaj + t·dmin)`, and
+/// for `0 ≤ t ≤ S` that second term lies within ±2·den (|dmin| ≤ |dmaj|): a word whose
+/// quotient lies in [−2, 2), found by comparisons, without a 64-bit product or a library
+/// division.
+#[inline(always)]
+fn first_in_words(
+    (a, b): ((i64, i64), (i64, i64)),
+    i0: i64,
+    (dmaj, dmin): (i64, i64),
+    den: i64,
+) -> Option<(i32, i32)> {
+    let (p, t) = if dmaj > 0 {
+        (a, S * i0 + HALF - a.0)
+    } else {
+        (b, S * i0 + HALF - b.0)
+    };
+    if !(0..=S).contains(&t) {
+        return None;
+    }
+    let (k, m) = (p.1 >> SUBPIXEL_BITS, p.1 & (S - 1));
+    // Within ±2·den < 2³¹: no product or sum wraps.
+    let n = (m as i32)
+        .wrapping_mul(dmaj as i32)
+        .wrapping_add((t as i32).wrapping_mul(dmin as i32));
+    let n = if dmaj < 0 { n.wrapping_neg() } else { n };
+    // ⌊n / den⌋ in [−2, 2), and the remainder.
+    let den = den as i32;
+    let (q, r) = if n >= den {
+        (1, n.wrapping_sub(den))
+    } else if n >= 0 {
+        (0, n)
+    } else if n >= den.wrapping_neg() {
+        (-1, n.wrapping_add(den))
+    } else {
+        (-2, n.wrapping_add(den).wrapping_add(den))
+    };
+    Some(((k as i32).wrapping_add(q), r))
 }
 
 impl Iterator for LinePixels {
