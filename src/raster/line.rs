@@ -36,6 +36,19 @@ pub struct LinePixels {
 /// ```
 #[must_use]
 pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixels {
+    line_pixels_by::<NARROW_CORE>(a, b, clip)
+}
+
+/// [`line_pixels`], a line's first column set up in words where `WORDS` and that column is its
+/// start's (see [`first_in_words`]): what cores without a divide instruction take
+/// (`NARROW_CORE`); elsewhere the general set-up costs no more, and the test would cost each
+/// line. Both are tested on every host.
+#[inline(always)]
+fn line_pixels_by<const WORDS: bool>(
+    a: ScreenPoint,
+    b: ScreenPoint,
+    clip: PixelRect,
+) -> LinePixels {
     let empty = LinePixels {
         minor: FloorStepper::ZERO,
         major: 0,
@@ -88,7 +101,7 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     let at_zero = || signed(wide(a.1, dmaj) + wide(HALF - a.0, dmin));
     // N(0): found here where products are cheap; where they are not, only for the lines that
     // need it (those cut at the clip's rows, or not set up in words; see below).
-    let early = if NARROW_CORE { None } else { Some(at_zero()) };
+    let early = if WORDS { None } else { Some(at_zero()) };
     let c = || early.unwrap_or_else(at_zero);
     let step = signed(S * dmin);
     // Keep the columns whose minor coordinate lies in [lo.1, hi.1); minor(i) is monotonic.
@@ -117,9 +130,7 @@ pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixel
     if i0 >= i1 {
         return empty;
     }
-    // Where a word divides in one instruction and a long product is one too, the general
-    // set-up costs no more than the words below, and their test would cost each line.
-    let minor = if NARROW_CORE {
+    let minor = if WORDS {
         // den ≥ 16 (|dmaj| ≥ 1); quotients and remainders within words, as in
         // `RationalStepper::new`.
         let (q, r) = first_in_words((a, b), i0, (dmaj, dmin), den).unwrap_or_else(|| {
@@ -209,3 +220,44 @@ impl Iterator for LinePixels {
 }
 
 impl ExactSizeIterator for LinePixels {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::XorShift;
+
+    /// R9: both set-ups of a line's first column (in words, as cores without a divide take it,
+    /// and the general one) give the same pixels: lines of every length and direction, from
+    /// inside and outside clip rectangles (started at their own first column or cut), out to
+    /// the coordinate limit.
+    #[test]
+    fn r9_lines_set_up_in_words_equal_the_general_set_up() {
+        let mut rng = XorShift(0x9E37_79B9_7F4A_7C15);
+        let limit = super::super::COORD_LIMIT;
+        let mut words = 0u32;
+        for k in 0..200_000u32 {
+            let mut coordinate = || match k % 4 {
+                0 => rng.within(limit),
+                1 => rng.within(1 << 12),
+                _ => rng.within(30 * 16) + 30 * 16,
+            };
+            let (a, b) = (
+                ScreenPoint::new(coordinate(), coordinate()),
+                ScreenPoint::new(coordinate(), coordinate()),
+            );
+            let (x0, y0) = (rng.within(8), rng.within(8));
+            let (w, h) = (1 + rng.within(80).abs(), 1 + rng.within(80).abs());
+            let clip = PixelRect::new(x0, y0, x0 + w, y0 + h);
+            let fast: std::vec::Vec<Point> = line_pixels_by::<true>(a, b, clip).collect();
+            let general: std::vec::Vec<Point> = line_pixels_by::<false>(a, b, clip).collect();
+            assert_eq!(fast, general, "{a:?} {b:?} {clip:?}");
+            // Both ends inside: the line starts at its own first column, set up in words.
+            let inside = |p: ScreenPoint| {
+                let (x, y) = (p.x >> SUBPIXEL_BITS, p.y >> SUBPIXEL_BITS);
+                (clip.x0..clip.x1).contains(&x) && (clip.y0..clip.y1).contains(&y)
+            };
+            words += u32::from(inside(a) && inside(b) && !fast.is_empty());
+        }
+        assert!(words > 10_000, "{words}");
+    }
+}
