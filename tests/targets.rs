@@ -273,3 +273,55 @@ fn gouraud_into_rgb565_rounds_each_channel_once() {
     }
     assert!(covered > 3000 && differ > 0, "{covered} {differ}");
 }
+
+/// A framebuffer's `fill_solid` fills exactly the area's pixels inside the buffer, as pixel by
+/// pixel drawing would: areas inside, across every side, outside, empty, and reaching to the
+/// ends of the coordinate range (cut there, without overflow).
+#[test]
+fn framebuffer_fill_solid_fills_the_area_inside_the_buffer() {
+    let (w, h) = (24u32, 16u32);
+    let mut rng = 0x2545_F491u32;
+    let mut next = move |n: u32| {
+        rng ^= rng << 13;
+        rng ^= rng >> 17;
+        rng ^= rng << 5;
+        rng % n
+    };
+    let mut areas: Vec<Rectangle> = (0..2000)
+        .map(|_| {
+            let at = Point::new(next(60) as i32 - 20, next(50) as i32 - 20);
+            Rectangle::new(at, Size::new(next(45), next(35)))
+        })
+        .collect();
+    areas.extend([
+        Rectangle::new(
+            Point::new(i32::MIN, i32::MIN),
+            Size::new(u32::MAX, u32::MAX),
+        ),
+        Rectangle::new(Point::new(-3, 5), Size::new(u32::MAX, 2)),
+        Rectangle::new(Point::new(5, -7), Size::new(3, u32::MAX)),
+        Rectangle::new(Point::new(i32::MAX, 2), Size::new(u32::MAX, 4)),
+        Rectangle::new(Point::new(2, 2), Size::new(0, 9)),
+    ]);
+    for area in areas {
+        let mut cells = vec![Rgb565::BLACK; (w * h) as usize];
+        let mut fb = FrameBuffer::new(&mut cells, w, h).unwrap();
+        fb.fill_solid(&area, Rgb565::RED).unwrap();
+        let (x0, y0) = (i64::from(area.top_left.x), i64::from(area.top_left.y));
+        let (x1, y1) = (
+            x0 + i64::from(area.size.width),
+            y0 + i64::from(area.size.height),
+        );
+        for y in 0..h as i64 {
+            for x in 0..w as i64 {
+                let inside = (x0..x1).contains(&x) && (y0..y1).contains(&y);
+                let expected = if inside { Rgb565::RED } else { Rgb565::BLACK };
+                assert_eq!(
+                    cells[(y * w as i64 + x) as usize],
+                    expected,
+                    "{area:?} ({x}, {y})"
+                );
+            }
+        }
+    }
+}

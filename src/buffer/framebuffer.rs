@@ -141,13 +141,23 @@ impl<C: PixelColor> DrawTarget for FrameBuffer<'_, C> {
     }
 
     fn fill_solid(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error> {
-        let a = area.intersection(&self.bounding_box());
-        if a.size.width == 0 {
+        // The area cut to the buffer: a span a firmware fills row by row takes a few
+        // comparisons, where the rectangles' own intersection takes checked sums and corners.
+        // The far sides are sums of 64 bits (an area may reach past i32's range); cut to the
+        // buffer's sides, they fit words again.
+        let (x, y) = (area.top_left.x, area.top_left.y);
+        let end = |at: i32, size: u32, side: u32| {
+            (i64::from(at) + i64::from(size)).min(i64::from(side)) as i32
+        };
+        let (x0, x1) = (x.max(0), end(x, area.size.width, self.width()));
+        if x0 >= x1 {
             return Ok(());
         }
-        let (x0, w) = (a.top_left.x as usize, a.size.width as usize);
-        for y in a.rows() {
-            if let Some(dst) = self.row_mut(y).and_then(|r| r.get_mut(x0..x0 + w)) {
+        for y in y.max(0)..end(y, area.size.height, self.height()) {
+            if let Some(dst) = self
+                .row_mut(y)
+                .and_then(|row| row.get_mut(x0 as usize..x1 as usize))
+            {
                 dst.fill(color);
             }
         }
