@@ -149,11 +149,11 @@ fn line_pixels_by<const WORDS: bool>(
     }
 }
 
-/// The walk of a line from `a` to `b` ((major, minor) sub-pixel coordinates, `dmaj` and
-/// `dmin` their differences, `den` and `step` its denominator and step as `line_pixels` folds
-/// their signs) at column `i0`, in words, where `i0` is the first column of the endpoint the
-/// walk starts by (a going forward, b backward: every line but those a clip cuts at their
-/// start); `None` at another column.
+/// `⌊N(i0) / den⌋` and its remainder for the line from `a` to `b` ((major, minor) sub-pixel
+/// coordinates, `dmaj` and `dmin` their differences, `den` its denominator as `line_pixels`
+/// folds the signs), in words, where `i0` is the first column of the endpoint the walk starts
+/// by (a going forward, b backward: every line but those a clip cuts at their start); `None`
+/// at another column.
 ///
 /// `N(i0)` is `signed(p.1·dmaj + t·dmin)` for either endpoint p (both lie on the line) with
 /// `t = S·i0 + HALF − p.0`. With p.1 = S·k + m it is k·den plus `signed(m·dmaj + t·dmin)`, and
