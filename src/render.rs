@@ -756,8 +756,9 @@ impl<'f> PreparedFrame<'f> {
     /// (as many whole rows of the viewport's width as both hold, cleared by the caller), and
     /// returns what it drew (and, where the bins did not hold the frame, what it culled and
     /// dropped, the same for every band). [`BufferError`] when they hold no whole row.
-    /// [`FrameBuffer::fill`] and [`DepthBuffer::clear`] clear the buffers in fewer
-    /// instructions than `slice::fill`, which calls `memset` for black and the far depth.
+    /// On Cortex-M cores [`FrameBuffer::fill`] and [`DepthBuffer::clear`] clear the buffers
+    /// in fewer instructions than `slice::fill`, which calls `memset` for black and the far
+    /// depth.
     pub fn draw_band<C, D>(
         &self,
         first_row: u32,

@@ -36,15 +36,15 @@ pub struct LinePixels {
 /// ```
 #[must_use]
 pub fn line_pixels(a: ScreenPoint, b: ScreenPoint, clip: PixelRect) -> LinePixels {
-    line_pixels_by::<NARROW_CORE>(a, b, clip)
+    line_pixels_with::<NARROW_CORE>(a, b, clip)
 }
 
 /// [`line_pixels`], a line's first column set up in words where `WORDS` and that column is its
-/// start's (see [`first_in_words`]): what cores without a divide instruction take
+/// start's (see [`first_column_in_words`]): what cores without a divide instruction take
 /// (`NARROW_CORE`); elsewhere the general set-up costs no more, and the test would cost each
 /// line. Both are tested on every host.
 #[inline(always)]
-fn line_pixels_by<const WORDS: bool>(
+fn line_pixels_with<const WORDS: bool>(
     a: ScreenPoint,
     b: ScreenPoint,
     clip: PixelRect,
@@ -133,7 +133,7 @@ fn line_pixels_by<const WORDS: bool>(
     let minor = if WORDS {
         // den ≥ 16 (|dmaj| ≥ 1); quotients and remainders within words, as in
         // `RationalStepper::new`.
-        let (q, r) = first_in_words((a, b), i0, (dmaj, dmin), den).unwrap_or_else(|| {
+        let (q, r) = first_column_in_words((a, b), i0, (dmaj, dmin), den).unwrap_or_else(|| {
             let (q, r) = floor_divmod(c() + wide(i0, step), den);
             (q as i32, r as i32)
         });
@@ -161,7 +161,7 @@ fn line_pixels_by<const WORDS: bool>(
 /// quotient lies in [−2, 2), found by comparisons, without a 64-bit product or a library
 /// division.
 #[inline(always)]
-fn first_in_words(
+fn first_column_in_words(
     (a, b): ((i64, i64), (i64, i64)),
     i0: i64,
     (dmaj, dmin): (i64, i64),
@@ -233,7 +233,7 @@ mod tests {
     #[test]
     fn r9_lines_set_up_in_words_equal_the_general_set_up() {
         let mut rng = XorShift(0x9E37_79B9_7F4A_7C15);
-        let limit = super::super::COORD_LIMIT;
+        let limit = crate::raster::COORD_LIMIT;
         let mut words = 0u32;
         for k in 0..200_000u32 {
             let mut coordinate = || match k % 4 {
@@ -248,8 +248,8 @@ mod tests {
             let (x0, y0) = (rng.within(8), rng.within(8));
             let (w, h) = (1 + rng.within(80).abs(), 1 + rng.within(80).abs());
             let clip = PixelRect::new(x0, y0, x0 + w, y0 + h);
-            let fast: std::vec::Vec<Point> = line_pixels_by::<true>(a, b, clip).collect();
-            let general: std::vec::Vec<Point> = line_pixels_by::<false>(a, b, clip).collect();
+            let fast: std::vec::Vec<Point> = line_pixels_with::<true>(a, b, clip).collect();
+            let general: std::vec::Vec<Point> = line_pixels_with::<false>(a, b, clip).collect();
             assert_eq!(fast, general, "{a:?} {b:?} {clip:?}");
             // Both ends inside: the line starts at its own first column, set up in words.
             let inside = |p: ScreenPoint| {
