@@ -390,8 +390,10 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 /// models, a bin per triangle that can face the camera, and room for the solid triangles
 /// that cross from one band into the next. [`bytes`](Self::bytes) gives its size.
 ///
-/// Bins are what make bands cheap: each band reads every bin's rows but fetches, shades and
-/// sets up only the triangles that touch its own, in the mesh's order. A frame whose visible
+/// Bins are what make bands cheap: each band fetches, shades and sets up only the triangles
+/// that touch its rows, in the mesh's order; of the others it reads the rows of each, or only
+/// one summary for a block of them (a run of a mesh's triangles, which mostly lie close
+/// together) that holds none touching its rows. A frame whose visible
 /// triangles do not fit is still drawn right, by walking every triangle for every band; one
 /// drawn in a single pass needs none (`TRIANGLES` may then be 0).
 ///

@@ -88,6 +88,26 @@ pub struct Bin {
     object: u16,
     top: u16,
     bottom: u16,
+    /// The rows of the block of [`BIN_BLOCK`] bins this one opens (see [`block_rows`]): in
+    /// a block's first bin the first row any of its bins may touch, in its second the last
+    /// (room the alignment of `triangle` leaves: a bin is no larger for it).
+    block: u16,
+}
+
+/// An object's bins are read in blocks of this many, from its first on: a band skips each
+/// block none of whose bins touches its rows after one test, so that it reads the bins of
+/// its own rows and one test per block of the others.
+const BIN_BLOCK: usize = 32;
+
+/// The first and last rows that any bin of `block` (a block of [`BIN_BLOCK`] bins, an
+/// object's last one possibly shorter) may touch.
+#[inline(always)]
+fn block_rows(block: &[Bin]) -> (u16, u16) {
+    match block {
+        [first, second, ..] => (first.block, second.block),
+        [only] => (only.top, only.bottom),
+        [] => (u16::MAX, 0),
+    }
 }
 
 impl Bin {
@@ -97,6 +117,7 @@ impl Bin {
         object: 0,
         top: 0,
         bottom: 0,
+        block: 0,
     };
 
     /// The tag of the objects whose triangle this is (see `Prepared::bin`).
@@ -436,8 +457,9 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
     /// with the rows it may touch, tagged `tag` plus its object's index in the scene; invalid,
     /// outside, culled and degenerate ones and those that cover no pixel row are counted in
     /// `stats` instead. A triangle that crosses a clip plane is binned for every row (its
-    /// clipping and culling wait for the draw). False when `bins` is full: the frame must then
-    /// be drawn by [`draw`](Self::draw) for every band.
+    /// clipping and culling wait for the draw). An object's bins are in blocks of
+    /// [`BIN_BLOCK`] from its first, each with its rows (see [`block_rows`]). False when
+    /// `bins` is full: the frame must then be drawn by [`draw`](Self::draw) for every band.
     pub(crate) fn bin(
         &self,
         tag: u16,
@@ -448,6 +470,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
         let cull = self.frame.cull;
         for (j, setup) in self.objects(false).enumerate() {
             let object = tag.saturating_add(u16::try_from(j).unwrap_or(u16::MAX));
+            let start = *len;
             let triangles = setup.object.mesh.triangles();
             add_count(&mut stats.primitives, triangles.len());
             for (k, tri) in triangles.iter().enumerate() {
@@ -489,8 +512,22 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     object,
                     top: rows.0,
                     bottom: rows.1,
+                    block: 0,
                 };
                 *len += 1;
+            }
+            // Each block's rows in its first two bins (a block of one has its bin's own).
+            for block in bins
+                .get_mut(start..*len)
+                .unwrap_or(&mut [])
+                .chunks_mut(BIN_BLOCK)
+            {
+                let rows = block.iter().fold((u16::MAX, 0), |(first, last), bin| {
+                    (first.min(bin.top), last.max(bin.bottom))
+                });
+                if let [first, second, ..] = block {
+                    (first.block, second.block) = rows;
+                }
             }
         }
         true
@@ -524,54 +561,60 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             rest = after;
             // Set up at the first bin that meets the band's rows.
             let mut set_up = None;
-            for bin in run {
-                if !meets(bin) {
+            'run: for block in run.chunks(BIN_BLOCK) {
+                let (first, last) = block_rows(block);
+                if i32::from(first) >= y1 || i32::from(last) < y0 {
                     continue;
                 }
-                let setup = match &mut set_up {
-                    Some(setup) => setup,
-                    None => {
-                        let found = object
-                            .checked_sub(tag)
-                            .and_then(|j| self.objects(band).nth(j.into()));
-                        let Some(setup) = found else {
-                            break;
-                        };
-                        set_up.insert(setup)
+                for bin in block {
+                    if !meets(bin) {
+                        continue;
                     }
-                };
-                let triangles = setup.object.mesh.triangles();
-                // A bin's rows are its triangle's own: only the pieces of a clipped one
-                // (binned for every row) are tested against the band's rows again.
-                let clipped = bin.bottom == Bin::EVERY_ROW.1;
-                setup.band = band && clipped;
-                // A solid triangle the band before carried goes on where it stopped, with
-                // nothing set up again (the pieces of a clipped one are not carried).
-                let key = (bin.object, bin.triangle);
-                if carries.meet((!clipped).then_some(key)) {
-                    bump(&mut again.drawn);
-                    bump(&mut again.carried);
-                    if let Some(done) =
-                        carries.with_carries(|c| target.resume_carried(c, &mut again))
-                    {
-                        done?;
+                    let setup = match &mut set_up {
+                        Some(setup) => setup,
+                        None => {
+                            let found = object
+                                .checked_sub(tag)
+                                .and_then(|j| self.objects(band).nth(j.into()));
+                            let Some(setup) = found else {
+                                break 'run;
+                            };
+                            set_up.insert(setup)
+                        }
+                    };
+                    let triangles = setup.object.mesh.triangles();
+                    // A bin's rows are its triangle's own: only the pieces of a clipped one
+                    // (binned for every row) are tested against the band's rows again.
+                    let clipped = bin.bottom == Bin::EVERY_ROW.1;
+                    setup.band = band && clipped;
+                    // A solid triangle the band before carried goes on where it stopped, with
+                    // nothing set up again (the pieces of a clipped one are not carried).
+                    let key = (bin.object, bin.triangle);
+                    if carries.meet((!clipped).then_some(key)) {
+                        bump(&mut again.drawn);
+                        bump(&mut again.carried);
+                        if let Some(done) =
+                            carries.with_carries(|c| target.resume_carried(c, &mut again))
+                        {
+                            done?;
+                        }
+                        continue;
                     }
-                    continue;
+                    let k = bin.triangle as usize;
+                    let Some(tri) = triangles.get(k) else {
+                        continue;
+                    };
+                    self.triangle(
+                        target,
+                        setup,
+                        (k, tri),
+                        setup.inside,
+                        self.frame.cull,
+                        &map,
+                        carries,
+                        &mut again,
+                    )?;
                 }
-                let k = bin.triangle as usize;
-                let Some(tri) = triangles.get(k) else {
-                    continue;
-                };
-                self.triangle(
-                    target,
-                    setup,
-                    (k, tri),
-                    setup.inside,
-                    self.frame.cull,
-                    &map,
-                    carries,
-                    &mut again,
-                )?;
             }
         }
         stats.drawn = again.drawn;
@@ -965,6 +1008,95 @@ mod tests {
         for p in triangles {
             assert_eq!(short_sides_area(p[0], p[1], p[2]), area2(&p), "{p:?}");
         }
+    }
+
+    /// Binning writes each block's first and last rows into its first two bins, blocks counted
+    /// from each object's first bin; a band reads only the blocks that meet its rows, and draws
+    /// what it draws reading every bin: three objects (two tori, one turned to face the
+    /// camera, and a cube) in bands of 4 to 48 rows, some blocks outside some bands.
+    #[test]
+    fn bands_skip_the_blocks_of_bins_outside_their_rows() {
+        let viewport = Viewport::new(64, 48).unwrap_or_else(|_| unreachable!());
+        let view = LookAt::new(Vec3::from_int(0, 0, 4), Vec3::ZERO, Vec3::Y).view();
+        let (near, far) = (Scalar::from_num(1), Scalar::from_num(10));
+        let projection =
+            Projection::perspective(Angle::from_degrees(60), viewport.aspect(), near, far);
+        let frame = Frame::new(
+            &view.unwrap_or_else(|_| unreachable!()),
+            &projection.unwrap_or_else(|_| unreachable!()),
+            viewport,
+        );
+        let (mut p, mut n) = (vec![Vec3::ZERO; 24 * 12], vec![Vec3::ZERO; 24 * 12]);
+        let mut t = vec![Triangle::default(); 2 * 24 * 12];
+        let (major, minor) = (Scalar::from_num(1), Scalar::from_bits(1 << 15));
+        let torus = crate::mesh::torus(major, minor, 24, 12, &mut p, &mut n, &mut t);
+        let torus = torus.unwrap_or_else(|_| unreachable!());
+        let objects = [
+            Object::new(
+                &torus,
+                Mat4::rotation_x(Angle::from_degrees(70)),
+                Rgb888::RED,
+            ),
+            Object::new(&CUBE, Mat4::IDENTITY, Rgb888::WHITE),
+            Object::new(
+                &torus,
+                Mat4::rotation_x(Angle::from_degrees(10)),
+                Rgb888::BLUE,
+            ),
+        ];
+        let scene: Scene<'_, 1> = Scene::new(
+            &objects,
+            Lighting::new(LightColor::gray(Scalar::from_num(1))),
+        );
+        let mut cache = vec![ScreenVertex::DEFAULT; scene.vertex_count()];
+        let prepared = frame.prepare(&scene, &mut cache, Flat);
+        let prepared = prepared.unwrap_or_else(|_| unreachable!());
+        let (mut bins, mut len) = (vec![Bin::EMPTY; 2 * 2 * 24 * 12 + 12], 0);
+        assert!(prepared.bin(0, &mut bins, &mut len, &mut Stats::default()));
+        bins.truncate(len);
+        let blocks = || {
+            bins.chunk_by(|a, b| a.object == b.object)
+                .flat_map(|run| run.chunks(BIN_BLOCK))
+        };
+        for block in blocks() {
+            let first = block.iter().map(|b| b.top).min();
+            let last = block.iter().map(|b| b.bottom).max();
+            assert_eq!(Some(block_rows(block)), first.zip(last));
+        }
+        assert!(blocks().count() > 2 * objects.len(), "{len} bins");
+        // The same bins with every block marked as meeting every row.
+        let mut every = bins.clone();
+        for run in every.chunk_by_mut(|a, b| a.object == b.object) {
+            for block in run.chunks_mut(BIN_BLOCK) {
+                if let [first, second, ..] = block {
+                    (first.block, second.block) = (0, u16::MAX);
+                }
+            }
+        }
+        let mut skipped = 0;
+        for rows in [4, 5, 8, 12, 48] {
+            for y0 in (0..48).step_by(rows) {
+                let meets = |(first, last): (u16, u16)| {
+                    i32::from(first) < y0 as i32 + rows as i32 && i32::from(last) >= y0 as i32
+                };
+                skipped += blocks().filter(|b| !meets(block_rows(b))).count();
+                let band = |bins: &[Bin]| {
+                    let (mut c, mut d) =
+                        (vec![Rgb565::BLACK; 64 * rows], vec![u16::MAX; 64 * rows]);
+                    let color = FrameBuffer::new(&mut c, 64, rows as u32);
+                    let mut color = color.unwrap_or_else(|_| unreachable!());
+                    let depth = DepthBuffer::new(&mut d, 64, rows as u32);
+                    let mut depth = depth.unwrap_or_else(|_| unreachable!());
+                    let target = ColorDepth::band(&mut color, &mut depth, y0 as u32);
+                    let mut target = target.unwrap_or_else(|_| unreachable!());
+                    let stats = prepared.draw_binned(&mut target, 0, bins, &mut ());
+                    (stats.unwrap_or_else(|e| match e {}), c)
+                };
+                let drawn = band(&bins);
+                assert!(drawn == band(&every), "rows {y0} to {}", y0 + rows);
+            }
+        }
+        assert!(skipped > 0);
     }
 
     /// The frame's pixels and statistics, drawn into fresh 64x48 buffers.
