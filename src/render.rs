@@ -527,7 +527,8 @@ where
     }
 
     /// Draws `models` lit by `lights` and seen by `camera` into `display`: the frame's
-    /// vertex stage once, then each band cleared, drawn and sent with one `fill_contiguous`.
+    /// vertex stage once, then each band cleared (unless the band before drew nothing into
+    /// the buffers), drawn and sent with one `fill_contiguous`.
     /// The viewport is the display's bounding box. Returns what was drawn.
     pub fn render<T>(
         &mut self,
@@ -569,17 +570,24 @@ where
         let mut stats = frame.stats();
         let mut carries = Carries::new(&mut *self.carried);
         let mut first = 0usize;
+        // True when the buffers hold only the background and the far depth: after a band that
+        // drew nothing (every write into them is part of a triangle or line counted as drawn),
+        // the next needs no clearing.
+        let mut clean = false;
         while first < viewport.height() as usize {
             let n = rows.min(viewport.height() as usize - first) * width;
             let (Some(color), Some(depth)) = (self.color.get_mut(..n), self.depth.get_mut(..n))
             else {
                 break;
             };
-            fill(color, background);
-            fill(depth, D::FAR);
+            if !clean {
+                fill(color, background);
+                fill(depth, D::FAR);
+            }
             let band = frame
                 .draw_band_carrying(first as u32, color, depth, &mut carries)
                 .map_err(|_| RenderError::BuffersTooSmall { row: width })?;
+            clean = band.drawn == 0;
             // The first band counts what was not binned (every band counts the same).
             if first == 0 {
                 stats = stats + band;
@@ -760,7 +768,8 @@ impl<'f> PreparedFrame<'f> {
     /// dropped, the same for every band). [`BufferError`] when they hold no whole row.
     /// On Cortex-M cores [`FrameBuffer::fill`] and [`DepthBuffer::clear`] clear the buffers
     /// in fewer instructions than `slice::fill`, which calls `memset` for black and the far
-    /// depth.
+    /// depth. A band that drew nothing ([`Stats::drawn`] 0) wrote nothing: its buffers need
+    /// no clearing for the next.
     pub fn draw_band<C, D>(
         &self,
         first_row: u32,

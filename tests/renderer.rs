@@ -289,6 +289,52 @@ fn bands_of_many_models_equal_one_pass() {
     }
 }
 
+/// A band that draws nothing leaves its buffers as it found them, so the renderer clears them
+/// only after a band that drew: one renderer draws a small cube at the top of the screen, at
+/// the bottom (its last band drew into the buffers the next frame starts with), then in the
+/// middle, on a background colour, each frame the one pass's, and most bands empty.
+#[test]
+fn bands_after_empty_ones_equal_one_pass() {
+    let background = Rgb565::new(3, 9, 27);
+    let cube = |y: f64| {
+        [Model::new(&CUBE, Rgb888::new(250, 180, 40))
+            .scaled(0.2)
+            .rotated_y(30)
+            .rotated_x(20)
+            .translated([0.3, y, 0.0])]
+    };
+    let (mut v, mut b) = (vec![ScreenVertex::DEFAULT; 8], vec![Bin::EMPTY; 12]);
+    let mut room = vec![Carried::EMPTY; 8];
+    let (mut c, mut d) = (vec![Rgb565::BLACK; 320 * 10], vec![0u16; 320 * 10]);
+    let mut renderer = Renderer::from_slices(&mut v, &mut b, &mut c, &mut d)
+        .with_carried(&mut room)
+        .with_background(background);
+    for y in [1.2, -1.2, 0.0] {
+        let models = cube(y);
+        let mut banded = screen(320, 240);
+        let stats = renderer.render(&models, &lights(), &camera(), &mut banded);
+        assert!(stats.unwrap().drawn > 0);
+        let mut one_pass = screen(320, 240);
+        let (mut v1, mut c1, mut d1) = (
+            vec![ScreenVertex::DEFAULT; 8],
+            vec![Rgb565::BLACK; 320 * 240],
+            vec![0u16; 320 * 240],
+        );
+        Renderer::from_slices(&mut v1, &mut [], &mut c1, &mut d1)
+            .with_background(background)
+            .render(&models, &lights(), &camera(), &mut one_pass)
+            .unwrap();
+        assert!(banded.pixels == one_pass.pixels, "cube at {y}");
+        // The cube covers a few bands' rows; the others show the background alone.
+        let empty = banded
+            .pixels
+            .chunks(320 * 10)
+            .filter(|band| band.iter().all(|&p| p == background))
+            .count();
+        assert!(empty >= 16, "cube at {y}: {empty} empty bands");
+    }
+}
+
 /// A wireframe model and a solid one in one scene: the cube's edges behind the torus are
 /// hidden by it, those in front are drawn over it (golden image), and the image is the same
 /// in bands.
