@@ -469,8 +469,9 @@ fn board_bands_from_two_threads_equal_one_pass() {
             vec![Rgb565::BLACK; LCD_BAND_CELLS],
             vec![0u16; LCD_BAND_CELLS],
         );
+        let mut clean = false;
         for band in (parity..LCD_BANDS).step_by(2) {
-            draw_lcd_band(&frame, band, &mut color, &mut depth).expect("band");
+            clean = draw_lcd_band(&frame, band, &mut color, &mut depth, clean).expect("band");
             let mut b = vec![0u8; 2 * LCD_BAND_CELLS];
             lcd_bytes(&color, &mut b);
             bytes.push((band, b));

@@ -230,6 +230,8 @@ fn main() -> ! {
     let mut own_bytes = Some(own_bytes);
     let mut frame_ms = 0u64;
     let mut frame = 0u32;
+    // Whether this core's band buffers hold only black and the far depth (see draw_lcd_band).
+    let mut clean = false;
     loop {
         let start = timer.get_counter();
         let models = lcd_models(&mesh, frame);
@@ -248,9 +250,11 @@ fn main() -> ! {
             // core 1 (odd ones).
             let (bytes, core1) = match own_bytes.take() {
                 Some(bytes) if band % 2 == 0 => {
-                    let _ = draw_lcd_band(&prepared, band, &mut color[..], &mut depth[..]);
+                    clean = draw_lcd_band(&prepared, band, &mut color[..], &mut depth[..], clean)
+                        .unwrap_or(false);
                     if band == 0 {
                         frame_time(&mut color[..], frame_ms);
+                        clean = false;
                     }
                     lcd_bytes(&color[..], &mut bytes[..]);
                     (bytes, false)
@@ -304,6 +308,8 @@ fn core1() {
     ) else {
         return;
     };
+    // Whether this core's band buffers hold only black and the far depth (see draw_lcd_band).
+    let mut clean = false;
     loop {
         let address = sio.fifo.read_blocking();
         // SAFETY: core 0 sends the address of a frame it has prepared, and keeps it alive and
@@ -311,7 +317,8 @@ fn core1() {
         // core reads nothing of it.
         let frame = unsafe { &*(address as *const PreparedFrame<'static>) };
         for band in (1..LCD_BANDS).step_by(2) {
-            let _ = draw_lcd_band(frame, band, &mut color[..], &mut depth[..]);
+            clean =
+                draw_lcd_band(frame, band, &mut color[..], &mut depth[..], clean).unwrap_or(false);
             let bytes = take_band(false);
             lcd_bytes(&color[..], &mut bytes[..]);
             put_band(bytes, true);

@@ -120,21 +120,25 @@ pub fn prepare_lcd<'f>(
     )
 }
 
-/// Clears `color` (black) and `depth` and draws band `band` of `frame` into them
-/// ([`LCD_BAND_ROWS`] rows from row `band · LCD_BAND_ROWS`; each buffer holds that many rows of
-/// [`LCD_SIZE`]). The clears are the library's buffers' own, which take fewer instructions on
-/// a Cortex-M than `slice::fill` (a call to `memset` for black and the far depth).
+/// Draws band `band` of `frame` into `color` and `depth` ([`LCD_BAND_ROWS`] rows from row
+/// `band · LCD_BAND_ROWS`; each buffer holds that many rows of [`LCD_SIZE`]), clearing them
+/// first (black, the far depth) unless `clean` says they hold nothing else, as after a band
+/// that drew nothing. Returns whether they still do: true when this band drew nothing. The
+/// clears are the library's buffers' own, which take fewer instructions on a Cortex-M than
+/// `slice::fill` (a call to `memset` for black and the far depth).
 pub fn draw_lcd_band(
     frame: &PreparedFrame<'_>,
     band: u32,
     color: &mut [Rgb565],
     depth: &mut [u16],
-) -> Result<(), BufferError> {
-    FrameBuffer::new(color, LCD_SIZE, LCD_BAND_ROWS)?.fill(Rgb565::BLACK);
-    DepthBuffer::new(depth, LCD_SIZE, LCD_BAND_ROWS)?.clear();
-    frame
-        .draw_band(band.saturating_mul(LCD_BAND_ROWS), color, depth)
-        .map(|_| ())
+    clean: bool,
+) -> Result<bool, BufferError> {
+    if !clean {
+        FrameBuffer::new(&mut *color, LCD_SIZE, LCD_BAND_ROWS)?.fill(Rgb565::BLACK);
+        DepthBuffer::new(&mut *depth, LCD_SIZE, LCD_BAND_ROWS)?.clear();
+    }
+    let drawn = frame.draw_band(band.saturating_mul(LCD_BAND_ROWS), color, depth)?;
+    Ok(drawn.drawn == 0)
 }
 
 /// Draws every band of `frame` in order through one set of buffers, and hands each band's
@@ -146,8 +150,9 @@ pub fn send_lcd_frame(
     bytes: &mut [u8],
     mut send: impl FnMut(&[u8]),
 ) -> Result<(), BufferError> {
+    let mut clean = false;
     for band in 0..LCD_BANDS {
-        draw_lcd_band(frame, band, color, depth)?;
+        clean = draw_lcd_band(frame, band, color, depth, clean)?;
         lcd_bytes(color, bytes);
         send(bytes);
     }
