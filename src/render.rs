@@ -391,11 +391,11 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {}
 /// that cross from one band into the next. [`bytes`](Self::bytes) gives its size.
 ///
 /// Bins are what make bands cheap: each band fetches, shades and sets up only the triangles
-/// that touch its rows, in the mesh's order; of the others it reads the rows of each, or only
-/// one summary for a block of them (a run of a mesh's triangles, which mostly lie close
-/// together) that holds none touching its rows. A frame whose visible
-/// triangles do not fit is still drawn right, by walking every triangle for every band; one
-/// drawn in a single pass needs none (`TRIANGLES` may then be 0).
+/// that touch its rows, in the mesh's order. Of the others it reads each one's rows, or one
+/// summary for a whole block of them (a run of a mesh's triangles, which mostly lie close
+/// together) where none of the block touches its rows. A frame whose visible triangles do not
+/// fit is still drawn right, by walking every triangle for every band; one drawn in a single
+/// pass needs none (`TRIANGLES` may then be 0).
 ///
 /// A triangle of one colour that a band stops at its last row is carried into the next band
 /// ([`Carried`]): that band goes on with its walk instead of fetching, shading and setting it

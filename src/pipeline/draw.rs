@@ -88,10 +88,10 @@ pub struct Bin {
     object: u16,
     top: u16,
     bottom: u16,
-    /// The rows of the block of [`BIN_BLOCK`] bins this one opens (see [`block_rows`]): in
-    /// a block's first bin the first row any of its bins may touch, in its second the last
+    /// One end of the rows of the block of [`BIN_BLOCK`] bins it opens (see [`block_rows`]):
+    /// in a block's first bin the first row any of its bins may touch, in its second the last
     /// (room the alignment of `triangle` leaves: a bin is no larger for it).
-    block: u16,
+    block_row: u16,
 }
 
 /// An object's bins are read in blocks of this many, from its first on: a band skips each
@@ -104,7 +104,7 @@ const BIN_BLOCK: usize = 32;
 #[inline(always)]
 fn block_rows(block: &[Bin]) -> (u16, u16) {
     match block {
-        [first, second, ..] => (first.block, second.block),
+        [first, second, ..] => (first.block_row, second.block_row),
         [only] => (only.top, only.bottom),
         [] => (u16::MAX, 0),
     }
@@ -117,7 +117,7 @@ impl Bin {
         object: 0,
         top: 0,
         bottom: 0,
-        block: 0,
+        block_row: 0,
     };
 
     /// The tag of the objects whose triangle this is (see `Prepared::bin`).
@@ -512,7 +512,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     object,
                     top: rows.0,
                     bottom: rows.1,
-                    block: 0,
+                    block_row: 0,
                 };
                 *len += 1;
             }
@@ -526,7 +526,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
                     (first.min(bin.top), last.max(bin.bottom))
                 });
                 if let [first, second, ..] = block {
-                    (first.block, second.block) = rows;
+                    (first.block_row, second.block_row) = rows;
                 }
             }
         }
@@ -562,6 +562,7 @@ impl<const N: usize, S: Shading> Prepared<'_, '_, N, S> {
             // Set up at the first bin that meets the band's rows.
             let mut set_up = None;
             'run: for block in run.chunks(BIN_BLOCK) {
+                // Written apart from `meets`: through it, the compiled scan took more.
                 let (first, last) = block_rows(block);
                 if i32::from(first) >= y1 || i32::from(last) < y0 {
                     continue;
@@ -1069,7 +1070,7 @@ mod tests {
         for run in every.chunk_by_mut(|a, b| a.object == b.object) {
             for block in run.chunks_mut(BIN_BLOCK) {
                 if let [first, second, ..] = block {
-                    (first.block, second.block) = (0, u16::MAX);
+                    (first.block_row, second.block_row) = (0, u16::MAX);
                 }
             }
         }
